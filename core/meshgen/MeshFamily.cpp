@@ -1,0 +1,129 @@
+#include "core/meshgen/MeshFamily.hpp"
+
+#include <cmath>
+
+#include "core/io/VtuMesh.hpp"
+#include "core/mesh/MeshStatistics.hpp"
+#include "core/meshgen/MeshRegularizer.hpp"
+#include "core/meshgen/PoissonDiskSampler.hpp"
+#include "core/meshgen/StructuredMeshes.hpp"
+#include "core/meshgen/VoronoiTessellator.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Random.hpp"
+
+namespace vorodg {
+namespace {
+
+constexpr std::pair<MeshFamily, std::string_view> kFamilyNames[] = {
+    {MeshFamily::rcp, "rcp"},   {MeshFamily::hex, "hex"},   {MeshFamily::perturbed_hex, "perturbed-hex"},
+    {MeshFamily::tri, "tri"},   {MeshFamily::quad, "quad"}, {MeshFamily::file, "file"},
+};
+
+/// Covered fraction of the seeds at least 3d from every side, over the inset rectangle: the
+/// sides crowd seeds (no neighbour beyond them), so the whole-domain fraction is higher.
+std::optional<double> interior_fraction(const Rectangle& dom, const std::vector<Point>& seeds,
+                                        double d) {
+  const double margin = 3.0 * d;
+  const double w = dom.width() - 2 * margin, h = dom.height() - 2 * margin;
+  if (w <= 0 || h <= 0) return std::nullopt;
+  std::size_t n = 0;
+  for (const Point& p : seeds)
+    if (p.x() >= dom.x0() + margin && p.x() <= dom.x1() - margin && p.y() >= dom.y0() + margin &&
+        p.y() <= dom.y1() - margin)
+      ++n;
+  return covered_fraction(n, d, w * h);
+}
+
+GeneratedMesh generate_rcp(const MeshSpec& spec) {
+  GeneratedMesh out;
+  if (!(spec.regularization >= 0.0 && spec.regularization < 1.0))
+    throw InputError("regularization threshold " + std::to_string(spec.regularization) +
+                     ": expected a fraction of d in [0, 1)");
+  Stopwatch clock;
+  PoissonDiskOptions options;
+  options.min_distance = spec.size;
+  options.seed = spec.seed;
+  const auto sample = sample_poisson_disk(spec.domain, options);
+  out.report.seconds["seeding"] = clock.seconds();
+  out.report.seeds = static_cast<int>(sample.points.size());
+  out.report.covered_fraction = covered_fraction(sample.points.size(), spec.size, spec.domain.area());
+  out.report.covered_fraction_interior = interior_fraction(spec.domain, sample.points, spec.size);
+
+  clock.restart();
+  PolygonMesh raw = voronoi_mesh(spec.domain, sample.points, spec.size);
+  out.report.seconds["voronoi"] = clock.seconds();
+  out.report.sides_before = side_count_histogram(raw);
+
+  clock.restart();
+  auto regular = regularize_mesh(raw, spec.regularization * spec.size);
+  out.report.seconds["regularization"] = clock.seconds();
+  out.report.collapsed_edges = regular.collapsed_edges;
+  out.report.refused_collapses = regular.refused_collapses;
+  out.report.merged_cells = regular.merged_cells;
+  out.mesh = std::move(regular.mesh);
+  return out;
+}
+
+GeneratedMesh generate_tri(const MeshSpec& spec) {
+  GeneratedMesh out;
+  Stopwatch clock;
+  PoissonDiskOptions options;
+  options.min_distance = spec.size;
+  options.seed = spec.seed;
+  options.fixed_points = sample_boundary_points(spec.domain, spec.size, derive_seed(spec.seed, 1));
+  const auto sample = sample_poisson_disk(spec.domain, options);
+  out.report.seconds["seeding"] = clock.seconds();
+  out.report.seeds = static_cast<int>(sample.points.size());
+  clock.restart();
+  out.mesh = delaunay_mesh(spec.domain, sample.points);
+  out.report.seconds["delaunay"] = clock.seconds();
+  return out;
+}
+
+}  // namespace
+
+std::string_view family_name(MeshFamily f) {
+  for (const auto& [family, name] : kFamilyNames)
+    if (family == f) return name;
+  return "?";
+}
+
+MeshFamily parse_family(const std::string& name) {
+  std::string valid;
+  for (const auto& [family, text] : kFamilyNames) {
+    if (text == name) return family;
+    valid += (valid.empty() ? "" : ", ") + std::string(text);
+  }
+  throw InputError("mesh family '" + name + "': expected one of " + valid);
+}
+
+GeneratedMesh generate_mesh(const MeshSpec& spec) {
+  GeneratedMesh out;
+  Stopwatch clock;
+  switch (spec.family) {
+    case MeshFamily::rcp: out = generate_rcp(spec); break;
+    case MeshFamily::tri: out = generate_tri(spec); break;
+    case MeshFamily::hex:
+      out.mesh = hex_mesh(spec.domain, spec.size);
+      out.report.seconds["hexagons"] = clock.seconds();
+      break;
+    case MeshFamily::perturbed_hex: {
+      const PolygonMesh regular = hex_mesh(spec.domain, spec.size);
+      out.mesh = perturb_mesh(regular, spec.perturbation, hex_edge_length(spec.domain, spec.size),
+                              spec.seed);
+      out.report.seconds["hexagons"] = clock.seconds();
+      break;
+    }
+    case MeshFamily::quad:
+      out.mesh = quad_mesh(spec.domain, spec.size);
+      out.report.seconds["quads"] = clock.seconds();
+      break;
+    case MeshFamily::file:
+      out.mesh = read_vtu(spec.path, spec.domain_given ? &spec.domain : nullptr);
+      out.report.seconds["read"] = clock.seconds();
+      break;
+  }
+  return out;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,165 @@
+#include "core/meshgen/VoronoiTessellator.hpp"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <numeric>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using FaceBase = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+using CgalPoint = Kernel::Point_2;
+
+/// Original seeds (info = index) plus their mirror images across nearby sides and corners
+/// (info = -1). A seed lying on a side is its own mirror there and is not mirrored across it.
+std::vector<std::pair<CgalPoint, int>> seeds_with_mirrors(const Rectangle& domain,
+                                                         const std::vector<Point>& seeds,
+                                                         double spacing) {
+  const double reach = 3.0 * spacing;
+  const double on_side = 1e-14 * domain.scale();
+  std::vector<std::pair<CgalPoint, int>> pts;
+  pts.reserve(seeds.size() + seeds.size() / 4 + 16);
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    const Point& p = seeds[i];
+    pts.emplace_back(CgalPoint(p.x(), p.y()), static_cast<int>(i));
+    // Mirror coordinates per axis: which reflections of x and of y are wanted.
+    double xs[3] = {p.x(), 0, 0}, ys[3] = {p.y(), 0, 0};
+    int nx = 1, ny = 1;
+    const double dl = p.x() - domain.x0(), dr = domain.x1() - p.x();
+    const double db = p.y() - domain.y0(), dt = domain.y1() - p.y();
+    if (dl > on_side && dl < reach) xs[nx++] = 2.0 * domain.x0() - p.x();
+    if (dr > on_side && dr < reach) xs[nx++] = 2.0 * domain.x1() - p.x();
+    if (db > on_side && db < reach) ys[ny++] = 2.0 * domain.y0() - p.y();
+    if (dt > on_side && dt < reach) ys[ny++] = 2.0 * domain.y1() - p.y();
+    for (int a = 0; a < nx; ++a)
+      for (int b = 0; b < ny; ++b)
+        if (a > 0 || b > 0) pts.emplace_back(CgalPoint(xs[a], ys[b]), -1);
+  }
+  return pts;
+}
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+PolygonMesh voronoi_mesh(const Rectangle& domain, const std::vector<Point>& seeds, double spacing) {
+  if (seeds.empty()) throw InputError("Voronoi tessellation: no seeds");
+  for (const Point& p : seeds)
+    if (!domain.contains(p, 0.0))
+      throw InputError("Voronoi tessellation: seed (" + std::to_string(p.x()) + "," +
+                       std::to_string(p.y()) + ") lies outside the domain " + domain.to_string());
+  auto pts = seeds_with_mirrors(domain, seeds, spacing);
+  Delaunay dt;
+  dt.insert(pts.begin(), pts.end());  // spatially sorted insertion
+  if (static_cast<std::size_t>(dt.number_of_vertices()) != pts.size())
+    throw InputError("Voronoi tessellation: two seeds coincide");
+
+  // Voronoi vertices are the circumcentres of the Delaunay faces around original seeds.
+  std::vector<Delaunay::Vertex_handle> seed_vertex(seeds.size());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    if (v->info() >= 0) seed_vertex[v->info()] = v;
+  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = -1;
+  std::vector<Point> centres;
+  centres.reserve(2 * seeds.size() + 64);
+  std::vector<int> offsets{0};
+  std::vector<int> loop_faces;
+  loop_faces.reserve(6 * seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    auto start = dt.incident_faces(seed_vertex[i]);
+    auto f = start;
+    do {
+      if (dt.is_infinite(f))
+        throw NumericalError("Voronoi tessellation: the cell of seed " + std::to_string(i) +
+                             " is unbounded; the seeds do not fill the domain");
+      if (f->info() < 0) {
+        f->info() = static_cast<int>(centres.size());
+        const CgalPoint c = dt.circumcenter(f);
+        centres.emplace_back(c.x(), c.y());
+      }
+      loop_faces.push_back(f->info());
+    } while (++f != start);
+    offsets.push_back(static_cast<int>(loop_faces.size()));
+  }
+
+  // Merge coinciding circumcentres: co-circular seeds (every seed with its mirror and a
+  // neighbour's mirror pair, or a seed at a corner) give zero-length Voronoi edges.
+  const double merge_tol = 1e-9 * spacing;
+  std::vector<int> parent(centres.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (std::size_t c = 0; c + 1 < offsets.size(); ++c) {
+    const int n = offsets[c + 1] - offsets[c];
+    for (int k = 0; k < n; ++k) {
+      const int a = loop_faces[offsets[c] + k];
+      const int b = loop_faces[offsets[c] + (k + 1) % n];
+      if ((centres[a] - centres[b]).norm() <= merge_tol)
+        parent[find_root(parent, a)] = find_root(parent, b);
+    }
+  }
+  // Number the surviving vertices and rebuild the loops without repeats.
+  std::vector<int> vertex_id(centres.size(), -1);
+  std::vector<Point> vertices;
+  vertices.reserve(centres.size());
+  const double snap_tol = 1e-9 * spacing;
+  std::vector<int> cells;
+  cells.reserve(loop_faces.size());
+  std::vector<int> cell_offsets{0};
+  for (std::size_t c = 0; c + 1 < offsets.size(); ++c) {
+    const std::size_t first = cells.size();
+    for (int k = offsets[c]; k < offsets[c + 1]; ++k) {
+      const int root = find_root(parent, loop_faces[k]);
+      if (vertex_id[root] < 0) {
+        vertex_id[root] = static_cast<int>(vertices.size());
+        vertices.push_back(domain.snap(centres[root], snap_tol));
+      }
+      const int v = vertex_id[root];
+      if (cells.size() > first && cells.back() == v) continue;
+      cells.push_back(v);
+    }
+    while (cells.size() > first + 1 && cells.back() == cells[first]) cells.pop_back();
+    cell_offsets.push_back(static_cast<int>(cells.size()));
+  }
+  return PolygonMesh(domain, std::move(vertices), std::move(cell_offsets), std::move(cells));
+}
+
+PolygonMesh delaunay_mesh(const Rectangle& domain, const std::vector<Point>& seeds) {
+  std::vector<std::pair<CgalPoint, int>> pts;
+  pts.reserve(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    pts.emplace_back(CgalPoint(seeds[i].x(), seeds[i].y()), static_cast<int>(i));
+  Delaunay dt;
+  dt.insert(pts.begin(), pts.end());
+  if (static_cast<std::size_t>(dt.number_of_vertices()) != seeds.size())
+    throw InputError("Delaunay triangulation: two seeds coincide");
+  std::vector<int> offsets{0};
+  std::vector<int> cells;
+  cells.reserve(6 * seeds.size());
+  // Faces in a deterministic order: sorted by their smallest vertex index, then the others.
+  std::vector<std::array<int, 3>> faces;
+  faces.reserve(2 * seeds.size());
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    std::array<int, 3> t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    faces.push_back(t);
+  }
+  std::sort(faces.begin(), faces.end());
+  for (const auto& t : faces) {
+    cells.insert(cells.end(), t.begin(), t.end());
+    offsets.push_back(static_cast<int>(cells.size()));
+  }
+  std::vector<Point> vertices = seeds;
+  return PolygonMesh(domain, std::move(vertices), std::move(offsets), std::move(cells));
+}
+
+}  // namespace vorodg

@@ -1,0 +1,3 @@
+#include "verification/cli/Application.hpp"
+
+int main(int argc, char** argv) { return vorodg::run_application(argc, argv); }

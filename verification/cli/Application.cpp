@@ -1,0 +1,57 @@
+#include "verification/cli/Application.hpp"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "core/util/BlasInfo.hpp"
+#include "core/util/Errors.hpp"
+#include "verification/cli/MeshCommand.hpp"
+
+namespace vorodg {
+namespace {
+
+int print_info() {
+  std::cout << "vorodg " << VORODG_VERSION << "\n"
+            << "blas: " << blas_description() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int run_application(int argc, char** argv) {
+  CLI::App app{"vorodg: RK polygon elements (CG and DG) for 2D elasticity on random Voronoi "
+               "meshes, with a verification harness"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", VORODG_VERSION);
+  MeshCommandOptions mesh_options;
+  CLI::App* mesh = add_mesh_command(app, mesh_options);
+  CLI::App* info = app.add_subcommand("info", "Print the version and the BLAS in use");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "vorodg: error: " << e.what() << " (see --help)\n";
+    return kExitInputError;
+  }
+  try {
+    if (mesh->parsed()) return run_mesh_command(mesh_options, *mesh);
+    if (info->parsed()) return print_info();
+  } catch (const InputError& e) {
+    std::cerr << "vorodg: error: " << e.what() << "\n";
+    return kExitInputError;
+  } catch (const NumericalError& e) {
+    std::cerr << "vorodg: numerical breakdown: " << e.what() << "\n";
+    return kExitNumericalError;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "vorodg: error: out of memory\n";
+    return kExitNumericalError;
+  }
+  return 0;
+}
+
+}  // namespace vorodg

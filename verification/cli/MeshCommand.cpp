@@ -1,0 +1,165 @@
+#include "verification/cli/MeshCommand.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "core/io/VtuMesh.hpp"
+#include "core/mesh/MeshStatistics.hpp"
+#include "core/mesh/MeshValidator.hpp"
+#include "core/meshgen/MeshFamily.hpp"
+#include "core/util/Errors.hpp"
+#include "verification/cli/JsonOutput.hpp"
+
+namespace vorodg {
+namespace {
+
+/// Checks before any work that every output folder exists, so a run never computes for nothing
+/// or leaves one output written and another missing.
+void check_output_folder(const std::string& path, const char* option) {
+  if (path.empty()) return;
+  const std::filesystem::path p(path);
+  const auto folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    throw InputError(std::string(option) + " '" + path + "': folder '" + folder.string() +
+                     "' does not exist");
+}
+
+/// The size option a family takes, checked against what was given.
+double family_size(MeshFamily family, const MeshCommandOptions& o) {
+  const bool seeded = family == MeshFamily::rcp || family == MeshFamily::tri;
+  const std::string name(family_name(family));
+  if (seeded) {
+    if (o.h != 0.0) throw InputError("--h: family " + name + " takes --d (minimum seed distance)");
+    if (!(o.d > 0.0)) throw InputError("--d = " + std::to_string(o.d) + ": family " + name +
+                                        " needs a minimum seed distance d > 0");
+    return o.d;
+  }
+  if (o.d != 0.0) throw InputError("--d: family " + name + " takes --h (cell size)");
+  if (!(o.h > 0.0))
+    throw InputError("--h = " + std::to_string(o.h) + ": family " + name + " needs a cell size h > 0");
+  return o.h;
+}
+
+/// Echo of every option with its value: the line reproduces the run.
+void echo_options(const CLI::App& command) {
+  std::ostringstream os;
+  os << "vorodg mesh";
+  for (const CLI::Option* opt : command.get_options()) {
+    if (opt->get_name() == "--help") continue;
+    const std::string value = opt->count() ? opt->as<std::string>() : opt->get_default_str();
+    if (value.empty()) continue;
+    os << " " << opt->get_name() << " " << value;
+  }
+  std::cout << "# " << os.str() << "\n";
+}
+
+int check_mesh_file(const MeshCommandOptions& o, bool domain_given) {
+  const Rectangle domain = Rectangle::parse(o.domain);
+  const PolygonMesh mesh = read_vtu(o.check, domain_given ? &domain : nullptr);
+  const auto report = validate_mesh(mesh);
+  if (!report.ok()) {
+    std::cerr << report.summary();
+    std::cerr << o.check << ": invalid mesh (" << report.defect_count << " defects)\n";
+    return kExitInputError;
+  }
+  const auto stats = compute_statistics(mesh);
+  std::cout << o.check << ": valid mesh, " << stats.cells << " cells, " << stats.vertices
+            << " vertices, h_avg " << stats.h_avg << ", domain " << mesh.domain().to_string()
+            << "\n";
+  return 0;
+}
+
+}  // namespace
+
+CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand("mesh", "Generate a mesh (or --check one) and report on it");
+  cmd->add_option("--family", o.family, "rcp | hex | perturbed-hex | tri | quad")
+      ->capture_default_str();
+  cmd->add_option("--domain", o.domain, "Rectangle x0,y0,x1,y1")->capture_default_str();
+  cmd->add_option("--d", o.d, "rcp, tri: minimum distance between seeds");
+  cmd->add_option("--h", o.h, "hex, perturbed-hex: hexagon spacing; quad: edge length");
+  cmd->add_option("--r", o.r, "perturbed-hex: perturbation, fraction of the hexagon edge")
+      ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--regularize", o.regularize,
+                  "rcp: collapse edges shorter than this times d (0: keep the raw Voronoi mesh)")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o.output, "Mesh file to write (.vtu)");
+  cmd->add_option("--stats", o.stats, "Statistics file to write (.json)");
+  cmd->add_option("--check", o.check, "Validate this .vtu mesh instead of generating one");
+  return cmd;
+}
+
+int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
+  const bool domain_given = command.count("--domain") > 0;
+  if (!o.check.empty()) return check_mesh_file(o, domain_given);
+  echo_options(command);
+  MeshSpec spec;
+  spec.family = parse_family(o.family);
+  if (spec.family == MeshFamily::file)
+    throw InputError("--family file: use --check FILE to read a mesh");
+  spec.domain = Rectangle::parse(o.domain);
+  spec.size = family_size(spec.family, o);
+  spec.seed = o.seed;
+  spec.perturbation = o.r;
+  spec.regularization = o.regularize;
+  check_output_folder(o.output, "--output");
+  check_output_folder(o.stats, "--stats");
+
+  Stopwatch total;
+  GeneratedMesh generated = generate_mesh(spec);
+  Stopwatch clock;
+  const auto validation = validate_mesh(generated.mesh);
+  generated.report.seconds["validation"] = clock.seconds();
+  if (!validation.ok())
+    throw NumericalError("generated " + std::string(family_name(spec.family)) +
+                         " mesh is invalid: " + validation.defects.front().what + " (" +
+                         std::to_string(validation.defect_count) + " defects)");
+  const MeshStatistics stats = compute_statistics(generated.mesh);
+
+  if (!o.output.empty()) {
+    clock.restart();
+    std::vector<double> sides, ids;
+    for (int c = 0; c < generated.mesh.num_cells(); ++c) {
+      sides.push_back(generated.mesh.cell_size(c));
+      ids.push_back(c);
+    }
+    write_vtu(o.output, generated.mesh, {{}, {{"cell_id", 1, ids}, {"sides", 1, sides}}});
+    generated.report.seconds["write"] = clock.seconds();
+  }
+  nlohmann::json json = to_json(stats);
+  json["family"] = family_name(spec.family);
+  json["domain"] = {spec.domain.x0(), spec.domain.y0(), spec.domain.x1(), spec.domain.y1()};
+  json["size"] = spec.size;
+  json["seed"] = spec.seed;
+  const MeshGenReport& r = generated.report;
+  if (spec.family == MeshFamily::perturbed_hex) json["perturbation"] = spec.perturbation;
+  if (spec.family == MeshFamily::rcp || spec.family == MeshFamily::tri) json["seeds"] = r.seeds;
+  if (spec.family == MeshFamily::rcp) {
+    json["regularization"] = spec.regularization;
+    json["covered_fraction"] = *r.covered_fraction;
+    json["covered_fraction_interior"] =
+        r.covered_fraction_interior ? nlohmann::json(*r.covered_fraction_interior) : nlohmann::json();
+    json["side_counts_before"] = histogram_json(r.sides_before);
+    json["collapsed_edges"] = r.collapsed_edges;
+    json["refused_collapses"] = r.refused_collapses;
+    json["merged_cells"] = r.merged_cells;
+  }
+  json["seconds"] = to_json(r.seconds);
+  json["seconds"]["total"] = total.seconds();
+  if (!o.stats.empty()) write_json(o.stats, json);
+
+  std::cout << family_name(spec.family) << " mesh: " << stats.cells << " cells, "
+            << stats.vertices << " vertices, h_avg " << stats.h_avg << ", min edge/h_avg "
+            << stats.min_edge_over_h << ", min angle " << stats.min_interior_angle_deg
+            << " deg, area error " << stats.area_error;
+  if (r.covered_fraction_interior)
+    std::cout << ", covered fraction " << *r.covered_fraction_interior << " (interior), "
+              << *r.covered_fraction << " (whole)";
+  std::cout << ", " << total.seconds() << " s\n";
+  return 0;
+}
+
+}  // namespace vorodg

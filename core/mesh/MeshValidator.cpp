@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/geometry/Polygon.hpp"
+#include "core/util/Format.hpp"
 
 namespace vorodg {
 namespace {
@@ -24,13 +25,6 @@ class DefectList {
   MeshValidationReport& report_;
   int max_;
 };
-
-std::string fmt(double x) {
-  std::ostringstream os;
-  os.precision(6);
-  os << x;
-  return os.str();
-}
 
 std::string cell_name(int c) { return "cell " + std::to_string(c); }
 

@@ -85,15 +85,15 @@ void PolygonMesh::build_edges() {
         first[key] = found;
       } else {
         MeshEdge& edge = edges_[found];
-        const std::string where = "edge (" + std::to_string(a) + "," + std::to_string(b) + ")";
+        auto where = [&] { return "edge (" + std::to_string(a) + "," + std::to_string(b) + ")"; };
         if (edge.cell1 >= 0) {
           topology_defects_.push_back({TopologyDefect::Kind::non_manifold_edge, a, b,
-                                       where + " is shared by cells " + std::to_string(edge.cell0) +
+                                       where() + " is shared by cells " + std::to_string(edge.cell0) +
                                            ", " + std::to_string(edge.cell1) + " and " +
                                            std::to_string(c) + ", expected at most two"});
         } else if (edge.v0 == a) {
           topology_defects_.push_back({TopologyDefect::Kind::inconsistent_orientation, a, b,
-                                       where + " is traversed in the same direction by cells " +
+                                       where() + " is traversed in the same direction by cells " +
                                            std::to_string(edge.cell0) + " and " +
                                            std::to_string(c) + ", expected opposite"});
           edge.cell1 = c;

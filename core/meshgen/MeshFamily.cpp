@@ -9,6 +9,7 @@
 #include "core/meshgen/StructuredMeshes.hpp"
 #include "core/meshgen/VoronoiTessellator.hpp"
 #include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
 
 namespace vorodg {
@@ -37,7 +38,7 @@ std::optional<double> interior_fraction(const Rectangle& dom, const std::vector<
 GeneratedMesh generate_rcp(const MeshSpec& spec) {
   GeneratedMesh out;
   if (!(spec.regularization >= 0.0 && spec.regularization < 1.0))
-    throw InputError("regularization threshold " + std::to_string(spec.regularization) +
+    throw InputError("regularization threshold " + fmt(spec.regularization) +
                      ": expected a fraction of d in [0, 1)");
   Stopwatch clock;
   PoissonDiskOptions options;
@@ -109,8 +110,7 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
       break;
     case MeshFamily::perturbed_hex: {
       const PolygonMesh regular = hex_mesh(spec.domain, spec.size);
-      out.mesh = perturb_mesh(regular, spec.perturbation, hex_edge_length(spec.domain, spec.size),
-                              spec.seed);
+      out.mesh = perturb_mesh(regular, spec.perturbation, spec.seed);
       out.report.seconds["hexagons"] = clock.seconds();
       break;
     }

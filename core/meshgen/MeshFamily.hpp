@@ -27,7 +27,7 @@ struct MeshSpec {
   /// quad: target edge length.
   double size = 0.1;
   std::uint64_t seed = 1;
-  /// perturbed-hex: vertices move by at most r x (hexagon edge length), r in [0, 0.5).
+  /// perturbed-hex: vertices move by at most r x (their shortest edge), r in [0, 0.5).
   double perturbation = 0.3;
   /// rcp: edges shorter than this x d are collapsed (0 keeps the raw Voronoi mesh).
   double regularization = 0.1;

@@ -1,33 +1,38 @@
 #include "core/meshgen/PoissonDiskSampler.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
 #include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
 
 namespace vorodg {
 namespace {
 
 // Background grid of square cells of side d/sqrt(2): a cell's diagonal is d, so it holds at most
-// one sample, and a cell that holds one is entirely covered by that sample's disk.
+// one sample, and a cell that holds one is entirely covered by that sample's disk. Samples are
+// stored in their cell (NaN marks an empty cell): the neighbourhood tests, which dominate the
+// cost, then read a few contiguous rows instead of chasing indices.
 class SampleGrid {
  public:
-  SampleGrid(const Rectangle& domain, double d) : domain_(domain), d_(d), d2_(d * d) {
+  SampleGrid(const Rectangle& domain, double d) : domain_(domain), d2_(d * d) {
     side_ = d / std::numbers::sqrt2;
     nx_ = std::max(1, static_cast<int>(std::ceil(domain.width() / side_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(domain.height() / side_)));
-    owner_.assign(static_cast<std::size_t>(nx_) * ny_, -1);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    cells_.assign(static_cast<std::size_t>(nx_) * ny_, Point(nan, nan));
   }
 
-  int nx() const { return nx_; }
-  int ny() const { return ny_; }
-  double side() const { return side_; }
   int cell_count() const { return nx_ * ny_; }
-  int owner(int cell) const { return owner_[cell]; }
+  double side() const { return side_; }
+  bool occupied(int cell) const { return !std::isnan(cells_[cell].x()); }
+  const Point& sample(int cell) const { return cells_[cell]; }
   Point cell_origin(int cell) const {
     return domain_.lo() + side_ * Point(cell % nx_, cell / nx_);
   }
@@ -37,47 +42,58 @@ class SampleGrid {
     return j * nx_ + i;
   }
 
-  /// Calls f(sample index) for every sample in the 21 cells that can hold a sample closer than d
-  /// to a point of `cell` (the 5x5 block without its corners).
+  /// True if f(sample) holds for a sample in one of the 21 cells that can hold a sample closer
+  /// than d to a point of `cell` (the 5x5 block without its corners). Empty cells hold NaN,
+  /// for which every distance comparison is false, so they need no test of their own.
   template <class F>
   bool any_neighbor(int cell, F&& f) const {
     const int ci = cell % nx_, cj = cell / nx_;
-    for (int dj = -2; dj <= 2; ++dj) {
-      const int j = cj + dj;
-      if (j < 0 || j >= ny_) continue;
-      for (int di = -2; di <= 2; ++di) {
-        if (std::abs(di) == 2 && std::abs(dj) == 2) continue;
-        const int i = ci + di;
-        if (i < 0 || i >= nx_) continue;
-        const int s = owner_[j * nx_ + i];
-        if (s >= 0 && f(s)) return true;
-      }
+    const int j0 = std::max(cj - 2, 0), j1 = std::min(cj + 2, ny_ - 1);
+    for (int j = j0; j <= j1; ++j) {
+      const int reach = (j == cj - 2 || j == cj + 2) ? 1 : 2;
+      const int i0 = std::max(ci - reach, 0), i1 = std::min(ci + reach, nx_ - 1);
+      const Point* row = cells_.data() + static_cast<std::size_t>(j) * nx_;
+      for (int i = i0; i <= i1; ++i)
+        if (f(row[i])) return true;
     }
     return false;
   }
 
-  bool conflicts(const Point& p, const std::vector<Point>& samples) const {
-    return any_neighbor(cell_of(p),
-                        [&](int s) { return (samples[s] - p).squaredNorm() < d2_; });
+  /// Calls f(cell index) for the 21 neighbour cells of `cell` (including itself) until f
+  /// returns true.
+  template <class F>
+  bool for_each_neighbor_cell(int cell, F&& f) const {
+    const int ci = cell % nx_, cj = cell / nx_;
+    const int j0 = std::max(cj - 2, 0), j1 = std::min(cj + 2, ny_ - 1);
+    for (int j = j0; j <= j1; ++j) {
+      const int reach = (j == cj - 2 || j == cj + 2) ? 1 : 2;
+      const int i0 = std::max(ci - reach, 0), i1 = std::min(ci + reach, nx_ - 1);
+      for (int i = i0; i <= i1; ++i)
+        if (f(j * nx_ + i)) return true;
+    }
+    return false;
   }
-  /// True if one sample's disk contains the whole box [lo, hi] (disks are convex: the corners
-  /// suffice).
-  bool box_covered(int cell, const Point& lo, const Point& hi,
-                   const std::vector<Point>& samples) const {
-    return any_neighbor(cell, [&](int s) {
-      const Point& c = samples[s];
-      auto inside = [&](double x, double y) { return (Point(x, y) - c).squaredNorm() <= d2_; };
-      return inside(lo.x(), lo.y()) && inside(hi.x(), lo.y()) && inside(lo.x(), hi.y()) &&
-             inside(hi.x(), hi.y());
+  double d2() const { return d2_; }
+
+  bool conflicts(const Point& p) const {
+    return any_neighbor(cell_of(p), [&](const Point& s) { return (s - p).squaredNorm() < d2_; });
+  }
+  /// The samples that can cover part of `cell` (at most 21).
+  int gather_neighbors(int cell, std::array<Point, 21>& out) const {
+    int n = 0;
+    any_neighbor(cell, [&](const Point& s) {
+      if (!std::isnan(s.x())) out[n++] = s;
+      return false;
     });
+    return n;
   }
-  void claim(int cell, int sample) { owner_[cell] = sample; }
+  void place(const Point& p) { cells_[cell_of(p)] = p; }
 
  private:
   Rectangle domain_;
-  double d_, d2_, side_ = 0.0;
+  double d2_, side_ = 0.0;
   int nx_ = 1, ny_ = 1;
-  std::vector<int> owner_;  // sample index per cell, -1 if empty
+  std::vector<Point> cells_;
 };
 
 // A square still (possibly) uncovered: sub-square (a, b) of grid cell `cell` at the current
@@ -87,16 +103,101 @@ struct ActiveSquare {
   std::uint32_t a, b;
 };
 
+/// True if one of the disks of radius sqrt(d2) around `centres` contains the whole box [lo, hi]
+/// (disks are convex: the corners suffice).
+bool box_covered(const Point& lo, const Point& hi, const Point* centres, int n, double d2) {
+  for (int k = 0; k < n; ++k) {
+    const Point& c = centres[k];
+    auto inside = [&](double x, double y) { return (Point(x, y) - c).squaredNorm() <= d2; };
+    if (inside(lo.x(), lo.y()) && inside(hi.x(), lo.y()) && inside(lo.x(), hi.y()) &&
+        inside(hi.x(), hi.y()))
+      return true;
+  }
+  return false;
+}
+
+struct Dart {
+  int cell;
+  Point p;
+  std::uint64_t arrival;  // random arrival time: the order of sequential addition
+};
+
+bool arrives_before(const Dart& a, std::size_t ia, const Dart& b, std::size_t ib) {
+  return a.arrival < b.arrival || (a.arrival == b.arrival && ia < ib);
+}
+
+/// Accepts exactly the darts that sequential addition in arrival order would accept: a dart is
+/// accepted iff no earlier-arriving accepted dart lies closer than d. This is the greedy
+/// independent set by priority, found by sweeping the darts in grid order until every dart is
+/// decided (accepted once all earlier conflicting darts are rejected, rejected once one of them
+/// is accepted) — the same answer as processing arrivals one by one, with memory access in grid
+/// order instead of random order.
+std::vector<char> resolve_arrivals(const std::vector<Dart>& darts, const SampleGrid& grid,
+                                   std::vector<int>& first_dart, double d2) {
+  enum : char { undecided, accepted, rejected };
+  std::vector<char> status(darts.size(), undecided);
+  for (std::size_t i = darts.size(); i-- > 0;) first_dart[darts[i].cell] = static_cast<int>(i);
+  std::size_t open = darts.size();
+  while (open > 0) {
+    for (std::size_t i = 0; i < darts.size(); ++i) {
+      if (status[i] != undecided) continue;
+      bool blocked = false, beaten = false;
+      grid.for_each_neighbor_cell(darts[i].cell, [&](int cell) {
+        for (int j = first_dart[cell]; j >= 0 && j < static_cast<int>(darts.size()) &&
+                                       darts[j].cell == cell && !beaten;
+             ++j) {
+          if (static_cast<std::size_t>(j) == i || status[j] == rejected) continue;
+          if (!arrives_before(darts[j], j, darts[i], i)) continue;
+          if ((darts[j].p - darts[i].p).squaredNorm() >= d2) continue;
+          if (status[j] == accepted) beaten = true;
+          else blocked = true;
+        }
+        return beaten;
+      });
+      if (beaten) status[i] = rejected, --open;
+      else if (!blocked) status[i] = accepted, --open;
+    }
+  }
+  for (const Dart& dart : darts) first_dart[dart.cell] = -1;
+  return status;
+}
+
+/// One pass of arrivals: every active square receives a Poisson number of darts (mean
+/// `darts_per_square`) at uniform positions and random arrival times. All squares of a pass have
+/// the same size, so the arrivals are uniform over the uncovered area: unbiased sequential
+/// addition. Darts are generated square by square (the squares are in grid order).
+void throw_darts(SampleGrid& grid, const std::vector<ActiveSquare>& active, double sub_side,
+                 const Rectangle& domain, double darts_per_square, Random& rng,
+                 std::vector<int>& first_dart, PoissonDiskResult& result) {
+  std::vector<Dart> darts;
+  darts.reserve(active.size());
+  const double exp_minus_mean = std::exp(-darts_per_square);
+  for (const ActiveSquare& sq : active) {
+    const int n = rng.poisson(exp_minus_mean);
+    const Point origin = grid.cell_origin(sq.cell) + sub_side * Point(sq.a, sq.b);
+    for (int k = 0; k < n; ++k) {
+      const Point p = origin + sub_side * Point(rng.uniform(), rng.uniform());
+      const std::uint64_t arrival = rng.bits();
+      ++result.darts_thrown;
+      if (!domain.contains(p, 0.0) || grid.occupied(sq.cell) || grid.conflicts(p)) continue;
+      darts.push_back({sq.cell, p, arrival});
+    }
+  }
+  const auto status = resolve_arrivals(darts, grid, first_dart, grid.d2());
+  for (std::size_t i = 0; i < darts.size(); ++i)
+    if (status[i] == 1) grid.place(darts[i].p);
+}
+
 void check_options(const Rectangle& domain, double d) {
   if (!(d > 0.0) || !std::isfinite(d))
-    throw InputError("minimum distance d = " + std::to_string(d) + ": expected a finite d > 0");
+    throw InputError("minimum distance d = " + fmt(d) + ": expected a finite d > 0");
   if (d > domain.scale())
-    throw InputError("minimum distance d = " + std::to_string(d) +
+    throw InputError("minimum distance d = " + fmt(d) +
                      ": expected d no larger than the domain's longer side " +
-                     std::to_string(domain.scale()));
+                     fmt(domain.scale()));
   const double cells = domain.area() / (d * d);
   if (cells > 2e8)
-    throw InputError("minimum distance d = " + std::to_string(d) + " gives about " +
+    throw InputError("minimum distance d = " + fmt(d) + " gives about " +
                      std::to_string(static_cast<long long>(0.7 * cells)) +
                      " seeds, expected at most 1.4e8");
 }
@@ -112,50 +213,36 @@ PoissonDiskResult sample_poisson_disk(const Rectangle& domain, const PoissonDisk
   std::vector<Point>& samples = result.points;
   samples.reserve(static_cast<std::size_t>(0.75 * domain.area() / (d * d)) + 16);
 
+  std::vector<char> fixed_cell(options.fixed_points.empty() ? 0 : grid.cell_count(), 0);
   for (const Point& p : options.fixed_points) {
     const int cell = grid.cell_of(p);
-    if (!domain.contains(p, 0.0) || grid.owner(cell) >= 0 || grid.conflicts(p, samples))
-      throw InputError("fixed seed (" + std::to_string(p.x()) + "," + std::to_string(p.y()) +
+    if (!domain.contains(p, 0.0) || grid.occupied(cell) || grid.conflicts(p))
+      throw InputError("fixed seed (" + fmt(p.x()) + "," + fmt(p.y()) +
                        ") is outside the domain or closer than d to another fixed seed");
-    grid.claim(cell, static_cast<int>(samples.size()));
+    grid.place(p);
+    fixed_cell[cell] = 1;
     samples.push_back(p);
   }
 
   std::vector<ActiveSquare> active;
   active.reserve(grid.cell_count());
   for (int c = 0; c < grid.cell_count(); ++c)
-    if (grid.owner(c) < 0) active.push_back({c, 0, 0});
+    if (!grid.occupied(c)) active.push_back({c, 0, 0});
 
+  std::vector<int> first_dart(grid.cell_count(), -1);  // per cell, its first dart of a pass
   double sub_side = grid.side();
   constexpr int kMaxLevel = 40;  // sub-squares of side d * 2^-40: below any useful resolution
   for (int level = 0; level <= kMaxLevel && !active.empty(); ++level) {
-    // Dart throwing: every active square has the same size, so picking one uniformly and a point
-    // uniformly inside it samples the uncovered area uniformly (unbiased sequential addition).
-    const auto darts = static_cast<std::size_t>(options.darts_per_cell * active.size()) + 1;
-    for (std::size_t t = 0; t < darts && !active.empty(); ++t) {
-      const std::size_t k = rng.index(active.size());
-      const ActiveSquare sq = active[k];
-      ++result.darts_thrown;
-      if (grid.owner(sq.cell) >= 0) {  // its grid cell got a sample: covered
-        active[k] = active.back();
-        active.pop_back();
-        continue;
-      }
-      const Point origin = grid.cell_origin(sq.cell) + sub_side * Point(sq.a, sq.b);
-      const Point p = origin + sub_side * Point(rng.uniform(), rng.uniform());
-      if (!domain.contains(p, 0.0) || grid.conflicts(p, samples)) continue;
-      grid.claim(grid.cell_of(p), static_cast<int>(samples.size()));
-      samples.push_back(p);
-      active[k] = active.back();
-      active.pop_back();
-    }
+    throw_darts(grid, active, sub_side, domain, options.darts_per_cell, rng, first_dart, result);
     // Refinement: split each remaining square in four and keep the children that still have an
     // uncovered part inside the domain.
     std::vector<ActiveSquare> children;
     children.reserve(active.size() * 2);
     const double half = 0.5 * sub_side;
+    std::array<Point, 21> near;
     for (const ActiveSquare& sq : active) {
-      if (grid.owner(sq.cell) >= 0) continue;
+      if (grid.occupied(sq.cell)) continue;
+      const int n_near = grid.gather_neighbors(sq.cell, near);
       const Point origin = grid.cell_origin(sq.cell) + sub_side * Point(sq.a, sq.b);
       for (std::uint32_t q = 0; q < 4; ++q) {
         const std::uint32_t qa = q & 1u, qb = q >> 1;
@@ -164,7 +251,7 @@ PoissonDiskResult sample_poisson_disk(const Rectangle& domain, const PoissonDisk
         lo = lo.cwiseMax(domain.lo());
         hi = hi.cwiseMin(domain.hi());
         if (!(lo.x() < hi.x() && lo.y() < hi.y())) continue;
-        if (grid.box_covered(sq.cell, lo, hi, samples)) continue;
+        if (box_covered(lo, hi, near.data(), n_near, d * d)) continue;
         children.push_back({sq.cell, 2 * sq.a + qa, 2 * sq.b + qb});
       }
     }
@@ -174,14 +261,8 @@ PoissonDiskResult sample_poisson_disk(const Rectangle& domain, const PoissonDisk
   }
 
   // Sampled points in grid (row-major) order: neighbouring seeds get nearby numbers.
-  const auto n_fixed = static_cast<std::ptrdiff_t>(options.fixed_points.size());
-  std::vector<std::pair<int, Point>> keyed;
-  keyed.reserve(samples.size() - n_fixed);
-  for (auto it = samples.begin() + n_fixed; it != samples.end(); ++it)
-    keyed.emplace_back(grid.cell_of(*it), *it);
-  std::sort(keyed.begin(), keyed.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (std::size_t i = 0; i < keyed.size(); ++i) samples[n_fixed + i] = keyed[i].second;
+  for (int c = 0; c < grid.cell_count(); ++c)
+    if (grid.occupied(c) && (fixed_cell.empty() || !fixed_cell[c])) samples.push_back(grid.sample(c));
   return result;
 }
 

@@ -1,10 +1,12 @@
 #include "core/meshgen/StructuredMeshes.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/meshgen/VoronoiTessellator.hpp"
 #include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
 
 namespace vorodg {
@@ -12,13 +14,13 @@ namespace {
 
 void check_size(const Rectangle& domain, double h, const char* what) {
   if (!(h > 0.0) || !std::isfinite(h))
-    throw InputError(std::string(what) + " = " + std::to_string(h) + ": expected a finite value > 0");
+    throw InputError(std::string(what) + " = " + fmt(h) + ": expected a finite value > 0");
   if (h > domain.scale())
-    throw InputError(std::string(what) + " = " + std::to_string(h) +
+    throw InputError(std::string(what) + " = " + fmt(h) +
                      ": expected no more than the domain's longer side " +
-                     std::to_string(domain.scale()));
+                     fmt(domain.scale()));
   if (domain.area() / (h * h) > 1.5e8)
-    throw InputError(std::string(what) + " = " + std::to_string(h) +
+    throw InputError(std::string(what) + " = " + fmt(h) +
                      ": gives more than 1.5e8 cells");
 }
 
@@ -32,10 +34,6 @@ double adjusted_spacing(const Rectangle& domain, double spacing) {
 }
 
 }  // namespace
-
-double hex_edge_length(const Rectangle& domain, double spacing) {
-  return adjusted_spacing(domain, spacing) / std::numbers::sqrt3;
-}
 
 PolygonMesh hex_mesh(const Rectangle& domain, double spacing) {
   check_size(domain, spacing, "hexagon spacing h");
@@ -56,15 +54,20 @@ PolygonMesh hex_mesh(const Rectangle& domain, double spacing) {
   return voronoi_mesh(domain, seeds, a);
 }
 
-PolygonMesh perturb_mesh(const PolygonMesh& mesh, double r, double edge_length, std::uint64_t seed) {
+PolygonMesh perturb_mesh(const PolygonMesh& mesh, double r, std::uint64_t seed) {
   if (!(r >= 0.0 && r < 0.5))
-    throw InputError("perturbation r = " + std::to_string(r) + ": expected 0 <= r < 0.5");
+    throw InputError("perturbation r = " + fmt(r) + ": expected 0 <= r < 0.5");
   const Rectangle& dom = mesh.domain();
   const double tol = mesh.tag_tolerance() * dom.scale();
-  const double reach = r * edge_length;
+  std::vector<double> shortest(mesh.num_vertices(), std::numeric_limits<double>::infinity());
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    for (int v : {mesh.edge(e).v0, mesh.edge(e).v1})
+      shortest[v] = std::min(shortest[v], mesh.edge_length(e));
   Random rng(seed);
   std::vector<Point> moved = mesh.vertices();
-  for (Point& p : moved) {
+  for (std::size_t i = 0; i < moved.size(); ++i) {
+    Point& p = moved[i];
+    const double reach = r * shortest[i];
     const auto near = dom.sides_near(p, tol);
     const bool on_vertical = near[0] || near[1];
     const bool on_horizontal = near[2] || near[3];

@@ -12,13 +12,11 @@ namespace vorodg {
 /// width is a multiple of the adjusted spacing (e.g. L/D = 8/sqrt(3) = 4.6188...).
 PolygonMesh hex_mesh(const Rectangle& domain, double spacing);
 
-/// Edge length of the hexagons hex_mesh builds for this domain and spacing.
-double hex_edge_length(const Rectangle& domain, double spacing);
-
-/// Moves the vertices of `mesh` randomly: interior vertices uniformly in a disk of radius
-/// r x edge_length, side vertices uniformly along their side by at most that much, corners not.
-PolygonMesh perturb_mesh(const PolygonMesh& mesh, double r, double edge_length,
-                         std::uint64_t seed);
+/// Moves the vertices of `mesh` randomly, each by at most r x (its shortest edge): interior
+/// vertices uniformly in a disk of that radius, side vertices uniformly along their side, corners
+/// not at all. With r < 0.5 the two ends of an edge can never meet. On a hex mesh the bound is
+/// r x (hexagon edge) except next to the half cells along the sides, whose edges are shorter.
+PolygonMesh perturb_mesh(const PolygonMesh& mesh, double r, std::uint64_t seed);
 
 /// Structured quadrilaterals with edge lengths close to h.
 PolygonMesh quad_mesh(const Rectangle& domain, double h);

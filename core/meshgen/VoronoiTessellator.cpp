@@ -5,9 +5,12 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <map>
 #include <numeric>
+#include <tuple>
 
 #include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
 
 namespace vorodg {
 namespace {
@@ -19,13 +22,16 @@ using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 using CgalPoint = Kernel::Point_2;
 
+// Seeds closer than this (times the domain size) to a side count as lying on it.
+constexpr double kOnSide = 1e-14;
+
 /// Original seeds (info = index) plus their mirror images across nearby sides and corners
 /// (info = -1). A seed lying on a side is its own mirror there and is not mirrored across it.
 std::vector<std::pair<CgalPoint, int>> seeds_with_mirrors(const Rectangle& domain,
                                                          const std::vector<Point>& seeds,
                                                          double spacing) {
   const double reach = 3.0 * spacing;
-  const double on_side = 1e-14 * domain.scale();
+  const double on_side = kOnSide * domain.scale();
   std::vector<std::pair<CgalPoint, int>> pts;
   pts.reserve(seeds.size() + seeds.size() / 4 + 16);
   for (std::size_t i = 0; i < seeds.size(); ++i) {
@@ -47,6 +53,63 @@ std::vector<std::pair<CgalPoint, int>> seeds_with_mirrors(const Rectangle& domai
   return pts;
 }
 
+/// Clips vertex loops (ids of circumcentres) to one side of the rectangle at a time. A crossing
+/// vertex is created once per (Voronoi edge, side), so the two cells sharing a clipped edge share
+/// its new end point exactly.
+class SideClipper {
+ public:
+  SideClipper(const Rectangle& domain, const std::vector<Point>& centres, double tol)
+      : domain_(domain), centres_(centres), tol_(tol) {}
+
+  Point position(int id) const {
+    const int n = static_cast<int>(centres_.size());
+    return id < n ? centres_[id] : crossings_[id - n];
+  }
+  Point snapped_position(int id) const { return domain_.snap(position(id), tol_); }
+
+  void clip(std::vector<int>& loop, Side side) {
+    std::vector<int> out;
+    const std::size_t n = loop.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const int a = loop[k], b = loop[(k + 1) % n];
+      const double da = inward_distance(position(a), side);
+      const double db = inward_distance(position(b), side);
+      if (da >= -tol_) out.push_back(a);
+      if ((da > tol_ && db < -tol_) || (da < -tol_ && db > tol_)) out.push_back(crossing(a, b, side));
+    }
+    loop.swap(out);
+  }
+
+ private:
+  double inward_distance(const Point& p, Side side) const {
+    switch (side) {
+      case Side::left: return p.x() - domain_.x0();
+      case Side::right: return domain_.x1() - p.x();
+      case Side::bottom: return p.y() - domain_.y0();
+      default: return domain_.y1() - p.y();
+    }
+  }
+  int crossing(int a, int b, Side side) {
+    const auto key = std::make_tuple(std::min(a, b), std::max(a, b), static_cast<int>(side));
+    if (auto it = ids_.find(key); it != ids_.end()) return it->second;
+    const Point p = position(std::min(a, b)), q = position(std::max(a, b));
+    const double dp = inward_distance(p, side), dq = inward_distance(q, side);
+    Point x = p + (dp / (dp - dq)) * (q - p);
+    if (side == Side::left || side == Side::right) x.x() = domain_.side_coordinate(side);
+    else x.y() = domain_.side_coordinate(side);
+    const int id = static_cast<int>(centres_.size() + crossings_.size());
+    crossings_.push_back(x);
+    ids_.emplace(key, id);
+    return id;
+  }
+
+  const Rectangle& domain_;
+  const std::vector<Point>& centres_;
+  double tol_;
+  std::vector<Point> crossings_;
+  std::map<std::tuple<int, int, int>, int> ids_;
+};
+
 int find_root(std::vector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
@@ -58,8 +121,8 @@ PolygonMesh voronoi_mesh(const Rectangle& domain, const std::vector<Point>& seed
   if (seeds.empty()) throw InputError("Voronoi tessellation: no seeds");
   for (const Point& p : seeds)
     if (!domain.contains(p, 0.0))
-      throw InputError("Voronoi tessellation: seed (" + std::to_string(p.x()) + "," +
-                       std::to_string(p.y()) + ") lies outside the domain " + domain.to_string());
+      throw InputError("Voronoi tessellation: seed (" + fmt(p.x()) + "," +
+                       fmt(p.y()) + ") lies outside the domain " + domain.to_string());
   auto pts = seeds_with_mirrors(domain, seeds, spacing);
   Delaunay dt;
   dt.insert(pts.begin(), pts.end());  // spatially sorted insertion
@@ -107,27 +170,35 @@ PolygonMesh voronoi_mesh(const Rectangle& domain, const std::vector<Point>& seed
         parent[find_root(parent, a)] = find_root(parent, b);
     }
   }
-  // Number the surviving vertices and rebuild the loops without repeats.
+  // Number the surviving vertices and rebuild the loops without repeats. The cell of a seed
+  // lying on a side (not mirrored there: it is its own mirror) straddles the side symmetrically
+  // and is clipped to it.
+  SideClipper clipper(domain, centres, 1e-9 * spacing);
   std::vector<int> vertex_id(centres.size(), -1);
   std::vector<Point> vertices;
   vertices.reserve(centres.size());
-  const double snap_tol = 1e-9 * spacing;
   std::vector<int> cells;
   cells.reserve(loop_faces.size());
   std::vector<int> cell_offsets{0};
+  std::vector<int> loop;
   for (std::size_t c = 0; c + 1 < offsets.size(); ++c) {
-    const std::size_t first = cells.size();
+    loop.clear();
     for (int k = offsets[c]; k < offsets[c + 1]; ++k) {
       const int root = find_root(parent, loop_faces[k]);
-      if (vertex_id[root] < 0) {
-        vertex_id[root] = static_cast<int>(vertices.size());
-        vertices.push_back(domain.snap(centres[root], snap_tol));
-      }
-      const int v = vertex_id[root];
-      if (cells.size() > first && cells.back() == v) continue;
-      cells.push_back(v);
+      if (loop.empty() || loop.back() != root) loop.push_back(root);
     }
-    while (cells.size() > first + 1 && cells.back() == cells[first]) cells.pop_back();
+    while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
+    for (int side = 0; side < 4; ++side)
+      if (domain.distance_to_side(seeds[c], static_cast<Side>(side)) <= kOnSide * domain.scale())
+        clipper.clip(loop, static_cast<Side>(side));
+    for (int id : loop) {
+      if (id >= static_cast<int>(vertex_id.size())) vertex_id.resize(id + 1, -1);
+      if (vertex_id[id] < 0) {
+        vertex_id[id] = static_cast<int>(vertices.size());
+        vertices.push_back(clipper.snapped_position(id));
+      }
+      cells.push_back(vertex_id[id]);
+    }
     cell_offsets.push_back(static_cast<int>(cells.size()));
   }
   return PolygonMesh(domain, std::move(vertices), std::move(cell_offsets), std::move(cells));

@@ -21,7 +21,11 @@ std::string blas_description() {
   }
   using ConfigFn = char* (*)();
   auto config = reinterpret_cast<ConfigFn>(dlsym(handle, "openblas_get_config"));
-  std::string name = config ? std::string("OpenBLAS ") + config() : "reference BLAS (netlib)";
+  std::string name = "reference BLAS (netlib)";
+  if (config) {
+    name = config();
+    if (name.rfind("OpenBLAS", 0) != 0) name = "OpenBLAS " + name;
+  }
   return name + " [" + path + "]";
 }
 

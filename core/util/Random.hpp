@@ -10,6 +10,15 @@ class Random {
  public:
   explicit Random(std::uint64_t seed) : engine_(seed) {}
 
+  /// 64 uniform random bits.
+  std::uint64_t bits() { return engine_(); }
+  /// Poisson-distributed count with mean -log(exp_minus_mean) (Knuth's product method; for
+  /// small means).
+  int poisson(double exp_minus_mean) {
+    int k = 0;
+    for (double p = uniform(); p > exp_minus_mean; p *= uniform()) ++k;
+    return k;
+  }
   /// Uniform double in [0, 1) with 53 random bits.
   double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
   /// Uniform double in [a, b).

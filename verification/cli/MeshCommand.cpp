@@ -9,6 +9,7 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
 #include "verification/cli/JsonOutput.hpp"
 
 namespace vorodg {
@@ -32,13 +33,13 @@ double family_size(MeshFamily family, const MeshCommandOptions& o) {
   const std::string name(family_name(family));
   if (seeded) {
     if (o.h != 0.0) throw InputError("--h: family " + name + " takes --d (minimum seed distance)");
-    if (!(o.d > 0.0)) throw InputError("--d = " + std::to_string(o.d) + ": family " + name +
+    if (!(o.d > 0.0)) throw InputError("--d = " + fmt(o.d) + ": family " + name +
                                         " needs a minimum seed distance d > 0");
     return o.d;
   }
   if (o.d != 0.0) throw InputError("--d: family " + name + " takes --h (cell size)");
   if (!(o.h > 0.0))
-    throw InputError("--h = " + std::to_string(o.h) + ": family " + name + " needs a cell size h > 0");
+    throw InputError("--h = " + fmt(o.h) + ": family " + name + " needs a cell size h > 0");
   return o.h;
 }
 

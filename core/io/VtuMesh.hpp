@@ -24,7 +24,8 @@ struct VtuFields {
 
 /// The .vtu text of a mesh with fields. Deterministic: the same mesh gives the same bytes.
 std::string vtu_text(const PolygonMesh& mesh, const VtuFields& fields = {});
-/// Writes it atomically. Throws InputError if a field has the wrong size or a non-finite value.
+/// Writes it atomically. Throws InputError if a field has the wrong size, NumericalError if it
+/// holds a NaN or infinity (a result that broke down is never written).
 void write_vtu(const std::filesystem::path& path, const PolygonMesh& mesh, const VtuFields& fields = {});
 
 /// Points and CSR cells read from a .vtu (before any topology is built).

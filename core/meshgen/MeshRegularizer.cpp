@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numbers>
 #include <queue>
 #include <tuple>
 
@@ -11,6 +12,8 @@
 namespace vorodg {
 namespace {
 
+// A corner counts as reflex when it bends the wrong way by more than this (relative).
+constexpr double kConvexTolerance = 1e-9;
 constexpr unsigned kLeft = 1u, kRight = 2u, kBottom = 4u, kTop = 8u;
 
 // Mutable copy of a mesh in which edges collapse: cells keep their CSR slots and shrink in place,
@@ -123,6 +126,12 @@ bool CollapsibleMesh::loop_acceptable(const std::vector<int>& loop, int a, const
   const double area = polygon::signed_area(pts);
   if (!(area > min_fan_area_)) return false;
   if (polygon::self_intersects(pts)) return false;
+  // Voronoi cells are convex; a collapse may not make a reflex corner (a vertex dragged onto a
+  // side vertex would otherwise leave angles above 220 degrees next to the sides).
+  for (std::size_t k = 0; k < pts.size(); ++k)
+    if (polygon::orient2(pts[(k + pts.size() - 1) % pts.size()], pts[k], pts[(k + 1) % pts.size()]) <
+        -kConvexTolerance * (pts[(k + 1) % pts.size()] - pts[k]).squaredNorm())
+      return false;
   return polygon::star_shaped_about(pts, polygon::centroid(pts, area), min_fan_area_);
 }
 
@@ -200,6 +209,19 @@ PolygonMesh CollapsibleMesh::build() const {
 
 namespace {
 
+/// Largest interior angle of a counter-clockwise loop, in radians.
+double max_interior_angle(const std::vector<Point>& pts) {
+  double largest = 0.0;
+  const std::size_t n = pts.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point a = pts[(k + 1) % n] - pts[k], b = pts[(k + n - 1) % n] - pts[k];
+    double angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    if (angle < 0) angle += 2 * std::numbers::pi;
+    largest = std::max(largest, angle);
+  }
+  return largest;
+}
+
 bool acceptable_cell(const std::vector<Point>& pts) {
   const double area = polygon::signed_area(pts);
   if (!(area > 0.0) || polygon::self_intersects(pts)) return false;
@@ -260,18 +282,24 @@ PolygonMesh merge_small_cells(const PolygonMesh& mesh, int min_sides, int max_si
   }
   for (int c = 0; c < mesh.num_cells(); ++c) {
     if (mesh.cell_size(c) >= min_sides || touched[c]) continue;
+    // Best neighbour: the union with the smallest largest angle (Voronoi cells are convex;
+    // keep the merged cell as close to that as the neighbours allow), then the fewest sides.
     int best = -1;
     std::vector<int> best_loop;
+    double best_angle = 0.0;
     for (int k = 0; k < mesh.cell_size(c); ++k) {
       const int nb = mesh.neighbor(c, k);
       if (nb < 0 || touched[nb] || shared_edge_count(mesh, c, nb) != 1) continue;
       auto loop = union_loop(mesh, c, nb, mesh.cell_edges(c)[k]);
       if (static_cast<int>(loop.size()) > max_sides) continue;
-      if (best >= 0 && loop.size() >= best_loop.size()) continue;
       std::vector<Point> pts;
       for (int v : loop) pts.push_back(mesh.vertex(v));
       if (!acceptable_cell(pts)) continue;
+      const double angle = max_interior_angle(pts);
+      if (best >= 0 && std::make_pair(angle, loop.size()) >= std::make_pair(best_angle, best_loop.size()))
+        continue;
       best = nb;
+      best_angle = angle;
       best_loop = std::move(loop);
     }
     if (best < 0) continue;

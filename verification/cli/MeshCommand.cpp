@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <sstream>
 
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshStatistics.hpp"
@@ -61,8 +62,11 @@ int check_mesh_file(const MeshCommandOptions& o, bool domain_given) {
   const PolygonMesh mesh = read_vtu(o.check, domain_given ? &domain : nullptr);
   const auto report = validate_mesh(mesh);
   if (!report.ok()) {
-    std::cerr << report.summary();
-    std::cerr << o.check << ": invalid mesh (" << report.defect_count << " defects)\n";
+    // One line per defect on stderr, each naming the file; the count on stdout.
+    std::istringstream lines(report.summary());
+    for (std::string line; std::getline(lines, line);) std::cerr << o.check << ": " << line << "\n";
+    std::cout << o.check << ": invalid mesh, " << report.defect_count
+              << (report.defect_count == 1 ? " defect\n" : " defects\n");
     return kExitInputError;
   }
   const auto stats = compute_statistics(mesh);

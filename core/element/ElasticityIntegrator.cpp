@@ -1,0 +1,61 @@
+#include "core/element/ElasticityIntegrator.hpp"
+
+namespace vorodg {
+
+ElasticityIntegrator::ElasticityIntegrator(const ElementTable& table,
+                                           const IsotropicElasticity& material, bool mean_dilation)
+    : table_(table), material_(material), mean_dilation_(mean_dilation) {}
+
+void ElasticityIntegrator::strain_operator(int c, int q, StrainOperator& B) const {
+  const int n = table_.num_nodes(c);
+  B.setZero(3, 2 * n);
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector2d& g = table_.grad(c, q, k);
+    B(0, 2 * k) = g.x();
+    B(1, 2 * k + 1) = g.y();
+    B(2, 2 * k) = g.y();
+    B(2, 2 * k + 1) = g.x();
+  }
+  if (!mean_dilation_) return;
+  // B-bar: the in-plane dilatation eps_xx + eps_yy (all of the volumetric strain in plane
+  // strain, where eps_zz = 0) is replaced by its cell mean: each of the two normal strains takes
+  // half of the difference. (The 3D split with 1/3 would need an eps_zz row; without it the
+  // pointwise dilatation stays in and the element still locks.)
+  const double share = 0.5;
+  double area = 0.0;
+  for (int j = 0; j < table_.num_points(c); ++j) area += table_.weight(c, j);
+  for (int k = 0; k < n; ++k) {
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (int j = 0; j < table_.num_points(c); ++j) mean += table_.weight(c, j) * table_.grad(c, j, k);
+    const Eigen::Vector2d shift = share * (mean / area - table_.grad(c, q, k));
+    for (int d = 0; d < 2; ++d) {
+      B(0, 2 * k + d) += shift[d];
+      B(1, 2 * k + d) += shift[d];
+    }
+  }
+}
+
+void ElasticityIntegrator::cell_matrix(int c, Eigen::MatrixXd& K) const {
+  const int n = table_.num_nodes(c);
+  K.setZero(2 * n, 2 * n);
+  StrainOperator B;
+  const Eigen::Matrix3d& D = material_.D();
+  for (int q = 0; q < table_.num_points(c); ++q) {
+    strain_operator(c, q, B);
+    K.noalias() += table_.weight(c, q) * (B.transpose() * D * B);
+  }
+}
+
+Eigen::Vector3d ElasticityIntegrator::mean_stress(int c, const Eigen::VectorXd& u) const {
+  StrainOperator B;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double area = 0.0;
+  for (int q = 0; q < table_.num_points(c); ++q) {
+    strain_operator(c, q, B);
+    sum += table_.weight(c, q) * (material_.D() * (B * u));
+    area += table_.weight(c, q);
+  }
+  return sum / area;
+}
+
+}  // namespace vorodg

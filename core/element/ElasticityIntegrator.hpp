@@ -1,0 +1,36 @@
+#pragma once
+// The cell-stiffness kernel CG and DG share: K_c = sum_q w_q B_q^T D B_q over the element
+// table's quadrature points, with the standard strain operator or the mean-dilation (B-bar) one
+// whose volumetric part is the cell mean (report section 3, Figure 8).
+// Cell DOFs are ordered (u_x, u_y) per cell vertex, in the cell's loop order.
+#include <Eigen/Core>
+
+#include "core/element/ElementTable.hpp"
+#include "core/material/IsotropicElasticity.hpp"
+
+namespace vorodg {
+
+using StrainOperator = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+
+class ElasticityIntegrator {
+ public:
+  ElasticityIntegrator(const ElementTable& table, const IsotropicElasticity& material,
+                       bool mean_dilation);
+
+  const IsotropicElasticity& material() const { return material_; }
+  bool mean_dilation() const { return mean_dilation_; }
+
+  /// B at quadrature point q of cell c (3 x 2n), in Voigt form (eps_xx, eps_yy, 2 eps_xy).
+  void strain_operator(int c, int q, StrainOperator& B) const;
+  /// The cell stiffness matrix (2n x 2n).
+  void cell_matrix(int c, Eigen::MatrixXd& K) const;
+  /// Area-weighted mean stress of cell c for the cell's DOF vector u (2n).
+  Eigen::Vector3d mean_stress(int c, const Eigen::VectorXd& u) const;
+
+ private:
+  const ElementTable& table_;
+  IsotropicElasticity material_;
+  bool mean_dilation_;
+};
+
+}  // namespace vorodg

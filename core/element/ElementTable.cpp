@@ -1,0 +1,167 @@
+#include "core/element/ElementTable.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/element/RkShapeFunctions.hpp"
+#include "core/geometry/Polygon.hpp"
+#include "core/quadrature/TriangleRule.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+
+namespace vorodg {
+namespace {
+
+constexpr int kMaxNodes = 64;  // cells with more vertices are rejected
+
+void check_options(const ElementOptions& o) {
+  if (o.rule_points != 1 && o.rule_points != 3 && o.rule_points != 6)
+    throw InputError("quadrature rule with " + std::to_string(o.rule_points) +
+                     " points per fan triangle: expected 1, 3 or 6");
+  check_weight_options(o.weights);
+}
+
+/// Fan quadrature needs every triangle (centroid, v_k, v_k+1) to be positive.
+void check_star_shaped(const PolygonMesh& mesh) {
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const auto pts = mesh.cell_points(c);
+    if (static_cast<int>(pts.size()) > kMaxNodes)
+      throw InputError("cell " + std::to_string(c) + " has " + std::to_string(pts.size()) +
+                       " vertices, expected at most " + std::to_string(kMaxNodes));
+    const double area = polygon::signed_area(pts);
+    if (!(area > 0.0) || !polygon::star_shaped_about(pts, polygon::centroid(pts, area), 0.0))
+      throw InputError("cell " + std::to_string(c) +
+                       " is not star-shaped with respect to its centroid (fan quadrature needs it)");
+  }
+}
+
+RkCellFrame cell_frame(const PolygonMesh& mesh, int c, const Point& centroid) {
+  return {centroid, std::sqrt(mesh.cell_area(c))};
+}
+
+}  // namespace
+
+ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& options)
+    : mesh_(mesh), options_(options) {
+  check_options(options);
+  check_star_shaped(mesh);
+  weights_ = std::make_unique<WeightFunctions>(mesh, options.weights, options.threads);
+  const int q_per_fan = triangle_rule(options.rule_points).size();
+  const int nc = mesh.num_cells();
+  point_offsets_.assign(nc + 1, 0);
+  value_offsets_.assign(nc + 1, 0);
+  for (int c = 0; c < nc; ++c) {
+    const int n = mesh.cell_size(c);
+    point_offsets_[c + 1] = point_offsets_[c] + n * q_per_fan;
+    value_offsets_[c + 1] = value_offsets_[c] + static_cast<std::size_t>(n) * n * q_per_fan;
+  }
+  points_.resize(point_offsets_.back());
+  weights_q_.resize(point_offsets_.back());
+  fan_points_.resize(point_offsets_.back());
+  shape_.resize(value_offsets_.back());
+  grad_.resize(value_offsets_.back());
+  defect_.assign(nc, 0.0);
+  rcond_.assign(nc, 0.0);
+
+  // Exceptions must not leave a parallel region: remember the first failing cell instead.
+  std::atomic<int> failed{nc};
+#pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(options.threads, 1))
+  for (int c = 0; c < nc; ++c) {
+    build_cell(c);
+    if (!(rcond_[c] > 1e-14)) {
+      int expected = failed.load();
+      while (c < expected && !failed.compare_exchange_weak(expected, c)) {}
+    }
+  }
+  if (failed < nc)
+    throw NumericalError("cell " + std::to_string(failed.load()) +
+                         ": the RK moment matrix is singular at a quadrature point (reciprocal "
+                         "condition " + fmt(rcond_[failed.load()]) + ")");
+}
+
+void ElementTable::build_cell(int c) {
+  const auto loop = mesh_.cell_vertices(c);
+  const int n = static_cast<int>(loop.size());
+  const Point& C = weights_->centroids()[c];
+  const RkCellFrame frame = cell_frame(mesh_, c, C);
+  Eigen::Vector2d nodes[kMaxNodes], grad_w[kMaxNodes];
+  double w[kMaxNodes];
+  for (int k = 0; k < n; ++k) nodes[k] = mesh_.vertex(loop[k]);
+  const TriangleRule& rule = triangle_rule(options_.rule_points);
+  double min_rcond = std::numeric_limits<double>::infinity();
+  int q = 0;
+  for (int k = 0; k < n; ++k) {
+    const Point& A = nodes[k];
+    const Point& B = nodes[(k + 1) % n];
+    const double fan_area = 0.5 * polygon::orient2(C, A, B);
+    for (int r = 0; r < rule.size(); ++r, ++q) {
+      const std::size_t at = point_offsets_[c] + q;
+      fan_points_[at] = {k, rule.bary[r]};
+      points_[at] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
+      weights_q_[at] = rule.weights[r] * fan_area;
+      weights_->evaluate(c, k, rule.bary[r], w, grad_w);
+      const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
+      const double rc = rk_shape_functions(frame, {nodes, static_cast<std::size_t>(n)}, points_[at],
+                                           w, grad_w, &shape_[v], &grad_[v]);
+      min_rcond = std::min(min_rcond, std::isfinite(rc) ? rc : 0.0);
+    }
+  }
+  rcond_[c] = min_rcond;
+
+  // Discrete divergence identity (Eq. 16): sum_q w_q dpsi_k/dx_i must equal the boundary
+  // integral of psi_k n_i, which for edge-linear psi_k is half the sum of (length x normal) of
+  // the two cell edges at vertex k: 0.5 (y_k+1 - y_k-1, x_k-1 - x_k+1).
+  const int nq = num_points(c);
+  double sum_w2 = 0.0;
+  for (int j = 0; j < nq; ++j) sum_w2 += weight(c, j) * weight(c, j);
+  double defect = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const Point& prev = nodes[(k + n - 1) % n];
+    const Point& next = nodes[(k + 1) % n];
+    const Eigen::Vector2d boundary(0.5 * (next.y() - prev.y()), 0.5 * (prev.x() - next.x()));
+    Eigen::Vector2d volume = Eigen::Vector2d::Zero();
+    for (int j = 0; j < nq; ++j) volume += weight(c, j) * grad(c, j, k);
+    const Eigen::Vector2d gap = boundary - volume;
+    defect = std::max(defect, gap.cwiseAbs().maxCoeff());
+    if (!options_.divergence_correction) continue;
+    // Least change of the gradients (in the sum of squares) that closes the gap.
+    for (int j = 0; j < nq; ++j)
+      grad_[value_offsets_[c] + static_cast<std::size_t>(j) * n + k] += weight(c, j) * gap / sum_w2;
+  }
+  defect_[c] = defect;
+}
+
+Point ElementTable::position(int c, const FanPoint& at) const {
+  const auto loop = mesh_.cell_vertices(c);
+  const int n = static_cast<int>(loop.size());
+  return at.bary[0] * weights_->centroids()[c] + at.bary[1] * mesh_.vertex(loop[at.fan]) +
+         at.bary[2] * mesh_.vertex(loop[(at.fan + 1) % n]);
+}
+
+void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vector2d* grad) const {
+  const auto loop = mesh_.cell_vertices(c);
+  const int n = static_cast<int>(loop.size());
+  Eigen::Vector2d nodes[kMaxNodes], grad_w[kMaxNodes];
+  double w[kMaxNodes];
+  for (int k = 0; k < n; ++k) nodes[k] = mesh_.vertex(loop[k]);
+  // On the cell's edge M is singular; the gradient is the one-sided limit from just inside.
+  constexpr double kInside = 1e-9;
+  const bool on_edge = at.bary[0] < kInside;
+  Eigen::Vector3d bary = at.bary;
+  if (on_edge) bary = Eigen::Vector3d(kInside, at.bary[1] * (1 - kInside), at.bary[2] * (1 - kInside));
+  weights_->evaluate(c, at.fan, bary, w, grad_w);
+  const FanPoint inside{at.fan, bary};
+  rk_shape_functions(cell_frame(mesh_, c, weights_->centroids()[c]),
+                     {nodes, static_cast<std::size_t>(n)}, position(c, inside), w, grad_w, psi,
+                     grad);
+  if (on_edge) {  // exact edge limit: linear between the edge's end points
+    const double s = at.bary[1] + at.bary[2];
+    for (int k = 0; k < n; ++k) psi[k] = 0.0;
+    psi[at.fan] = at.bary[1] / s;
+    psi[(at.fan + 1) % n] = at.bary[2] / s;
+  }
+}
+
+}  // namespace vorodg

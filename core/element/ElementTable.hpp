@@ -1,0 +1,77 @@
+#pragma once
+// The element table: the one thing CG and DG both consume. Per cell: quadrature points and
+// weights on the fan from the centroid, and the values and gradients of the cell's nodal RK
+// shape functions there (gradients divergence-corrected if asked, report Eqs. 15-16).
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "core/element/WeightFunctions.hpp"
+#include "core/mesh/PolygonMesh.hpp"
+
+namespace vorodg {
+
+struct ElementOptions {
+  int rule_points = 3;                 // per fan triangle: 1, 3 or 6
+  bool divergence_correction = true;   // enforce the discrete divergence identity (Eq. 16)
+  WeightFunctionOptions weights;
+  int threads = 1;                     // setup threads; results do not depend on it
+};
+
+/// Quadrature point of a cell: fan triangle and barycentric coordinates (centroid, v_k, v_k+1).
+struct FanPoint {
+  int fan = 0;
+  Eigen::Vector3d bary;
+};
+
+class ElementTable {
+ public:
+  /// Builds weight functions, quadrature and shape functions for every cell. Throws InputError
+  /// naming the cell if one is not star-shaped with respect to its centroid, NumericalError if
+  /// a moment matrix is singular at a quadrature point.
+  ElementTable(const PolygonMesh& mesh, const ElementOptions& options);
+
+  const PolygonMesh& mesh() const { return mesh_; }
+  const ElementOptions& options() const { return options_; }
+  const WeightFunctions& weights() const { return *weights_; }
+
+  int num_points(int c) const { return point_offsets_[c + 1] - point_offsets_[c]; }
+  int num_nodes(int c) const { return mesh_.cell_size(c); }
+  const Point& point(int c, int q) const { return points_[point_offsets_[c] + q]; }
+  double weight(int c, int q) const { return weights_q_[point_offsets_[c] + q]; }
+  const FanPoint& fan_point(int c, int q) const { return fan_points_[point_offsets_[c] + q]; }
+  /// psi_k and grad psi_k of the cell's vertex k at quadrature point q.
+  double shape(int c, int q, int k) const { return shape_[value_offsets_[c] + q * num_nodes(c) + k]; }
+  const Eigen::Vector2d& grad(int c, int q, int k) const {
+    return grad_[value_offsets_[c] + q * num_nodes(c) + k];
+  }
+
+  /// Largest |sum_q w_q dpsi_k/dx_i - (boundary integral)| over the cell's nodes and directions
+  /// before any correction: the discrete divergence defect (Eq. 16), absolute.
+  double divergence_defect(int c) const { return defect_[c]; }
+  /// Smallest reciprocal condition estimate of the moment matrix over the cell's points.
+  double min_moment_rcond(int c) const { return rcond_[c]; }
+
+  /// Shape functions (uncorrected gradients) at any point of the cell given as fan triangle and
+  /// barycentric coordinates. On the cell's edges (barycentric centroid coordinate 0) the values
+  /// are the exact edge limit, linear between the edge's two vertices.
+  void evaluate(int c, const FanPoint& at, double* psi, Eigen::Vector2d* grad) const;
+  Point position(int c, const FanPoint& at) const;
+
+ private:
+  void build_cell(int c);
+
+  const PolygonMesh& mesh_;
+  ElementOptions options_;
+  std::unique_ptr<WeightFunctions> weights_;
+  std::vector<int> point_offsets_;
+  std::vector<std::size_t> value_offsets_;
+  std::vector<Point> points_;
+  std::vector<double> weights_q_;
+  std::vector<FanPoint> fan_points_;
+  std::vector<double> shape_;
+  std::vector<Eigen::Vector2d> grad_;
+  std::vector<double> defect_, rcond_;
+};
+
+}  // namespace vorodg

@@ -1,0 +1,63 @@
+#pragma once
+// Nodal weight functions of the RK polygon element (report Eq. 11, boundary conditions as
+// DESIGN.md reads them): for each vertex I, -lap w = 1 on its patch (the cells around I),
+// w = 0 on every patch edge not incident to I, dw/dn = 0 on the domain-boundary edges incident
+// to I. Solved by finite elements (P1 or P2) on each cell's fan lattice; the cell lattices of
+// neighbouring cells match along shared edges, so the patch problem is conforming.
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+#include "core/element/FanLattice.hpp"
+#include "core/mesh/PolygonMesh.hpp"
+
+namespace vorodg {
+
+struct WeightFunctionOptions {
+  int refinement = 1;  // each fan triangle cut into 4^refinement sub-triangles
+  int degree = 1;      // 1 (P1) or 2 (P2) on the sub-triangles
+};
+
+/// Throws InputError unless refinement is in 0..4 and degree is 1 or 2 (P1 needs refinement
+/// >= 0; note P1 with refinement 0 has no node inside a fan triangle).
+void check_weight_options(const WeightFunctionOptions& options);
+
+class WeightFunctions {
+ public:
+  /// Solves every vertex patch problem. `threads` > 1 runs patches in parallel; the result does
+  /// not depend on the thread count.
+  WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOptions& options, int threads = 1);
+
+  const WeightFunctionOptions& options() const { return options_; }
+  /// Sub-triangles per fan-triangle side.
+  int lattice_size() const { return 1 << options_.refinement; }
+  FanLattice lattice(int cell) const { return FanLattice(mesh_.cell_size(cell), divisions()); }
+  /// Cell-local nodal values (FanLattice numbering) of the weight function of the cell's
+  /// vertex k, restricted to the cell.
+  std::span<const double> values(int cell, int k) const {
+    const int n = lattice(cell).node_count();
+    return {values_.data() + offsets_[cell] + static_cast<std::size_t>(k) * n,
+            static_cast<std::size_t>(n)};
+  }
+
+  /// Values and gradients of the weight functions of all of the cell's vertices at barycentric
+  /// point `bary` (centroid, v_k, v_k+1) of fan triangle k. `w` and `grad` have cell_size
+  /// entries.
+  void evaluate(int cell, int fan, const Eigen::Vector3d& bary, double* w,
+                Eigen::Vector2d* grad) const;
+
+  /// Centroids of the cells (the fan centres).
+  const std::vector<Point>& centroids() const { return centroids_; }
+
+ private:
+  int divisions() const { return lattice_size() * options_.degree; }
+  void solve_patch(int vertex);
+
+  const PolygonMesh& mesh_;
+  WeightFunctionOptions options_;
+  std::vector<Point> centroids_;
+  std::vector<std::size_t> offsets_;  // per cell, into values_
+  std::vector<double> values_;
+};
+
+}  // namespace vorodg

@@ -1,0 +1,111 @@
+// Throughput of the RK element layer (issue 3), in cells per second (items_per_second), on rcp
+// meshes of the 4 x 1 beam domain:
+//   BM_WeightFunctions/N/refinement/degree   the vertex-patch Poisson solves alone
+//   BM_ElementTable/N/refinement/degree      weights + quadrature + shape functions + correction
+//   BM_ElementTableThreads/N/threads         the default setting on 1 and 2 threads
+//   BM_CellStiffness/N                       the shared cell-stiffness kernel over all cells
+// Target at the default setting: >= 100k cells/s on one core. One thread unless stated.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/element/ElementTable.hpp"
+#include "core/meshgen/MeshFamily.hpp"
+
+namespace {
+
+using namespace vorodg;
+
+/// rcp meshes of about n cells, generated once per n.
+const PolygonMesh& rcp_mesh(int n) {
+  static std::map<int, std::unique_ptr<PolygonMesh>> cache;
+  auto& slot = cache[n];
+  if (!slot) {
+    MeshSpec spec;
+    spec.family = MeshFamily::rcp;
+    spec.domain = Rectangle(0, 0, 4, 1);
+    spec.size = std::sqrt(0.7 * spec.domain.area() / n);
+    spec.seed = 11;
+    slot = std::make_unique<PolygonMesh>(generate_mesh(spec).mesh);
+  }
+  return *slot;
+}
+
+ElementOptions options_for(int refinement, int degree, int threads) {
+  ElementOptions o;
+  o.weights.refinement = refinement;
+  o.weights.degree = degree;
+  o.threads = threads;
+  return o;
+}
+
+void BM_WeightFunctions(benchmark::State& state) {
+  const PolygonMesh& mesh = rcp_mesh(static_cast<int>(state.range(0)));
+  const auto o = options_for(static_cast<int>(state.range(1)), static_cast<int>(state.range(2)), 1);
+  for (auto _ : state) {
+    WeightFunctions weights(mesh, o.weights, 1);
+    benchmark::DoNotOptimize(weights.values(0, 0).data());
+  }
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+  state.counters["cells"] = mesh.num_cells();
+}
+
+void BM_ElementTable(benchmark::State& state) {
+  const PolygonMesh& mesh = rcp_mesh(static_cast<int>(state.range(0)));
+  const auto o = options_for(static_cast<int>(state.range(1)), static_cast<int>(state.range(2)), 1);
+  for (auto _ : state) {
+    ElementTable table(mesh, o);
+    benchmark::DoNotOptimize(table.shape(0, 0, 0));
+  }
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+  state.counters["cells"] = mesh.num_cells();
+}
+
+void BM_ElementTableThreads(benchmark::State& state) {
+  const PolygonMesh& mesh = rcp_mesh(static_cast<int>(state.range(0)));
+  const ElementOptions defaults;
+  auto o = options_for(defaults.weights.refinement, defaults.weights.degree,
+                       static_cast<int>(state.range(1)));
+  for (auto _ : state) {
+    ElementTable table(mesh, o);
+    benchmark::DoNotOptimize(table.shape(0, 0, 0));
+  }
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+}
+
+void BM_CellStiffness(benchmark::State& state) {
+  const PolygonMesh& mesh = rcp_mesh(static_cast<int>(state.range(0)));
+  const ElementTable table(mesh, ElementOptions{});
+  const ElasticityIntegrator integrator(table, IsotropicElasticity(1.0, 0.3, PlaneModel::stress),
+                                        state.range(1) != 0);
+  Eigen::MatrixXd K;
+  for (auto _ : state) {
+    for (int c = 0; c < mesh.num_cells(); ++c) {
+      integrator.cell_matrix(c, K);
+      benchmark::DoNotOptimize(K.data());
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+}
+
+void weight_settings(benchmark::internal::Benchmark* b) {
+  for (int n : {10000, 100000})
+    for (auto [refinement, degree] : {std::pair{0, 1}, {1, 1}, {2, 1}, {0, 2}, {1, 2}})
+      b->Args({n, refinement, degree});
+}
+
+}  // namespace
+
+BENCHMARK(BM_WeightFunctions)->Apply(weight_settings)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ElementTable)->Apply(weight_settings)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ElementTableThreads)
+    ->Args({100000, 1})
+    ->Args({100000, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_CellStiffness)->Args({100000, 0})->Args({100000, 1})->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();

@@ -6,6 +6,7 @@
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "verification/cli/MeshCommand.hpp"
+#include "verification/cli/SolveCommand.hpp"
 
 namespace vorodg {
 namespace {
@@ -25,6 +26,8 @@ int run_application(int argc, char** argv) {
   app.set_version_flag("--version", VORODG_VERSION);
   MeshCommandOptions mesh_options;
   CLI::App* mesh = add_mesh_command(app, mesh_options);
+  SolveCommandOptions solve_options;
+  CLI::App* solve = add_solve_command(app, solve_options);
   CLI::App* info = app.add_subcommand("info", "Print the version and the BLAS in use");
   try {
     app.parse(argc, argv);
@@ -40,6 +43,7 @@ int run_application(int argc, char** argv) {
   }
   try {
     if (mesh->parsed()) return run_mesh_command(mesh_options, *mesh);
+    if (solve->parsed()) return run_solve_command(solve_options, *solve);
     if (info->parsed()) return print_info();
   } catch (const InputError& e) {
     std::cerr << "vorodg: error: " << e.what() << "\n";

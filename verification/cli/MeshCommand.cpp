@@ -11,54 +11,14 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "verification/cli/CliSupport.hpp"
 #include "verification/cli/JsonOutput.hpp"
 
 namespace vorodg {
 namespace {
 
-/// Checks before any work that every output folder exists, so a run never computes for nothing
-/// or leaves one output written and another missing.
-void check_output_folder(const std::string& path, const char* option) {
-  if (path.empty()) return;
-  const std::filesystem::path p(path);
-  const auto folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
-  std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec))
-    throw InputError(std::string(option) + " '" + path + "': folder '" + folder.string() +
-                     "' does not exist");
-}
-
-/// The size option a family takes, checked against what was given.
-double family_size(MeshFamily family, const MeshCommandOptions& o) {
-  const bool seeded = family == MeshFamily::rcp || family == MeshFamily::tri;
-  const std::string name(family_name(family));
-  if (seeded) {
-    if (o.h != 0.0) throw InputError("--h: family " + name + " takes --d (minimum seed distance)");
-    if (!(o.d > 0.0)) throw InputError("--d = " + fmt(o.d) + ": family " + name +
-                                        " needs a minimum seed distance d > 0");
-    return o.d;
-  }
-  if (o.d != 0.0) throw InputError("--d: family " + name + " takes --h (cell size)");
-  if (!(o.h > 0.0))
-    throw InputError("--h = " + fmt(o.h) + ": family " + name + " needs a cell size h > 0");
-  return o.h;
-}
-
-/// Echo of every option with its value: the line reproduces the run.
-void echo_options(const CLI::App& command) {
-  std::ostringstream os;
-  os << "vorodg mesh";
-  for (const CLI::Option* opt : command.get_options()) {
-    if (opt->get_name() == "--help") continue;
-    const std::string value = opt->count() ? opt->as<std::string>() : opt->get_default_str();
-    if (value.empty()) continue;
-    os << " " << opt->get_name() << " " << value;
-  }
-  std::cout << "# " << os.str() << "\n";
-}
-
 int check_mesh_file(const MeshCommandOptions& o, bool domain_given) {
-  const Rectangle domain = Rectangle::parse(o.domain);
+  const Rectangle domain = Rectangle::parse(o.mesh.domain);
   const PolygonMesh mesh = read_vtu(o.check, domain_given ? &domain : nullptr);
   const auto report = validate_mesh(mesh);
   if (!report.ok()) {
@@ -80,17 +40,7 @@ int check_mesh_file(const MeshCommandOptions& o, bool domain_given) {
 
 CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand("mesh", "Generate a mesh (or --check one) and report on it");
-  cmd->add_option("--family", o.family, "rcp | hex | perturbed-hex | tri | quad")
-      ->capture_default_str();
-  cmd->add_option("--domain", o.domain, "Rectangle x0,y0,x1,y1")->capture_default_str();
-  cmd->add_option("--d", o.d, "rcp, tri: minimum distance between seeds");
-  cmd->add_option("--h", o.h, "hex, perturbed-hex: hexagon spacing; quad: edge length");
-  cmd->add_option("--r", o.r, "perturbed-hex: perturbation, fraction of the hexagon edge")
-      ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Random seed")->capture_default_str();
-  cmd->add_option("--regularize", o.regularize,
-                  "rcp: collapse edges shorter than this times d (0: keep the raw Voronoi mesh)")
-      ->capture_default_str();
+  add_mesh_source_options(*cmd, o.mesh);
   cmd->add_option("-o,--output", o.output, "Mesh file to write (.vtu)");
   cmd->add_option("--stats", o.stats, "Statistics file to write (.json)");
   cmd->add_option("--check", o.check, "Validate this .vtu mesh instead of generating one");
@@ -100,16 +50,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& o) {
 int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
   const bool domain_given = command.count("--domain") > 0;
   if (!o.check.empty()) return check_mesh_file(o, domain_given);
-  echo_options(command);
-  MeshSpec spec;
-  spec.family = parse_family(o.family);
-  if (spec.family == MeshFamily::file)
-    throw InputError("--family file: use --check FILE to read a mesh");
-  spec.domain = Rectangle::parse(o.domain);
-  spec.size = family_size(spec.family, o);
-  spec.seed = o.seed;
-  spec.perturbation = o.r;
-  spec.regularization = o.regularize;
+  echo_options("vorodg mesh", command);
+  const MeshSpec spec = mesh_spec(o.mesh, true);
   check_output_folder(o.output, "--output");
   check_output_folder(o.stats, "--stats");
 

@@ -5,16 +5,12 @@
 #include <cstdint>
 #include <string>
 
+#include "verification/cli/CliSupport.hpp"
+
 namespace vorodg {
 
 struct MeshCommandOptions {
-  std::string family = "rcp";
-  std::string domain = "0,0,4,1";
-  double d = 0.0;  // rcp, tri
-  double h = 0.0;  // hex, perturbed-hex, quad
-  double r = 0.3;
-  std::uint64_t seed = 1;
-  double regularize = 0.1;
+  MeshSourceOptions mesh;
   std::string output;
   std::string stats;
   std::string check;

@@ -1,0 +1,59 @@
+#pragma once
+// Continuous Galerkin linear elasticity on the RK polygon element layer (deal.II's step-8 in
+// spirit): two DOFs per mesh vertex, the shared cell-stiffness kernel, prescribed displacements
+// imposed at the vertices of Dirichlet sides (the shape functions are Kronecker-delta there) and
+// eliminated from the system, tractions integrated along the edges of traction sides, a body
+// force over the cells, and one CHOLMOD supernodal Cholesky solve.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/element/ElementTable.hpp"
+#include "core/problem/BoundaryValueProblem.hpp"
+#include "core/solve/SparseCholesky.hpp"
+#include "core/util/Stopwatch.hpp"
+
+namespace vorodg {
+
+class CgElasticity {
+ public:
+  CgElasticity(const ElementTable& table, const ElasticityIntegrator& integrator,
+               const BoundaryValueProblem& problem, int threads = 1);
+
+  /// setup_system, assemble_system, solve. Throws InputError if no side carries Dirichlet data
+  /// (rigid motions free), NumericalError if the factorization breaks down.
+  void run();
+
+  void setup_system();
+  void assemble_system();
+  void solve();
+
+  /// Displacement of every vertex (the nodal values: shape functions are Kronecker-delta).
+  const Eigen::Matrix2Xd& vertex_displacement() const { return displacement_; }
+  /// The cell's DOF vector (u_x, u_y per vertex in loop order), as the integrator expects.
+  Eigen::VectorXd cell_dofs(int c) const;
+  int num_dofs() const { return 2 * table_.mesh().num_vertices(); }
+  int num_free_dofs() const { return static_cast<int>(free_.size()); }
+  const FactorizationReport& factorization() const { return factorization_; }
+  const StageTimes& seconds() const { return seconds_; }
+
+ private:
+  void add_body_force(Eigen::VectorXd& f) const;
+  void add_tractions(Eigen::VectorXd& f) const;
+
+  const ElementTable& table_;
+  const ElasticityIntegrator& integrator_;
+  const BoundaryValueProblem& problem_;
+  int threads_;
+
+  std::vector<int> free_index_;     // per global DOF: index among the free DOFs, or -1
+  std::vector<int> free_;           // free global DOFs
+  Eigen::VectorXd prescribed_;      // values of the Dirichlet DOFs (0 elsewhere)
+  Eigen::SparseMatrix<double> K_;   // lower triangle of the free-free block
+  Eigen::VectorXd rhs_;             // free DOFs
+  Eigen::Matrix2Xd displacement_;
+  FactorizationReport factorization_;
+  StageTimes seconds_;
+};
+
+}  // namespace vorodg

@@ -1,0 +1,95 @@
+#include "verification/ErrorNorms.hpp"
+
+#include <cmath>
+
+#include "core/quadrature/TriangleRule.hpp"
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+namespace {
+
+struct CellSums {
+  double l2 = 0, l2_exact = 0, energy = 0, energy_exact = 0;
+};
+
+CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, int c,
+                        const Eigen::VectorXd& u, bool energy) {
+  const PolygonMesh& mesh = table.mesh();
+  const auto loop = mesh.cell_vertices(c);
+  const int n = static_cast<int>(loop.size());
+  const int m = table.weights().lattice_size();
+  const TriangleRule& rule = triangle_rule(7);
+  const Eigen::Matrix3d& D = exact.material().D();
+  const Point& C = table.weights().centroids()[c];
+  double psi[64];
+  Eigen::Vector2d grad[64];
+  CellSums sums;
+  for (int k = 0; k < n; ++k) {
+    const double fan_area = 0.5 * std::abs((mesh.vertex(loop[k]) - C).x() * (mesh.vertex(loop[(k + 1) % n]) - C).y() -
+                                           (mesh.vertex(loop[k]) - C).y() * (mesh.vertex(loop[(k + 1) % n]) - C).x());
+    const double sub_area = fan_area / (m * m);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; a + b < m; ++b)
+        for (bool up : {true, false}) {
+          if (!up && a + b > m - 2) continue;
+          for (int r = 0; r < rule.size(); ++r) {
+            const double xi = rule.bary[r][1], eta = rule.bary[r][2];
+            const double lu = up ? a + xi : a + 1 - xi, lv = up ? b + eta : b + 1 - eta;
+            const FanPoint at{k, Eigen::Vector3d(1 - (lu + lv) / m, lu / m, lv / m)};
+            table.evaluate(c, at, psi, grad);
+            const Point x = table.position(c, at);
+            Eigen::Vector2d uh = Eigen::Vector2d::Zero();
+            Eigen::Matrix2d Gh = Eigen::Matrix2d::Zero();
+            for (int j = 0; j < n; ++j) {
+              uh += psi[j] * u.segment<2>(2 * j);
+              Gh += u.segment<2>(2 * j) * grad[j].transpose();
+            }
+            const double w = rule.weights[r] * sub_area;
+            const Eigen::Vector2d ue = exact.displacement(x);
+            sums.l2 += w * (uh - ue).squaredNorm();
+            sums.l2_exact += w * ue.squaredNorm();
+            if (!energy) continue;
+            const Eigen::Vector3d eh(Gh(0, 0), Gh(1, 1), Gh(0, 1) + Gh(1, 0));
+            const Eigen::Vector3d ee = exact.strain(x);
+            sums.energy += w * (eh - ee).dot(D * (eh - ee));
+            sums.energy_exact += w * ee.dot(D * ee);
+          }
+        }
+  }
+  return sums;
+}
+
+}  // namespace
+
+ErrorReport compute_errors(const ElementTable& table, const ExactSolution& exact,
+                           const std::function<Eigen::VectorXd(int)>& cell_dofs, bool energy,
+                           int threads) {
+  const PolygonMesh& mesh = table.mesh();
+  const int nc = mesh.num_cells();
+  std::vector<CellSums> sums(nc);
+#pragma omp parallel for schedule(dynamic, 128) num_threads(std::max(threads, 1))
+  for (int c = 0; c < nc; ++c) sums[c] = integrate_cell(table, exact, c, cell_dofs(c), energy);
+  ErrorReport report;
+  report.cell_l2_density.resize(nc);
+  report.cell_energy_density.resize(nc);
+  CellSums total;
+  for (int c = 0; c < nc; ++c) {  // in cell order: the same sum for any thread count
+    const double area = mesh.cell_area(c);
+    total.l2 += sums[c].l2;
+    total.l2_exact += sums[c].l2_exact;
+    total.energy += sums[c].energy;
+    total.energy_exact += sums[c].energy_exact;
+    report.cell_l2_density[c] = sums[c].l2 / area;
+    report.cell_energy_density[c] = sums[c].energy / area;
+  }
+  report.l2_absolute = std::sqrt(total.l2);
+  report.energy_absolute = std::sqrt(total.energy);
+  report.l2_error = total.l2_exact > 0 ? std::sqrt(total.l2 / total.l2_exact) : report.l2_absolute;
+  report.energy_error =
+      total.energy_exact > 0 ? std::sqrt(total.energy / total.energy_exact) : report.energy_absolute;
+  if (!std::isfinite(report.l2_error) || !std::isfinite(report.energy_error))
+    throw NumericalError("the error norms are not finite: the solution broke down");
+  return report;
+}
+
+}  // namespace vorodg

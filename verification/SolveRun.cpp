@@ -1,0 +1,78 @@
+#include "verification/SolveRun.hpp"
+
+#include <cmath>
+
+#include "cg/CgElasticity.hpp"
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+#include "verification/ErrorNorms.hpp"
+#include "verification/problems/AffineField.hpp"
+#include "verification/problems/TimoshenkoBeam.hpp"
+
+namespace vorodg {
+
+std::unique_ptr<ExactSolution> make_problem(const SolveSettings& s, const Rectangle& domain) {
+  const IsotropicElasticity material(s.E, s.nu, s.plane);
+  if (s.problem == "beam") {
+    const double tol = 1e-12 * domain.scale();
+    if (std::abs(domain.x0()) > tol || std::abs(domain.y0() + domain.y1()) > tol)
+      throw InputError("problem beam: domain " + domain.to_string() +
+                       ", expected [0, L] x [-D/2, D/2] (e.g. --domain 0,-0.5,4,0.5)");
+    return std::make_unique<TimoshenkoBeam>(material, domain.width(), domain.height(), s.load);
+  }
+  if (s.problem == "patch")
+    return std::make_unique<AffineField>(material, AffineField::Supports::dirichlet);
+  if (s.problem == "patch-mixed")
+    return std::make_unique<AffineField>(material, AffineField::Supports::mixed);
+  if (s.problem == "patch-traction")
+    return std::make_unique<AffineField>(material, AffineField::Supports::traction);
+  if (s.problem == "mms") return std::make_unique<ManufacturedSolution>(material, domain);
+  throw InputError("problem '" + s.problem + "': expected one of beam, patch, patch-mixed, patch-traction, mms");
+}
+
+double von_mises(const Eigen::Vector3d& s, const IsotropicElasticity& material) {
+  const double szz = material.model() == PlaneModel::strain ? material.nu() * (s[0] + s[1]) : 0.0;
+  const double a = s[0] - s[1], b = s[1] - szz, c = szz - s[0];
+  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3 * s[2] * s[2]);
+}
+
+SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
+  if (settings.formulation != "cg")
+    throw InputError("formulation '" + settings.formulation + "': expected cg");
+  SolveResult result;
+  const auto problem = make_problem(settings, mesh.domain());
+  Stopwatch clock;
+  const ElementTable table(mesh, settings.element);
+  result.seconds["element"] = clock.seconds();
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    result.max_divergence_defect =
+        std::max(result.max_divergence_defect, table.divergence_defect(c) / std::sqrt(mesh.cell_area(c)));
+    result.min_moment_rcond = c == 0 ? table.min_moment_rcond(c)
+                                     : std::min(result.min_moment_rcond, table.min_moment_rcond(c));
+  }
+  const ElasticityIntegrator integrator(table, problem->material(), settings.mean_dilation);
+  CgElasticity cg(table, integrator, *problem, settings.element.threads);
+  cg.run();
+  for (const auto& [stage, seconds] : cg.seconds()) result.seconds[stage] = seconds;
+  result.dofs = cg.num_dofs();
+  result.free_dofs = cg.num_free_dofs();
+  result.rcond = cg.factorization().rcond;
+  result.vertex_displacement = cg.vertex_displacement();
+
+  clock.restart();
+  const auto cell_dofs = [&](int c) { return cg.cell_dofs(c); };
+  const ErrorReport errors =
+      compute_errors(table, *problem, cell_dofs, settings.energy_error, settings.element.threads);
+  result.l2_error = errors.l2_error;
+  result.energy_error = errors.energy_error;
+  result.cell_l2_density = errors.cell_l2_density;
+  result.cell_energy_density = errors.cell_energy_density;
+  result.cell_mean_stress.resize(mesh.num_cells());
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    result.cell_mean_stress[c] = integrator.mean_stress(c, cg.cell_dofs(c));
+  result.seconds["error"] = clock.seconds();
+  return result;
+}
+
+}  // namespace vorodg

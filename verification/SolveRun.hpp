@@ -1,0 +1,54 @@
+#pragma once
+// One solve of one problem on one mesh, stage by stage (element layer, assembly, factorization,
+// solve, errors), with the wall time of each: what `vorodg solve` runs once and a study runs
+// for every (level, realization, formulation, knob).
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/element/ElementTable.hpp"
+#include "core/material/IsotropicElasticity.hpp"
+#include "core/mesh/PolygonMesh.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "verification/problems/ExactSolution.hpp"
+
+namespace vorodg {
+
+struct SolveSettings {
+  std::string problem = "beam";  // beam | patch | patch-mixed | patch-traction | mms
+  std::string formulation = "cg";
+  PlaneModel plane = PlaneModel::stress;
+  double E = 1.0;
+  double nu = 0.3;
+  double load = 1.0;  // beam end load P
+  bool mean_dilation = false;
+  ElementOptions element;  // rule, correction, weight refinement/degree, threads
+  bool energy_error = true;
+};
+
+struct SolveResult {
+  int dofs = 0;
+  int free_dofs = 0;
+  double l2_error = 0.0;
+  double energy_error = 0.0;
+  double rcond = 0.0;
+  double max_divergence_defect = 0.0;  // before correction, relative to sqrt(cell area)
+  double min_moment_rcond = 0.0;
+  StageTimes seconds;
+  Eigen::Matrix2Xd vertex_displacement;
+  std::vector<Eigen::Vector3d> cell_mean_stress;
+  std::vector<double> cell_l2_density, cell_energy_density;
+};
+
+/// The exact solution a problem name stands for, on `domain` (the beam needs [0,L]x[-D/2,D/2]).
+/// Throws InputError for an unknown name or a domain the problem cannot live on.
+std::unique_ptr<ExactSolution> make_problem(const SolveSettings& settings, const Rectangle& domain);
+
+/// Builds the element table, assembles, solves and measures the errors.
+SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings);
+
+/// Von Mises stress of an in-plane stress state (sigma_zz = nu (sxx + syy) in plane strain).
+double von_mises(const Eigen::Vector3d& stress, const IsotropicElasticity& material);
+
+}  // namespace vorodg

@@ -1,0 +1,90 @@
+#include "verification/cli/CliSupport.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+
+namespace vorodg {
+namespace {
+
+/// The size option a family takes, checked against what was given.
+double family_size(MeshFamily family, const MeshSourceOptions& o) {
+  const bool seeded = family == MeshFamily::rcp || family == MeshFamily::tri;
+  const std::string name(family_name(family));
+  if (seeded) {
+    if (o.h != 0.0) throw InputError("--h: family " + name + " takes --d (minimum seed distance)");
+    if (!(o.d > 0.0))
+      throw InputError("--d = " + fmt(o.d) + ": family " + name +
+                       " needs a minimum seed distance d > 0");
+    return o.d;
+  }
+  if (o.d != 0.0) throw InputError("--d: family " + name + " takes --h (cell size)");
+  if (!(o.h > 0.0))
+    throw InputError("--h = " + fmt(o.h) + ": family " + name + " needs a cell size h > 0");
+  return o.h;
+}
+
+}  // namespace
+
+void add_mesh_source_options(CLI::App& cmd, MeshSourceOptions& o) {
+  cmd.add_option("--family", o.family, "rcp | hex | perturbed-hex | tri | quad")
+      ->capture_default_str();
+  cmd.add_option("--domain", o.domain, "Rectangle x0,y0,x1,y1")->capture_default_str();
+  cmd.add_option("--d", o.d, "rcp, tri: minimum distance between seeds");
+  cmd.add_option("--h", o.h, "hex, perturbed-hex: hexagon spacing; quad: edge length");
+  cmd.add_option("--r", o.r, "perturbed-hex: perturbation, fraction of the shortest edge")
+      ->capture_default_str();
+  cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  cmd.add_option("--regularize", o.regularize,
+                 "rcp: collapse edges shorter than this times d (0: keep the raw Voronoi mesh)")
+      ->capture_default_str();
+}
+
+MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given) {
+  MeshSpec spec;
+  spec.domain = Rectangle::parse(o.domain);
+  spec.domain_given = domain_given;
+  if (!o.file.empty()) {
+    spec.family = MeshFamily::file;
+    spec.path = o.file;
+    return spec;
+  }
+  spec.family = parse_family(o.family);
+  if (spec.family == MeshFamily::file) throw InputError("--family file: give the mesh as --mesh FILE");
+  spec.size = family_size(spec.family, o);
+  spec.seed = o.seed;
+  spec.perturbation = o.r;
+  spec.regularization = o.regularize;
+  return spec;
+}
+
+void echo_options(const std::string& prefix, const CLI::App& command) {
+  std::ostringstream os;
+  os << prefix;
+  for (const CLI::Option* opt : command.get_options()) {
+    if (opt->get_name() == "--help") continue;
+    if (opt->get_type_size() == 0) {  // a flag: shown when set
+      if (opt->count()) os << " " << opt->get_name();
+      continue;
+    }
+    const std::string value = opt->count() ? opt->as<std::string>() : opt->get_default_str();
+    if (value.empty()) continue;
+    os << " " << opt->get_name() << " " << value;
+  }
+  std::cout << "# " << os.str() << "\n";
+}
+
+void check_output_folder(const std::string& path, const char* option) {
+  if (path.empty()) return;
+  const std::filesystem::path p(path);
+  const auto folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    throw InputError(std::string(option) + " '" + path + "': folder '" + folder.string() +
+                     "' does not exist");
+}
+
+}  // namespace vorodg

@@ -1,0 +1,35 @@
+#pragma once
+// Pieces every subcommand shares: where its mesh comes from (a family and its parameters, or a
+// file), the echo of its options (the printed line reproduces the run), and the check that
+// output folders exist before any work starts.
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+
+#include "core/meshgen/MeshFamily.hpp"
+
+namespace vorodg {
+
+struct MeshSourceOptions {
+  std::string family = "rcp";
+  std::string domain = "0,0,4,1";
+  double d = 0.0;  // rcp, tri
+  double h = 0.0;  // hex, perturbed-hex, quad
+  double r = 0.3;
+  std::uint64_t seed = 1;
+  double regularize = 0.1;
+  std::string file;  // --mesh FILE.vtu (solve only)
+};
+
+/// Registers --family, --domain, --d, --h, --r, --seed, --regularize on a subcommand.
+void add_mesh_source_options(CLI::App& command, MeshSourceOptions& o);
+/// The MeshSpec the options describe (family `file` when o.file is set). `domain_given` says
+/// whether --domain was on the command line (an imported mesh otherwise keeps its own).
+MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given);
+
+/// Prints "# <prefix> --option value ..." with every option's value or default.
+void echo_options(const std::string& prefix, const CLI::App& command);
+/// Throws InputError if the folder of `path` does not exist (nothing to do for an empty path).
+void check_output_folder(const std::string& path, const char* option);
+
+}  // namespace vorodg

@@ -272,7 +272,7 @@ TEST(RkShapeFunctions, InteriorValuesApproachTheEdgeLimit) {
     const double d6 = edge_limit_deviation(t, 1e-6), d8 = edge_limit_deviation(t, 1e-8);
     std::cout << "[ rk ] " << f.name << ": largest |psi - edge limit| at centroid coordinate "
               << "1e-6: " << d6 << ", 1e-8: " << d8 << "\n";
-    EXPECT_LT(d6, 1e-3) << f.name;
+    EXPECT_LT(d6, 1e-2) << f.name;  // ~ |grad psi| x distance; the real check is the next line
     EXPECT_LT(d8, 0.02 * d6 + 1e-10) << f.name << ": not converging linearly to the edge limit";
   }
 }

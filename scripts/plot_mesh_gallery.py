@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Draws a PNG gallery of polygon meshes written by `vorodg mesh`.
+"""Draws PNGs of polygon meshes written by `vorodg mesh` and of cell fields of `vorodg solve` results.
 
 Usage:
   plot_mesh_gallery.py OUTDIR                                 # every OUTDIR/*.vtu with a *.stats.json
@@ -9,11 +9,24 @@ Options:
                        drawn for meshes with more than 2000 cells)
   --no-zoom            never draw a close-up panel
   --dpi N              resolution of the PNGs (default 150)
+  --field NAME         colour the cells by the cell data NAME (viridis, with a colourbar), e.g. the
+                       von_mises of a `vorodg solve` result; NAME:K picks component K of a
+                       multi-component array, NAME:mag (the default for those) its magnitude
+  --log                logarithmic colour scale (with --field; cells with values <= 0 are grey)
+  --deform SCALE       draw the mesh displaced by SCALE x the point data "displacement", with the
+                       undeformed domain dashed; SCALE "auto" makes the largest displacement 5% of
+                       the domain width (the domain from the file's field data)
 
 For each mesh it writes OUTDIR/<name>.png: the cells with thin black edges, lightly coloured by
 their number of sides, with a legend. For rcp meshes (stats with `side_counts_before`) it also
 writes OUTDIR/<name>.sides.png, the side-count histogram before and after regularization. A mesh
 named X.vtu has its statistics in X.stats.json (found automatically when no :stats is given).
+
+With --field or --deform it writes OUTDIR/<name>.<field>.png instead (<name>.<field>.K.png,
+<name>.<field>.mag.png for a component or magnitude; <name>.deformed.png for --deform alone,
+cells coloured by their sides), with no close-up unless --zoom is given (a window in the drawn,
+deformed coordinates). The title takes family, h_avg and errors from X.stats.json or
+X.metrics.json beside X.vtu. Without MESH arguments, every OUTDIR/*.vtu carrying the arrays.
 PNGs are written atomically (temporary file in OUTDIR, then renamed); the paths are printed.
 
 Only the Python standard library, numpy and matplotlib (Agg) are used.
@@ -31,6 +44,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plotting_common import save_atomically  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.patches import Patch, Rectangle  # noqa: E402
 
@@ -62,6 +76,12 @@ class GalleryError(Exception):
 
 def read_vtu(path):
     """Points (n x 2) and a list of cells (vertex index arrays) of an ASCII VTK UnstructuredGrid."""
+    pts, cells, _ = read_vtu_piece(path)
+    return pts, cells
+
+
+def read_vtu_piece(path):
+    """read_vtu, plus the parsed XML root for the data arrays (see data_array)."""
     try:
         root = ET.parse(path).getroot()
     except (ET.ParseError, OSError) as e:
@@ -75,16 +95,8 @@ def read_vtu(path):
     n_cells = int(piece.get("NumberOfCells", "-1"))
 
     def array(parent_tag, name=None, dtype=float):
-        parent = piece.find(parent_tag)
-        if parent is None:
-            raise GalleryError(f"{path}: no <{parent_tag}> element")
-        for da in parent.findall("DataArray"):
-            if name is None or da.get("Name") == name:
-                fmt = da.get("format", "ascii")
-                if fmt != "ascii":
-                    raise GalleryError(f"{path}: DataArray {da.get('Name')!r} is {fmt}, only ascii is read")
-                return da, np.array((da.text or "").split(), dtype=dtype)
-        raise GalleryError(f"{path}: no DataArray {name!r} in <{parent_tag}>")
+        da = find_data_array(path, piece, parent_tag, name)
+        return da, ascii_values(path, da, dtype)
 
     pts_da, pts = array("Points")
     ncomp = int(pts_da.get("NumberOfComponents", "3"))
@@ -108,7 +120,62 @@ def read_vtu(path):
     cells = np.split(conn, offsets[:-1])
     for c in np.nonzero(types == VTK_PIXEL)[0]:  # pixels are numbered row by row
         cells[c] = cells[c][[0, 1, 3, 2]]
-    return pts, cells
+    return pts, cells, root
+
+
+def find_data_array(path, parent, parent_tag, name=None):
+    """The first DataArray (named `name`, if given) under parent/parent_tag."""
+    node = parent.find(parent_tag)
+    if node is None:
+        raise GalleryError(f"{path}: no <{parent_tag}> element")
+    for da in node.findall("DataArray"):
+        if name is None or da.get("Name") == name:
+            return da
+    raise GalleryError(f"{path}: no DataArray {name!r} in <{parent_tag}>")
+
+
+def ascii_values(path, da, dtype=float):
+    fmt = da.get("format", "ascii")
+    if fmt != "ascii":
+        raise GalleryError(f"{path}: DataArray {da.get('Name')!r} is {fmt}, only ascii is read")
+    try:
+        return np.array((da.text or "").split(), dtype=dtype)
+    except ValueError:
+        raise GalleryError(f"{path}: DataArray {da.get('Name')!r} holds a value that is not a number") from None
+
+
+def array_names(root, section):
+    node = root.find("UnstructuredGrid/Piece/" + section)
+    return [] if node is None else [da.get("Name") for da in node.findall("DataArray")]
+
+
+def data_array(path, root, section, name):
+    """PointData or CellData array `name` as (n x components), n = points or cells of the piece."""
+    piece = root.find("UnstructuredGrid/Piece")
+    count = int(piece.get("NumberOfPoints" if section == "PointData" else "NumberOfCells", "-1"))
+    if name not in array_names(root, section):
+        other = "CellData" if section == "PointData" else "PointData"
+        where = f" (it is {other})" if name in array_names(root, other) else ""
+        have = ", ".join(array_names(root, section)) or "none"
+        raise GalleryError(f"{path}: no {section} array {name!r}{where}; {section} arrays: {have}")
+    da = find_data_array(path, piece, section, name)
+    values = ascii_values(path, da)
+    ncomp = int(da.get("NumberOfComponents", "1"))
+    if ncomp < 1 or values.size != count * ncomp:
+        raise GalleryError(f"{path}: {section} {name!r} has {values.size} values for {count} x {ncomp}")
+    return values.reshape(count, ncomp)
+
+
+def domain_of(root):
+    """The domain rectangle (x0, y0, x1, y1) from the FieldData, or None."""
+    da = root.find("UnstructuredGrid/FieldData/DataArray[@Name='domain']")
+    if da is None:
+        return None
+    try:
+        values = [float(v) for v in (da.text or "").split()]
+    except ValueError:
+        return None
+    return tuple(values) if len(values) == 4 else None
 
 
 def read_stats(path):
@@ -134,18 +201,51 @@ def stem_of(vtu_path):
     return name[:-4] if name.endswith(".vtu") else name
 
 
-def default_stats_path(vtu_path):
+def default_stats_path(vtu_path, suffixes=(".stats.json",)):
     base = vtu_path[:-4] if vtu_path.endswith(".vtu") else vtu_path
-    candidate = base + ".stats.json"
-    return candidate if os.path.exists(candidate) else None
+    for suffix in suffixes:
+        candidate = base + suffix
+        if os.path.exists(candidate):
+            return candidate
+    return None
 
 
-def parse_mesh_argument(arg):
+def parse_mesh_argument(arg, suffixes=(".stats.json",)):
     """'mesh.vtu[:stats.json]' -> (vtu, stats or None). Only a trailing ':...json' is split off."""
     head, sep, tail = arg.rpartition(":")
     if sep and tail.endswith(".json") and head:
         return head, tail
-    return arg, default_stats_path(arg)
+    return arg, default_stats_path(arg, suffixes)
+
+
+def parse_field(text):
+    """'NAME', 'NAME:K' (component K) or 'NAME:mag' -> (name, component or None, file tag)."""
+    name, sep, comp = text.partition(":")
+    if not name or "/" in name:
+        raise argparse.ArgumentTypeError(f"expected a cell data name, got {text!r}")
+    if not sep:
+        return name, None, name
+    if comp == "mag":
+        return name, None, name + ".mag"
+    try:
+        k = int(comp)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected NAME, NAME:K or NAME:mag, got {text!r}") from None
+    if k < 0:
+        raise argparse.ArgumentTypeError(f"component index must be >= 0, got {text!r}")
+    return name, k, f"{name}.{k}"
+
+
+def parse_scale(text):
+    if text == "auto":
+        return "auto"
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number or 'auto', got {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"the scale must be finite, got {text!r}")
+    return value
 
 
 def parse_window(text):
@@ -162,25 +262,6 @@ def parse_window(text):
 # Output
 
 
-def save_atomically(fig, path, dpi):
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(path) + ".", suffix=".tmp.png")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            fig.savefig(f, format="png", dpi=dpi)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
-    finally:
-        plt.close(fig)
-    print(path)
 
 
 def side_colour(k):
@@ -334,6 +415,172 @@ def plot_side_histogram(before, after, stats, family, out, dpi):
     save_atomically(fig, out, dpi)
 
 
+
+# --------------------------------------------------------------------------------------------
+# Fields on the (deformed) mesh
+
+AUTO_DEFORM_FRACTION = 0.05  # --deform auto: largest displacement = this fraction of the domain width
+
+
+def field_edge_colour(n_cells_visible):
+    """Cell edges for field pictures: dark but translucent, so dense meshes keep their colours."""
+    alpha = 0.7 if n_cells_visible <= 500 else 0.45 if n_cells_visible <= 3000 else 0.3
+    return (0.0, 0.0, 0.0, alpha)
+
+
+def draw_field_cells(ax, polys, values, norm, n_visible):
+    coll = PolyCollection(polys, array=values, cmap="viridis", norm=norm,
+                          edgecolors=[field_edge_colour(n_visible)],
+                          linewidths=0.6 * edge_linewidth(n_visible), antialiaseds=True)
+    coll.cmap.set_bad("#bdbdbd")
+    ax.add_collection(coll)
+    ax.set_aspect("equal")
+    return coll
+
+
+def plot_field(vtu, stats_path, outdir, field, deform, zoom, log, dpi):
+    """OUTDIR/<name>.<field>.png: cells coloured by a cell field (and/or drawn displaced by
+    `deform` x the point data "displacement"); OUTDIR/<name>.deformed.png with --deform alone."""
+    pts, cells, root = read_vtu_piece(vtu)
+    stats = read_stats(stats_path)
+    n_cells = len(cells)
+    if n_cells == 0:
+        raise GalleryError(f"{vtu}: the mesh has no cells")
+    stem = stem_of(vtu)
+    family = stats.get("family", stem)
+    domain = domain_of(root)
+    lo0, hi0 = pts.min(axis=0), pts.max(axis=0)
+    if domain is None:
+        domain = (lo0[0], lo0[1], hi0[0], hi0[1])
+
+    # Where the points are drawn.
+    scale = None
+    shown = pts
+    if deform is not None:
+        disp = data_array(vtu, root, "PointData", "displacement")
+        if disp.shape[1] < 2:
+            raise GalleryError(f"{vtu}: PointData 'displacement' has {disp.shape[1]} component, need 2")
+        disp = disp[:, :2]
+        if not np.all(np.isfinite(disp)):
+            raise GalleryError(f"{vtu}: PointData 'displacement' holds NaN or infinite values")
+        max_disp = float(np.sqrt((disp ** 2).sum(axis=1)).max()) if len(disp) else 0.0
+        if deform == "auto":
+            width = domain[2] - domain[0]
+            scale = AUTO_DEFORM_FRACTION * width / max_disp if max_disp > 0 else 0.0
+        else:
+            scale = float(deform)
+        shown = pts + scale * disp
+    polys = [shown[c] for c in cells]
+
+    # What colours the cells.
+    if field is not None:
+        name, comp, tag = field
+        data = data_array(vtu, root, "CellData", name)
+        ncomp = data.shape[1]
+        if comp is not None and comp >= ncomp:
+            raise GalleryError(f"{vtu}: CellData {name!r} has {ncomp} component{'s' if ncomp > 1 else ''},"
+                               f" asked for component {comp} (counted from 0)")
+        if comp is not None:
+            values, label = data[:, comp].copy(), f"{name}[{comp}]"
+        elif ncomp == 1:
+            values, label = data[:, 0].copy(), name
+        else:
+            values, label = np.sqrt((data ** 2).sum(axis=1)), f"|{name}|"
+        values = np.ma.masked_invalid(values)
+        if log:
+            values = np.ma.masked_less_equal(values, 0.0)
+        if values.count() == 0:
+            kind = "positive finite" if log else "finite"
+            raise GalleryError(f"{vtu}: CellData {name!r} has no {kind} value to draw")
+        vmin, vmax = float(values.min()), float(values.max())
+        if log:
+            norm = matplotlib.colors.LogNorm(vmin=vmin, vmax=vmax if vmax > vmin else vmin * 10)
+        else:
+            norm = matplotlib.colors.Normalize(vmin=vmin, vmax=vmax if vmax > vmin else vmin + 1)
+        out = os.path.join(outdir, f"{stem}.{tag}.png")
+    else:
+        values = norm = label = None
+        out = os.path.join(outdir, f"{stem}.deformed.png")
+
+    # Layout: the whole mesh on top with the colourbar on its right, an optional close-up below.
+    lo = np.minimum(shown.min(axis=0), [domain[0], domain[1]])
+    hi = np.maximum(shown.max(axis=0), [domain[2], domain[3]])
+    extent = hi - lo
+    fig_w = 12.0
+    aspect = extent[1] / extent[0] if extent[0] > 0 else 1.0
+    full_h = max(2.0, min(8.0, (fig_w - 2.2) * aspect)) + 1.0
+    zoom_h = 0.0
+    if zoom is not None:
+        zaspect = (zoom[3] - zoom[1]) / (zoom[2] - zoom[0])
+        zoom_h = max(2.5, min(6.0, (fig_w - 2.2) * zaspect)) + 0.5
+    fig = plt.figure(figsize=(fig_w, full_h + zoom_h), layout="constrained")
+    if zoom is not None:
+        ax, zax = fig.subplots(2, 1, height_ratios=[full_h, zoom_h])
+    else:
+        ax, zax = fig.subplots(1, 1), None
+
+    if field is not None:
+        coll = draw_field_cells(ax, polys, values, norm, n_cells)
+    else:
+        sides = np.fromiter((len(c) for c in cells), dtype=np.int64, count=n_cells)
+        draw_cells(ax, shown, cells, sides, edge_linewidth(n_cells))
+    if deform is not None and scale != 0.0:
+        ax.add_patch(Rectangle((domain[0], domain[1]), domain[2] - domain[0], domain[3] - domain[1],
+                               fill=False, edgecolor="0.45", linestyle="--", linewidth=0.9, zorder=4,
+                               label="undeformed domain"))
+        ax.legend(loc="upper left", fontsize=8, frameon=False)
+    pad = 0.02 * max(extent)
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.tick_params(labelsize=8)
+
+    if field is None:
+        title = f"{family}: deformed mesh"
+    else:
+        title = f"{family}: {label}" + (" on the deformed mesh" if deform is not None else "")
+    if deform is not None:
+        title += f" (displacement × {scale:.3g}" + (", auto)" if deform == "auto" else ")")
+    details = [f"{n_cells:,} cells"]
+    if stats.get("h_avg") is not None:
+        details.append(f"h_avg = {stats['h_avg']:.4g}")
+    if stats.get("problem"):
+        details.append(f"problem {stats['problem']}")
+    if stats.get("l2_error") is not None:
+        details.append(f"L2 error {stats['l2_error']:.3g}")
+    if stats.get("energy_error") is not None:
+        details.append(f"energy error {stats['energy_error']:.3g}")
+    if field is not None:
+        details.append(f"{label} in [{vmin:.4g}, {vmax:.4g}]")
+    ax.set_title(title + "\n" + ", ".join(details), fontsize=10)
+
+    if field is not None:
+        cbar = fig.colorbar(coll, ax=ax, location="right", fraction=0.04, pad=0.01,
+                            aspect=max(8.0, 18.0 * min(1.0, full_h / 5.0)))
+        cbar.set_label(label + (" (log scale)" if log else ""), fontsize=9)
+        cbar.ax.tick_params(labelsize=8)
+
+    if zax is not None:
+        x0, y0, x1, y1 = zoom
+        cmin = np.array([p.min(axis=0) for p in polys])
+        cmax = np.array([p.max(axis=0) for p in polys])
+        inside = np.nonzero((cmax[:, 0] >= x0) & (cmin[:, 0] <= x1) &
+                            (cmax[:, 1] >= y0) & (cmin[:, 1] <= y1))[0]
+        if field is not None:
+            draw_field_cells(zax, [polys[i] for i in inside], values[inside], norm, len(inside))
+        else:
+            sides = np.fromiter((len(c) for c in cells), dtype=np.int64, count=n_cells)
+            draw_cells(zax, shown, [cells[i] for i in inside], sides[inside], edge_linewidth(len(inside)))
+        zpad = 0.01 * max(x1 - x0, y1 - y0)
+        zax.set_xlim(x0 - zpad, x1 + zpad)
+        zax.set_ylim(y0 - zpad, y1 + zpad)
+        zax.tick_params(labelsize=8)
+        zax.set_title(f"close-up [{x0:.3g}, {x1:.3g}] × [{y0:.3g}, {y1:.3g}]", fontsize=9)
+        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor="tab:red",
+                               linewidth=1.2, zorder=5))
+
+    save_atomically(fig, out, dpi)
+    return [out]
+
 # --------------------------------------------------------------------------------------------
 
 
@@ -346,29 +593,59 @@ def main(argv):
     ap.add_argument("--zoom", type=parse_window, metavar="x0,y0,x1,y1")
     ap.add_argument("--no-zoom", action="store_true")
     ap.add_argument("--dpi", type=int, default=150)
+    ap.add_argument("--field", type=parse_field, metavar="NAME[:K|:mag]")
+    ap.add_argument("--deform", type=parse_scale, metavar="SCALE|auto")
+    ap.add_argument("--log", action="store_true")
     args = ap.parse_args(argv)
+    if args.dpi <= 0:
+        ap.error(f"--dpi must be positive, got {args.dpi}")
+    if args.log and args.field is None:
+        ap.error("--log needs --field")
+    field_mode = args.field is not None or args.deform is not None
+    # A solver result X.vtu keeps its numbers in X.metrics.json; a mesh in X.stats.json.
+    suffixes = (".stats.json", ".metrics.json") if field_mode else (".stats.json",)
 
     outdir = args.outdir
     os.makedirs(outdir, exist_ok=True)
     if args.meshes:
-        jobs = [parse_mesh_argument(m) for m in args.meshes]
+        jobs = [parse_mesh_argument(m, suffixes) for m in args.meshes]
     else:
         vtus = sorted(os.path.join(outdir, f) for f in os.listdir(outdir) if f.endswith(".vtu"))
-        jobs = [(v, default_stats_path(v)) for v in vtus]
-        jobs = [(v, s) for v, s in jobs if s is not None]
+        if field_mode:
+            wanted = [args.field[0]] if args.field else []
+            if args.deform is not None:
+                wanted.append("displacement")
+            vtus = [v for v in vtus if all(names_array(v, n) for n in wanted)]
+            jobs = [(v, default_stats_path(v, suffixes)) for v in vtus]
+        else:
+            jobs = [(v, default_stats_path(v)) for v in vtus]
+            jobs = [(v, s) for v, s in jobs if s is not None]
         if not jobs:
-            print(f"plot_mesh_gallery: no *.vtu with a matching *.stats.json in {outdir}",
-                  file=sys.stderr)
+            need = (f"data {', '.join(repr(n) for n in wanted)}" if field_mode
+                    else "a matching *.stats.json")
+            print(f"plot_mesh_gallery: no *.vtu with {need} in {outdir}", file=sys.stderr)
             return 1
 
     failures = 0
     for vtu, stats in jobs:
         try:
-            plot_mesh(vtu, stats, outdir, args.zoom, not args.no_zoom, args.dpi)
+            if field_mode:
+                plot_field(vtu, stats, outdir, args.field, args.deform, args.zoom, args.log, args.dpi)
+            else:
+                plot_mesh(vtu, stats, outdir, args.zoom, not args.no_zoom, args.dpi)
         except GalleryError as e:
             print(f"plot_mesh_gallery: {e}", file=sys.stderr)
             failures += 1
     return 1 if failures else 0
+
+
+def names_array(path, name):
+    """Whether the file mentions a DataArray called `name` (a cheap test before parsing)."""
+    try:
+        with open(path, "rb") as f:
+            return f'Name="{name}"'.encode() in f.read()
+    except OSError:
+        return False
 
 
 if __name__ == "__main__":

@@ -20,38 +20,18 @@
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "support/RunVorodg.hpp"
 
 namespace vorodg {
 namespace {
+
+using namespace vorodg::testing;
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kExe = VORODG_EXE;
 const fs::path kData = VORODG_TEST_DATA;
-
-struct RunResult {
-  int exit_code = -1;  // -1: did not exit normally (crashed)
-  int signal = 0;
-  std::string out, err;
-  int err_lines() const {
-    return static_cast<int>(std::count(err.begin(), err.end(), '\n')) +
-           (!err.empty() && err.back() != '\n' ? 1 : 0);
-  }
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') {
-      q.append("'\\''");
-    } else {
-      q.push_back(c);
-    }
-  }
-  q.push_back('\'');
-  return q;
-}
 
 // "stem<i>ext" (built with a stream: GCC 12 warns falsely on "literal" + std::string).
 std::string numbered(const char* stem, std::size_t i, const char* ext) {
@@ -72,27 +52,7 @@ class MeshCommand : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   RunResult run(const std::vector<std::string>& args) const {
-    std::string cmd = quote(kExe.string());
-    for (const auto& a : args) cmd.append(" ").append(quote(a));
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    cmd.append(" >").append(quote(out.string())).append(" 2>").append(quote(err.string()));
-    cmd.append(" </dev/null");
-    const int status = std::system(cmd.c_str());
-    RunResult r;
-    if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-    if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
-
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream os;
-    os << in.rdbuf();
-    return os.str();
+    return run_program(kExe, args, dir_);
   }
 
   static std::string describe(const std::vector<std::string>& args, const RunResult& r) {

@@ -63,7 +63,8 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   clock.restart();
   const auto cell_dofs = [&](int c) { return cg.cell_dofs(c); };
   const ErrorReport errors =
-      compute_errors(table, *problem, cell_dofs, settings.energy_error, settings.element.threads);
+      compute_errors(table, *problem, cell_dofs, settings.energy_error, settings.element.threads,
+                     settings.mean_dilation);
   result.l2_error = errors.l2_error;
   result.energy_error = errors.energy_error;
   result.cell_l2_density = errors.cell_l2_density;

@@ -24,7 +24,9 @@ struct SparseCholesky::Impl {
   SupernodalLLT llt;
 };
 
-SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
+SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {
+  impl_->llt.cholmod().print = 0;  // failures are reported by us, in one line, not on stdout
+}
 SparseCholesky::~SparseCholesky() = default;
 
 FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower,
@@ -38,8 +40,9 @@ FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>&
   report.seconds_factorize = clock.seconds();
   if (impl_->llt.info() != Eigen::Success)
     throw NumericalError(
-        "the stiffness matrix is not positive definite: the system is singular (are rigid-body "
-        "motions left free? a problem needs Dirichlet data on at least one side)");
+        "the stiffness matrix is not positive definite: the system is singular or indefinite "
+        "(rigid-body motions left free, or a material so close to incompressible that the "
+        "volumetric stiffness swamps the rest in double precision)");
   report.rcond = impl_->llt.rcond();
   report.factor_nonzeros = impl_->llt.factor_nonzeros();
   if (!(report.rcond >= min_rcond))

@@ -6,10 +6,12 @@
 // force over the cells, and one CHOLMOD supernodal Cholesky solve.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <optional>
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/problem/BoundaryValueProblem.hpp"
+#include "core/solve/DirichletConstraints.hpp"
 #include "core/solve/SparseCholesky.hpp"
 #include "core/util/Stopwatch.hpp"
 
@@ -33,22 +35,17 @@ class CgElasticity {
   /// The cell's DOF vector (u_x, u_y per vertex in loop order), as the integrator expects.
   Eigen::VectorXd cell_dofs(int c) const;
   int num_dofs() const { return 2 * table_.mesh().num_vertices(); }
-  int num_free_dofs() const { return static_cast<int>(free_.size()); }
+  int num_free_dofs() const { return constraints_ ? constraints_->num_free() : 0; }
   const FactorizationReport& factorization() const { return factorization_; }
   const StageTimes& seconds() const { return seconds_; }
 
  private:
-  void add_body_force(Eigen::VectorXd& f) const;
-  void add_tractions(Eigen::VectorXd& f) const;
-
   const ElementTable& table_;
   const ElasticityIntegrator& integrator_;
   const BoundaryValueProblem& problem_;
   int threads_;
 
-  std::vector<int> free_index_;     // per global DOF: index among the free DOFs, or -1
-  std::vector<int> free_;           // free global DOFs
-  Eigen::VectorXd prescribed_;      // values of the Dirichlet DOFs (0 elsewhere)
+  std::optional<DirichletConstraints> constraints_;
   Eigen::SparseMatrix<double> K_;   // lower triangle of the free-free block
   Eigen::VectorXd rhs_;             // free DOFs
   Eigen::Matrix2Xd displacement_;

@@ -37,9 +37,34 @@ double von_mises(const Eigen::Vector3d& s, const IsotropicElasticity& material) 
   return std::sqrt(0.5 * (a * a + b * b + c * c) + 3 * s[2] * s[2]);
 }
 
+namespace {
+
+/// Runs the formulation and fills the displacement part of the result.
+template <class Formulation>
+void collect(const Formulation& formulation, const PolygonMesh& mesh, SolveResult& result) {
+  for (const auto& [stage, seconds] : formulation.seconds()) result.seconds[stage] = seconds;
+  result.dofs = formulation.num_dofs();
+  result.free_dofs = formulation.num_free_dofs();
+  result.rcond = formulation.factorization().rcond;
+  result.cell_offsets.assign(mesh.num_cells() + 1, 0);
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    result.cell_offsets[c + 1] = result.cell_offsets[c] + 2 * mesh.cell_size(c);
+  result.cell_dof_values.resize(result.cell_offsets.back());
+  result.vertex_displacement = Eigen::Matrix2Xd::Zero(2, mesh.num_vertices());
+  for (int c = mesh.num_cells() - 1; c >= 0; --c) {
+    const Eigen::VectorXd u = formulation.cell_dofs(c);
+    result.cell_dof_values.segment(result.cell_offsets[c], u.size()) = u;
+    const auto loop = mesh.cell_vertices(c);
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      result.vertex_displacement.col(loop[k]) = u.segment<2>(2 * k);
+  }
+}
+
+}  // namespace
+
 SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
-  if (settings.formulation != "cg")
-    throw InputError("formulation '" + settings.formulation + "': expected cg");
+  const bool cg = settings.formulation == "cg";
+  const DgMethod method = cg ? DgMethod::penalty : parse_dg_method(settings.formulation);
   SolveResult result;
   const auto problem = make_problem(settings, mesh.domain());
   Stopwatch clock;
@@ -52,16 +77,25 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
                                      : std::min(result.min_moment_rcond, table.min_moment_rcond(c));
   }
   const ElasticityIntegrator integrator(table, problem->material(), settings.mean_dilation);
-  CgElasticity cg(table, integrator, *problem, settings.element.threads);
-  cg.run();
-  for (const auto& [stage, seconds] : cg.seconds()) result.seconds[stage] = seconds;
-  result.dofs = cg.num_dofs();
-  result.free_dofs = cg.num_free_dofs();
-  result.rcond = cg.factorization().rcond;
-  result.vertex_displacement = cg.vertex_displacement();
+  if (cg) {
+    CgElasticity formulation(table, integrator, *problem, settings.element.threads);
+    formulation.run();
+    collect(formulation, mesh, result);
+    result.edge_gaps.assign(mesh.num_edges(), 0.0);
+  } else {
+    DgOptions options = settings.dg;
+    options.method = method;
+    DgElasticity formulation(table, integrator, *problem, options, settings.element.threads);
+    formulation.run();
+    collect(formulation, mesh, result);
+    result.edge_gaps = formulation.edge_gaps();
+    result.dg = formulation.report();
+  }
 
   clock.restart();
-  const auto cell_dofs = [&](int c) { return cg.cell_dofs(c); };
+  const auto cell_dofs = [&](int c) -> Eigen::VectorXd {
+    return result.cell_dof_values.segment(result.cell_offsets[c], 2 * mesh.cell_size(c));
+  };
   const ErrorReport errors =
       compute_errors(table, *problem, cell_dofs, settings.energy_error, settings.element.threads,
                      settings.mean_dilation);
@@ -71,7 +105,7 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   result.cell_energy_density = errors.cell_energy_density;
   result.cell_mean_stress.resize(mesh.num_cells());
   for (int c = 0; c < mesh.num_cells(); ++c)
-    result.cell_mean_stress[c] = integrator.mean_stress(c, cg.cell_dofs(c));
+    result.cell_mean_stress[c] = integrator.mean_stress(c, cell_dofs(c));
   result.seconds["error"] = clock.seconds();
   return result;
 }

@@ -4,6 +4,7 @@
 // for every (level, realization, formulation, knob).
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,13 +12,14 @@
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/mesh/PolygonMesh.hpp"
 #include "core/util/Stopwatch.hpp"
+#include "dg/DgElasticity.hpp"
 #include "verification/problems/ExactSolution.hpp"
 
 namespace vorodg {
 
 struct SolveSettings {
   std::string problem = "beam";  // beam | patch | patch-mixed | patch-traction | mms
-  std::string formulation = "cg";
+  std::string formulation = "cg";  // cg | dg-penalty | dg-al | dg-nitsche | dg-sipg
   PlaneModel plane = PlaneModel::stress;
   double E = 1.0;
   double nu = 0.3;
@@ -25,6 +27,7 @@ struct SolveSettings {
   bool mean_dilation = false;
   ElementOptions element;  // rule, correction, weight refinement/degree, threads
   bool energy_error = true;
+  DgOptions dg;  // k_p (relative to E), local h, tolerance, iterations, variants
 };
 
 struct SolveResult {
@@ -36,7 +39,11 @@ struct SolveResult {
   double max_divergence_defect = 0.0;  // before correction, relative to sqrt(cell area)
   double min_moment_rcond = 0.0;
   StageTimes seconds;
-  Eigen::Matrix2Xd vertex_displacement;
+  Eigen::Matrix2Xd vertex_displacement;  // CG: per vertex; DG: the first cell's copy
+  std::vector<int> cell_offsets;         // per cell, into cell_dof_values (2 per vertex copy)
+  Eigen::VectorXd cell_dof_values;       // every cell's own displacement DOFs
+  std::vector<double> edge_gaps;         // DG: largest |[u]| on each edge (0 for CG)
+  std::optional<DgReport> dg;            // DG only: iterations, stop reason, gap
   std::vector<Eigen::Vector3d> cell_mean_stress;
   std::vector<double> cell_l2_density, cell_energy_density;
 };

@@ -1,5 +1,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 
+#include <algorithm>
+
 namespace vorodg {
 
 ElasticityIntegrator::ElasticityIntegrator(const ElementTable& table,
@@ -44,6 +46,26 @@ void ElasticityIntegrator::cell_matrix(int c, Eigen::MatrixXd& K) const {
     strain_operator(c, q, B);
     K.noalias() += table_.weight(c, q) * (B.transpose() * D * B);
   }
+}
+
+ElasticityIntegrator::CellMatrices ElasticityIntegrator::all_cell_matrices(int threads) const {
+  const PolygonMesh& mesh = table_.mesh();
+  const int nc = mesh.num_cells();
+  CellMatrices out;
+  out.offset.assign(nc + 1, 0);
+  for (int c = 0; c < nc; ++c)
+    out.offset[c + 1] = out.offset[c] + 4 * std::size_t(mesh.cell_size(c)) * mesh.cell_size(c);
+  out.data.resize(out.offset.back());
+#pragma omp parallel num_threads(std::max(threads, 1))
+  {
+    Eigen::MatrixXd K;
+#pragma omp for schedule(dynamic, 256)
+    for (int c = 0; c < nc; ++c) {
+      cell_matrix(c, K);
+      std::copy(K.data(), K.data() + K.size(), out.data.begin() + out.offset[c]);
+    }
+  }
+  return out;
 }
 
 Eigen::Vector3d ElasticityIntegrator::mean_stress(int c, const Eigen::VectorXd& u) const {

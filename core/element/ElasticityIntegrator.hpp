@@ -4,6 +4,7 @@
 // whose volumetric part is the cell mean (report section 3, Figure 8).
 // Cell DOFs are ordered (u_x, u_y) per cell vertex, in the cell's loop order.
 #include <Eigen/Core>
+#include <vector>
 
 #include "core/element/ElementTable.hpp"
 #include "core/material/IsotropicElasticity.hpp"
@@ -24,6 +25,16 @@ class ElasticityIntegrator {
   void strain_operator(int c, int q, StrainOperator& B) const;
   /// The cell stiffness matrix (2n x 2n).
   void cell_matrix(int c, Eigen::MatrixXd& K) const;
+  /// Every cell's matrix, computed in parallel into its own slot (so the result does not depend
+  /// on the thread count): block c is data[offset[c] ..] as a column-major 2n x 2n matrix.
+  struct CellMatrices {
+    std::vector<std::size_t> offset;
+    std::vector<double> data;
+    Eigen::Map<const Eigen::MatrixXd> block(int c, int size) const {
+      return {data.data() + offset[c], size, size};
+    }
+  };
+  CellMatrices all_cell_matrices(int threads) const;
   /// Area-weighted mean stress of cell c for the cell's DOF vector u (2n).
   Eigen::Vector3d mean_stress(int c, const Eigen::VectorXd& u) const;
 

@@ -11,24 +11,59 @@
 namespace vorodg {
 namespace {
 
-VtuFields result_fields(const PolygonMesh& mesh, const SolveResult& r, const ExactSolution& exact) {
-  VtuField u{"displacement", 3, {}}, ue{"exact_displacement", 3, {}}, err{"error", 3, {}};
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    const Eigen::Vector2d uh = r.vertex_displacement.col(v), ux = exact.displacement(mesh.vertex(v));
-    u.values.insert(u.values.end(), {uh.x(), uh.y(), 0.0});
-    ue.values.insert(ue.values.end(), {ux.x(), ux.y(), 0.0});
-    err.values.insert(err.values.end(), {uh.x() - ux.x(), uh.y() - ux.y(), 0.0});
-  }
+/// Per-cell result fields (mean stress, von Mises, error densities, largest interface gap).
+std::vector<VtuField> cell_fields(const PolygonMesh& mesh, const SolveResult& r,
+                                  const ExactSolution& exact) {
   VtuField stress{"mean_stress", 3, {}}, vm{"von_mises", 1, {}}, id{"cell_id", 1, {}};
+  VtuField gap{"max_interface_gap", 1, {}};
   for (int c = 0; c < mesh.num_cells(); ++c) {
     const Eigen::Vector3d& s = r.cell_mean_stress[c];
     stress.values.insert(stress.values.end(), {s[0], s[1], s[2]});
     vm.values.push_back(von_mises(s, exact.material()));
     id.values.push_back(c);
+    double largest = 0.0;
+    for (int e : mesh.cell_edges(c)) largest = std::max(largest, r.edge_gaps[e]);
+    gap.values.push_back(largest);
   }
-  return {{u, ue, err},
-          {stress, vm, {"l2_error_density", 1, r.cell_l2_density},
-           {"energy_error_density", 1, r.cell_energy_density}, id}};
+  return {stress, vm, {"l2_error_density", 1, r.cell_l2_density},
+          {"energy_error_density", 1, r.cell_energy_density}, id, gap};
+}
+
+/// Displacement, exact displacement and error at the given points (3 components, z = 0).
+std::vector<VtuField> point_fields(const std::vector<Point>& points, const Eigen::Matrix2Xd& uh,
+                                   const ExactSolution& exact) {
+  VtuField u{"displacement", 3, {}}, ue{"exact_displacement", 3, {}}, err{"error", 3, {}};
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector2d h = uh.col(i), x = exact.displacement(points[i]);
+    u.values.insert(u.values.end(), {h.x(), h.y(), 0.0});
+    ue.values.insert(ue.values.end(), {x.x(), x.y(), 0.0});
+    err.values.insert(err.values.end(), {h.x() - x.x(), h.y() - x.y(), 0.0});
+  }
+  return {u, ue, err};
+}
+
+/// Writes the result. CG: the mesh itself. DG: every cell with its own copies of its vertices,
+/// so the displacement of each cell is its own and ParaView shows the jumps between cells.
+void write_result(const std::string& path, const PolygonMesh& mesh, const SolveResult& r,
+                  const ExactSolution& exact, bool discontinuous) {
+  if (!discontinuous) {
+    write_vtu(path, mesh, {point_fields(mesh.vertices(), r.vertex_displacement, exact),
+                           cell_fields(mesh, r, exact)});
+    return;
+  }
+  std::vector<Point> points;
+  std::vector<int> offsets{0}, cells;
+  Eigen::Matrix2Xd uh(2, r.cell_dof_values.size() / 2);
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    for (int k = 0; k < mesh.cell_size(c); ++k) {
+      const int copy = static_cast<int>(points.size());
+      points.push_back(mesh.vertex(mesh.cell_vertices(c)[k]));
+      uh.col(copy) = r.cell_dof_values.segment<2>(r.cell_offsets[c] + 2 * k);
+      cells.push_back(copy);
+      if (k + 1 == mesh.cell_size(c)) offsets.push_back(static_cast<int>(cells.size()));
+    }
+  const PolygonMesh exploded(mesh.domain(), points, offsets, cells);
+  write_vtu(path, exploded, {point_fields(points, uh, exact), cell_fields(mesh, r, exact)});
 }
 
 }  // namespace
@@ -41,7 +76,22 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   cmd->add_option("--mesh", o.mesh.file, "Read the mesh from this .vtu instead of generating one");
   SolveSettings& s = o.settings;
   cmd->add_option("--problem", s.problem, "beam | patch | patch-mixed | patch-traction | mms")->capture_default_str();
-  cmd->add_option("--formulation", s.formulation, "cg")->capture_default_str();
+  cmd->add_option("--formulation", s.formulation, "cg | dg-penalty | dg-al | dg-nitsche | dg-sipg")
+      ->capture_default_str();
+  cmd->add_option("--kp", s.dg.kp, "DG penalty k_p relative to E: eps = k_p E / h")
+      ->capture_default_str();
+  cmd->add_flag("--local-h", s.dg.local_h, "DG: h per interface instead of h_avg");
+  cmd->add_option("--tol", s.dg.tolerance, "DG iterations: relative change to stop at")
+      ->capture_default_str();
+  cmd->add_option("--max-iter", s.dg.max_iterations, "DG iterations: at most this many")
+      ->capture_default_str();
+  cmd->add_flag("--al-update-kp", s.dg.al_update_kp,
+                "dg-al: update lambda with k_p E [u] (the report's Eq. 26) instead of eps [u]");
+  cmd->add_flag("--sipg-mean-stress", s.dg.sipg_mean_stress,
+                "dg-sipg: each cell's mean stress instead of its own stress on the edge");
+  cmd->add_option("--sipg-sign", s.dg.sipg_sign, "dg-sipg: -1 symmetric, +1 non-symmetric")
+      ->capture_default_str()
+      ->check(CLI::IsMember({-1, 1}));
   cmd->add_option("--plane", o.plane, "stress | strain")->capture_default_str();
   cmd->add_option("--E", s.E, "Young's modulus")->capture_default_str();
   cmd->add_option("--nu", s.nu, "Poisson's ratio")->capture_default_str();
@@ -103,13 +153,27 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   json["max_divergence_defect"] = r.max_divergence_defect;
   json["min_moment_rcond"] = r.min_moment_rcond;
   json["seconds"] = to_json(r.seconds);
+  if (r.dg) {
+    json["kp"] = settings.dg.kp;
+    json["penalty"] = r.dg->penalty;
+    json["iterations"] = r.dg->iterations;
+    json["stop_reason"] = r.dg->stop_reason;
+    json["last_change"] = r.dg->last_change;
+    json["gap_norm"] = r.dg->gap_norm;
+    json["relative_gap"] = r.dg->relative_gap;
+    json["seconds_per_iteration"] = r.dg->seconds_per_iteration;
+  }
   json["blas"] = blas_description();
   if (!o.metrics.empty()) write_json(o.metrics, json);
-  if (!o.output.empty()) write_vtu(o.output, mesh, result_fields(mesh, r, *exact));
+  if (!o.output.empty()) write_result(o.output, mesh, r, *exact, settings.formulation != "cg");
 
   std::cout << settings.problem << " on " << family_name(spec.family) << ": " << mesh.num_cells()
             << " cells, " << r.dofs << " dofs, h_avg " << mesh.h_avg() << ", L2 error "
             << r.l2_error << ", energy error " << r.energy_error << ", rcond " << r.rcond << "\n";
+  if (r.dg)
+    std::cout << settings.formulation << ": k_p " << settings.dg.kp << ", " << r.dg->iterations
+              << " iterations, " << r.dg->stop_reason << ", relative gap " << r.dg->relative_gap
+              << ", " << r.dg->seconds_per_iteration << " s per iteration\n";
   std::cout << "seconds:";
   for (const auto& [stage, s] : r.seconds) std::cout << " " << stage << " " << s;
   std::cout << "\nblas: " << blas_description() << "\n";

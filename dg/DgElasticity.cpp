@@ -1,0 +1,240 @@
+#include "dg/DgElasticity.hpp"
+
+#include <Eigen/SparseLU>
+#include <cmath>
+
+#include "core/element/LoadIntegrator.hpp"
+#include "core/quadrature/TriangleRule.hpp"
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+DgMethod parse_dg_method(const std::string& formulation) {
+  if (formulation == "dg-penalty") return DgMethod::penalty;
+  if (formulation == "dg-al") return DgMethod::augmented_lagrangian;
+  if (formulation == "dg-nitsche") return DgMethod::nitsche;
+  if (formulation == "dg-sipg") return DgMethod::sipg;
+  throw InputError("formulation '" + formulation +
+                   "': expected cg, dg-penalty, dg-al, dg-nitsche or dg-sipg");
+}
+
+DgElasticity::DgElasticity(const ElementTable& table, const ElasticityIntegrator& integrator,
+                           const BoundaryValueProblem& problem, const DgOptions& options,
+                           int threads)
+    : table_(table),
+      integrator_(integrator),
+      problem_(problem),
+      options_(options),
+      threads_(std::max(threads, 1)),
+      space_(table.mesh()),
+      ops_(space_, integrator, table) {
+  if (!(options.kp > 0.0) || !std::isfinite(options.kp))
+    throw InputError("penalty k_p = " + std::to_string(options.kp) + ": expected k_p > 0 (relative to E)");
+  if (!(options.tolerance > 0.0)) throw InputError("DG tolerance: expected > 0");
+  if (options.max_iterations < 1) throw InputError("DG maximum iterations: expected >= 1");
+}
+
+void DgElasticity::run() {
+  setup_system();
+  assemble_system();
+  solve();
+}
+
+double DgElasticity::penalty(const Interface& f) const {
+  const double h = options_.local_h ? f.h_local : table_.mesh().h_avg();
+  return options_.kp * integrator_.material().E() / h;  // eps = k_p E f(h), f(h) = 1/h
+}
+
+void DgElasticity::setup_system() {
+  Stopwatch clock;
+  // Every cell's copy of a vertex on a Dirichlet side carries the prescribed displacement.
+  constraints_.emplace(table_.mesh(), problem_,
+                       [&](int c, int k) { return space_.cell_offset(c) + 2 * k; }, num_dofs());
+  seconds_["setup"] = clock.seconds();
+}
+
+void DgElasticity::assemble_system() {
+  Stopwatch clock;
+  const PolygonMesh& mesh = table_.mesh();
+  std::vector<Eigen::Triplet<double>> triplets;
+  // a(u, v): the shared cell kernel, block by block (each cell owns its DOFs).
+  const auto cells = integrator_.all_cell_matrices(threads_);
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const int m = space_.cell_dof_count(c), first = space_.cell_offset(c);
+    const auto Kc = cells.block(c, m);
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) triplets.emplace_back(first + i, first + j, Kc(i, j));
+  }
+  seconds_["cell_matrices"] = clock.seconds();
+  clock.restart();
+  const SegmentRule& rule = gauss2_segment();
+  for (const Interface& f : space_.interfaces()) {
+    const std::vector<int> dofs = ops_.dofs(f);
+    // eps int [u].[v]: the penalty, exact with two points for edge-linear jumps.
+    Eigen::MatrixXd local = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
+    for (int g = 0; g < 2; ++g) {
+      const InterfaceOperator J = ops_.jump(f, rule.t[g]);
+      local += penalty(f) * rule.weights[g] * f.length * J.transpose() * J;
+      if (options_.method == DgMethod::sipg && !options_.sipg_mean_stress) {
+        // -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u], each cell's own stress at the point
+        const InterfaceOperator T = ops_.point_traction(f, rule.t[g]);
+        const Eigen::MatrixXd JT = rule.weights[g] * f.length * J.transpose() * T;
+        local += -JT + options_.sipg_sign * JT.transpose();
+      }
+    }
+    if (options_.method == DgMethod::sipg && options_.sipg_mean_stress) {
+      const Eigen::MatrixXd JT = f.length * ops_.mean_jump(f).transpose() * ops_.mean_traction(f);
+      local += -JT + options_.sipg_sign * JT.transpose();
+    }
+    for (std::size_t j = 0; j < dofs.size(); ++j)
+      for (std::size_t i = 0; i < dofs.size(); ++i)
+        triplets.emplace_back(dofs[i], dofs[j], local(i, j));
+  }
+  Eigen::SparseMatrix<double> full(num_dofs(), num_dofs());
+  full.setFromTriplets(triplets.begin(), triplets.end());
+  // Split into the free-free block and the free rows of the prescribed columns.
+  std::vector<Eigen::Triplet<double>> ff, fp;
+  for (int col = 0; col < full.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(full, col); it; ++it) {
+      const int fi = constraints_->free_index(it.row()), fj = constraints_->free_index(col);
+      if (fi < 0) continue;
+      if (fj >= 0) ff.emplace_back(fi, fj, it.value());
+      else fp.emplace_back(fi, col, it.value());
+    }
+  A_.resize(num_free_dofs(), num_free_dofs());
+  A_.setFromTriplets(ff.begin(), ff.end());
+  A_fixed_.resize(num_free_dofs(), num_dofs());
+  A_fixed_.setFromTriplets(fp.begin(), fp.end());
+
+  // l(v) on the cells' own copies.
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
+  const DofOf cell_dof = [&](int c, int k) { return space_.cell_offset(c) + 2 * k; };
+  add_body_force(table_, problem_, cell_dof, f);
+  add_boundary_tractions(mesh, problem_, cell_dof, f);
+  load_ = constraints_->restrict(f) - A_fixed_ * constraints_->prescribed();
+  lambda_.assign(2 * space_.interfaces().size(), Eigen::Vector2d::Zero());
+  seconds_["assembly"] = clock.seconds();
+}
+
+/// The interface terms that move to the right side: -int lambda.[v] (al) or
+/// +int {sigma_mean(u)} n.[v] (nitsche), restricted to the free DOFs.
+Eigen::VectorXd DgElasticity::interface_load(const Eigen::VectorXd& u) {
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(num_dofs());
+  const SegmentRule& rule = gauss2_segment();
+  const auto& faces = space_.interfaces();
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const Interface& f = faces[i];
+    const std::vector<int> dofs = ops_.dofs(f);
+    Eigen::VectorXd local = Eigen::VectorXd::Zero(dofs.size());
+    if (options_.method == DgMethod::augmented_lagrangian) {
+      for (int q = 0; q < 2; ++q)
+        local -= rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() * lambda_[2 * i + q];
+    } else {
+      Eigen::VectorXd uf(dofs.size());
+      for (std::size_t k = 0; k < dofs.size(); ++k) uf[k] = u[dofs[k]];
+      const Eigen::Vector2d traction = ops_.mean_traction(f) * uf;  // {sigma_mean(u^i)} n
+      local += f.length * ops_.mean_jump(f).transpose() * traction;
+    }
+    for (std::size_t k = 0; k < dofs.size(); ++k) g[dofs[k]] += local[k];
+  }
+  return constraints_->restrict(g);
+}
+
+void DgElasticity::solve() {
+  Stopwatch clock;
+  const double eps_avg = options_.kp * integrator_.material().E() / table_.mesh().h_avg();
+  report_.penalty = eps_avg;
+  const bool symmetric = !(options_.method == DgMethod::sipg && options_.sipg_sign > 0);
+  SparseCholesky cholesky;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  if (symmetric) {
+    factorization_ = cholesky.factorize(A_.triangularView<Eigen::Lower>());
+    seconds_["analysis"] = factorization_.seconds_analyze;
+    seconds_["factorization"] = factorization_.seconds_factorize;
+  } else {
+    lu.compute(A_);
+    if (lu.info() != Eigen::Success)
+      throw NumericalError("the non-symmetric DG matrix could not be factored (singular)");
+    seconds_["factorization"] = clock.seconds();
+  }
+  auto back_solve = [&](const Eigen::VectorXd& rhs) -> Eigen::VectorXd {
+    if (symmetric) return cholesky.solve(rhs);
+    Eigen::VectorXd x = lu.solve(rhs);
+    if (!x.allFinite()) throw NumericalError("the sparse solve produced non-finite values");
+    return x;
+  };
+  auto expand = [&](const Eigen::VectorXd& free_values) { return constraints_->expand(free_values); };
+
+  clock.restart();
+  u_ = expand(back_solve(load_));  // penalty / sipg: the answer; al, nitsche: the first iterate
+  report_.iterations = 1;
+  report_.stop_reason = "direct";
+  const bool iterative = options_.method == DgMethod::augmented_lagrangian ||
+                         options_.method == DgMethod::nitsche;
+  double smallest_change = INFINITY;
+  while (iterative) {
+    if (options_.method == DgMethod::augmented_lagrangian) {  // lambda <- lambda + eps [u]
+      const SegmentRule& rule = gauss2_segment();
+      const auto& faces = space_.interfaces();
+      for (std::size_t i = 0; i < faces.size(); ++i) {
+        const std::vector<int> dofs = ops_.dofs(faces[i]);
+        Eigen::VectorXd uf(dofs.size());
+        for (std::size_t k = 0; k < dofs.size(); ++k) uf[k] = u_[dofs[k]];
+        const double step = options_.al_update_kp ? options_.kp * integrator_.material().E()
+                                                  : penalty(faces[i]);
+        for (int q = 0; q < 2; ++q) lambda_[2 * i + q] += step * (ops_.jump(faces[i], rule.t[q]) * uf);
+      }
+    }
+    const Eigen::VectorXd next = expand(back_solve(load_ + interface_load(u_)));
+    const double change = (next - u_).norm() / std::max(next.norm(), 1e-300);
+    u_ = next;
+    ++report_.iterations;
+    report_.last_change = change;
+    smallest_change = std::min(smallest_change, change);
+    if (!std::isfinite(change) || (report_.iterations > 5 && change > 1e3 * smallest_change) ||
+        change > 1e6) {
+      report_.stop_reason = "diverged";
+      break;
+    }
+    if (change < options_.tolerance) {
+      report_.stop_reason = "converged";
+      break;
+    }
+    if (report_.iterations >= options_.max_iterations) {
+      report_.stop_reason = "max-iterations";
+      break;
+    }
+  }
+  seconds_["solve"] = clock.seconds();
+  report_.seconds_per_iteration = clock.seconds() / report_.iterations;
+  measure_gap();
+}
+
+void DgElasticity::measure_gap() {
+  const SegmentRule& rule = gauss2_segment();
+  double gap = 0.0, mean = 0.0;
+  for (const Interface& f : space_.interfaces())
+    for (int q = 0; q < 2; ++q) {
+      const double t = rule.t[q], w = rule.weights[q] * f.length;
+      Eigen::Vector2d u[2];
+      for (int s = 0; s < 2; ++s)
+        u[s] = (1 - t) * u_.segment<2>(f.dof_v0[s]) + t * u_.segment<2>(f.dof_v1[s]);
+      gap += w * (u[0] - u[1]).squaredNorm();
+      mean += w * (0.5 * (u[0] + u[1])).squaredNorm();
+    }
+  report_.gap_norm = std::sqrt(gap);
+  report_.relative_gap = mean > 0 ? std::sqrt(gap / mean) : report_.gap_norm;
+}
+
+std::vector<double> DgElasticity::edge_gaps() const {
+  std::vector<double> gaps(table_.mesh().num_edges(), 0.0);
+  for (const Interface& f : space_.interfaces())
+    for (double t : {0.0, 1.0}) {
+      const Eigen::Vector2d u0 = (1 - t) * u_.segment<2>(f.dof_v0[0]) + t * u_.segment<2>(f.dof_v1[0]);
+      const Eigen::Vector2d u1 = (1 - t) * u_.segment<2>(f.dof_v0[1]) + t * u_.segment<2>(f.dof_v1[1]);
+      gaps[f.edge] = std::max(gaps[f.edge], (u0 - u1).norm());
+    }
+  return gaps;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,100 @@
+#pragma once
+// Discontinuous Galerkin elasticity on disconnected RK polygons (report section 9; sign
+// conventions and the discretization of the multiplier as DESIGN.md fixes them). The bulk term
+// is the shared cell-stiffness kernel, unchanged; the formulations differ in their interface
+// terms (eps = k_p E f(h), f(h) = 1/h, [u] = u_1 - u_2, n outward from cell 1):
+//   penalty:    a(u,v) + eps int [u].[v] = l(v)                                  (one solve)
+//   al:         a(u,v) + int lambda.[v] + eps int [u].[v] = l(v),
+//               lambda <- lambda + eps [u] at the interface quadrature points     (Eqs. 24-26)
+//   nitsche:    a(u,v) + eps int [u].[v] = l(v) + int {sigma_mean(u^i)} n . [v]  (Eqs. 27-29)
+//   sipg:       a(u,v) - int {sigma(u)}n.[v] + s int {sigma(v)}n.[u] + eps int [u].[v] = l(v),
+//               s = -1 symmetric (SIPG), +1 non-symmetric (NIPG), as MFEM's ex17 (one solve)
+// The iterative schemes factor a + eps P once and back-solve per iteration.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <optional>
+#include <string>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/problem/BoundaryValueProblem.hpp"
+#include "core/solve/DirichletConstraints.hpp"
+#include "core/solve/SparseCholesky.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "dg/DgSpace.hpp"
+#include "dg/InterfaceOperators.hpp"
+
+namespace vorodg {
+
+enum class DgMethod { penalty, augmented_lagrangian, nitsche, sipg };
+
+/// Parses dg-penalty, dg-al, dg-nitsche, dg-sipg; throws InputError otherwise.
+DgMethod parse_dg_method(const std::string& formulation);
+
+struct DgOptions {
+  DgMethod method = DgMethod::nitsche;
+  double kp = 1e3;               // penalty relative to E: eps = kp * E / h
+  bool local_h = false;          // h per interface, (area_1 + area_2) / (2 length), not h_avg
+  double tolerance = 1e-10;      // relative change of u between iterations
+  int max_iterations = 500;
+  bool al_update_kp = false;     // the report's Eq. 26: lambda <- lambda + kp E [u] (no 1/h)
+  bool sipg_mean_stress = false; // sipg with each cell's mean stress instead of its own
+  int sipg_sign = -1;            // -1 symmetric, +1 non-symmetric
+};
+
+struct DgReport {
+  int iterations = 0;
+  std::string stop_reason;   // direct, converged, max-iterations, diverged
+  double last_change = 0.0;  // relative change of the last iteration
+  double gap_norm = 0.0;     // (int_interfaces |[u]|^2)^1/2
+  double relative_gap = 0.0; // gap_norm / (int_interfaces |{u}|^2)^1/2
+  double penalty = 0.0;      // eps on an interface of size h_avg
+  double seconds_per_iteration = 0.0;
+};
+
+class DgElasticity {
+ public:
+  DgElasticity(const ElementTable& table, const ElasticityIntegrator& integrator,
+               const BoundaryValueProblem& problem, const DgOptions& options, int threads = 1);
+
+  void run();
+  void setup_system();
+  void assemble_system();
+  void solve();
+
+  const DgSpace& space() const { return space_; }
+  /// The cell's own DOF vector (its copies), as the integrator expects.
+  Eigen::VectorXd cell_dofs(int c) const {
+    return u_.segment(space_.cell_offset(c), space_.cell_dof_count(c));
+  }
+  /// Largest |[u]| over the interface quadrature points of each edge (0 on boundary edges).
+  std::vector<double> edge_gaps() const;
+  int num_dofs() const { return space_.num_dofs(); }
+  int num_free_dofs() const { return constraints_ ? constraints_->num_free() : 0; }
+  const FactorizationReport& factorization() const { return factorization_; }
+  const DgReport& report() const { return report_; }
+  const StageTimes& seconds() const { return seconds_; }
+
+ private:
+  double penalty(const Interface& f) const;
+  Eigen::VectorXd interface_load(const Eigen::VectorXd& u);
+  void measure_gap();
+
+  const ElementTable& table_;
+  const ElasticityIntegrator& integrator_;
+  const BoundaryValueProblem& problem_;
+  DgOptions options_;
+  int threads_;
+  DgSpace space_;
+  InterfaceOperators ops_;
+
+  std::optional<DirichletConstraints> constraints_;
+  Eigen::VectorXd load_, u_;
+  Eigen::SparseMatrix<double> A_;          // free-free block (full)
+  Eigen::SparseMatrix<double> A_fixed_;    // free rows, prescribed columns
+  std::vector<Eigen::Vector2d> lambda_;    // al: multiplier per interface quadrature point
+  FactorizationReport factorization_;
+  DgReport report_;
+  StageTimes seconds_;
+};
+
+}  // namespace vorodg

@@ -32,6 +32,9 @@ DgElasticity::DgElasticity(const ElementTable& table, const ElasticityIntegrator
     throw InputError("penalty k_p = " + std::to_string(options.kp) + ": expected k_p > 0 (relative to E)");
   if (!(options.tolerance > 0.0)) throw InputError("DG tolerance: expected > 0");
   if (options.max_iterations < 1) throw InputError("DG maximum iterations: expected >= 1");
+  if (options.sipg_sign != -1 && options.sipg_sign != 1)
+    throw InputError("dg-sipg sign " + std::to_string(options.sipg_sign) +
+                     ": expected -1 (symmetric) or +1 (non-symmetric)");
 }
 
 void DgElasticity::run() {
@@ -148,7 +151,17 @@ void DgElasticity::solve() {
   SparseCholesky cholesky;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   if (symmetric) {
-    factorization_ = cholesky.factorize(A_.triangularView<Eigen::Lower>());
+    try {
+      factorization_ = cholesky.factorize(A_.triangularView<Eigen::Lower>());
+    } catch (const NumericalError&) {
+      if (options_.method != DgMethod::sipg) throw;
+      // Symmetric interior penalty is coercive only above a penalty threshold, which the large
+      // one-sided gradients of RK shape functions at short edges push up.
+      throw NumericalError("dg-sipg: the matrix is not positive definite at k_p = " +
+                           std::to_string(options_.kp) +
+                           " E: the penalty is below the coercivity threshold of the interface "
+                           "terms on this mesh (raise --kp, or use --sipg-mean-stress)");
+    }
     seconds_["analysis"] = factorization_.seconds_analyze;
     seconds_["factorization"] = factorization_.seconds_factorize;
   } else {
@@ -172,7 +185,8 @@ void DgElasticity::solve() {
   const bool iterative = options_.method == DgMethod::augmented_lagrangian ||
                          options_.method == DgMethod::nitsche;
   double smallest_change = INFINITY;
-  while (iterative) {
+  if (iterative && report_.iterations >= options_.max_iterations) report_.stop_reason = "max-iterations";
+  while (iterative && report_.iterations < options_.max_iterations) {
     if (options_.method == DgMethod::augmented_lagrangian) {  // lambda <- lambda + eps [u]
       const SegmentRule& rule = gauss2_segment();
       const auto& faces = space_.interfaces();
@@ -200,10 +214,7 @@ void DgElasticity::solve() {
       report_.stop_reason = "converged";
       break;
     }
-    if (report_.iterations >= options_.max_iterations) {
-      report_.stop_reason = "max-iterations";
-      break;
-    }
+    report_.stop_reason = "max-iterations";  // unless the next pass converges
   }
   seconds_["solve"] = clock.seconds();
   report_.seconds_per_iteration = clock.seconds() / report_.iterations;

@@ -6,6 +6,7 @@
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "verification/cli/MeshCommand.hpp"
+#include "verification/cli/RunCommand.hpp"
 #include "verification/cli/SolveCommand.hpp"
 
 namespace vorodg {
@@ -28,6 +29,8 @@ int run_application(int argc, char** argv) {
   CLI::App* mesh = add_mesh_command(app, mesh_options);
   SolveCommandOptions solve_options;
   CLI::App* solve = add_solve_command(app, solve_options);
+  RunCommandOptions run_options;
+  CLI::App* run = add_run_command(app, run_options);
   CLI::App* info = app.add_subcommand("info", "Print the version and the BLAS in use");
   try {
     app.parse(argc, argv);
@@ -44,6 +47,7 @@ int run_application(int argc, char** argv) {
   try {
     if (mesh->parsed()) return run_mesh_command(mesh_options, *mesh);
     if (solve->parsed()) return run_solve_command(solve_options, *solve);
+    if (run->parsed()) return run_run_command(run_options, *run);
     if (info->parsed()) return print_info();
   } catch (const InputError& e) {
     std::cerr << "vorodg: error: " << e.what() << "\n";

@@ -66,7 +66,11 @@ void echo_options(const std::string& prefix, const CLI::App& command) {
   os << prefix;
   for (const CLI::Option* opt : command.get_options()) {
     if (opt->get_name() == "--help") continue;
-    if (opt->get_type_size() == 0) {  // a flag: shown when set
+    if (opt->get_positional()) {
+      if (opt->count()) os << " " << opt->as<std::string>();
+      continue;
+    }
+    if (opt->get_expected_max() == 0) {  // a flag: shown when set
       if (opt->count()) os << " " << opt->get_name();
       continue;
     }

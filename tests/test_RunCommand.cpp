@@ -1,0 +1,132 @@
+// `vorodg run` end to end (issue 6): a small scene through the program, the report files it
+// writes, a study killed half way and resumed giving the same summary.json as an uninterrupted
+// one, and scene validation (unknown keys named with a suggestion, wrong types, bad levels).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/RunVorodg.hpp"
+
+namespace vorodg {
+namespace {
+
+using namespace vorodg::testing;
+namespace fs = std::filesystem;
+
+const fs::path kExe = VORODG_EXE;
+
+const char* kScene = R"({
+  "name": "tiny",
+  "description": "two levels, two realizations, CG and DG",
+  "study": "convergence",
+  "problems": ["beam"],
+  "meshes": [{"family": "rcp", "sizes": [0.3, 0.15], "realizations": 2, "seed": 5}],
+  "formulations": [{"name": "cg"}, {"name": "dg-nitsche", "kp": [100, 1000]}]
+})";
+
+class RunCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("vorodg_test_run_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "tiny.json") << kScene;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  RunResult run(const std::vector<std::string>& args) const { return run_program(kExe, args, dir_); }
+  fs::path dir_;
+};
+
+TEST_F(RunCommand, WritesEveryReportFile) {
+  const RunResult r = run({"run", (dir_ / "tiny.json").string(), "-o", (dir_ / "out").string(), "--quiet", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"results.jsonl", "results.csv", "summary.json", "timings.json", "report.md"})
+    EXPECT_TRUE(fs::exists(dir_ / "out" / f)) << f;
+  const auto summary = nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
+  ASSERT_EQ(summary["groups"].size(), 3u);  // cg, dg-nitsche kp=100, kp=1000
+  for (const auto& g : summary["groups"]) {
+    EXPECT_EQ(g["levels"].size(), 2u);
+    EXPECT_EQ(g["levels"][0]["runs"], 2);
+    EXPECT_GT(g["rate_l2"]["value"].get<double>(), 1.0) << g["key"];
+  }
+  std::ifstream lines(dir_ / "out" / "results.jsonl");
+  int n = 0;
+  for (std::string line; std::getline(lines, line);) ++n;
+  EXPECT_EQ(n, 12);  // 2 levels x 2 realizations x 3 variants
+  EXPECT_NE(r.out.find("least-squares rate"), std::string::npos);
+  EXPECT_NE(slurp(dir_ / "out" / "report.md").find("| level | h_avg |"), std::string::npos);
+}
+
+TEST_F(RunCommand, AnInterruptedStudyResumesToTheSameSummary) {
+  const std::string scene = (dir_ / "tiny.json").string();
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "whole").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  // A kill during a run leaves the finished lines and possibly half a line: model it exactly.
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "cut").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  std::ifstream in(dir_ / "cut" / "results.jsonl");
+  std::string kept, line;
+  for (int i = 0; i < 5 && std::getline(in, line); ++i) kept += line + "\n";
+  std::getline(in, line);
+  kept += line.substr(0, line.size() / 2);  // the line being written when the kill came
+  in.close();
+  std::ofstream(dir_ / "cut" / "results.jsonl", std::ios::trunc) << kept;
+  fs::remove(dir_ / "cut" / "summary.json");
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "cut").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  EXPECT_EQ(slurp(dir_ / "whole" / "summary.json"), slurp(dir_ / "cut" / "summary.json"));
+  // And a real kill at an arbitrary moment, then a rerun.
+  const std::string killed = "timeout -s KILL 0.7 " + quote(kExe.string()) + " run " + quote(scene) +
+                             " -o " + quote((dir_ / "killed").string()) + " --quiet --no-plots >/dev/null 2>&1";
+  [[maybe_unused]] const int status = std::system(killed.c_str());
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "killed").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  EXPECT_EQ(slurp(dir_ / "whole" / "summary.json"), slurp(dir_ / "killed" / "summary.json"));
+}
+
+TEST_F(RunCommand, ResultsDoNotDependOnTheThreadCount) {
+  const std::string scene = (dir_ / "tiny.json").string();
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "one").string(), "--threads", "1", "--quiet", "--no-plots"}).exit_code, 0);
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "two").string(), "--threads", "2", "--quiet", "--no-plots"}).exit_code, 0);
+  EXPECT_EQ(slurp(dir_ / "one" / "summary.json"), slurp(dir_ / "two" / "summary.json"));
+}
+
+TEST_F(RunCommand, BadScenesAreRefusedWithTheKeyNamed) {
+  struct Case {
+    std::string text, mention;
+  };
+  const Case cases[] = {
+      {R"({"meshes": [{"sizes": [0.1]}], "formulatons": []})", "did you mean 'formulations'"},
+      {R"({"meshes": [{"sizes": "0.1"}], "formulations": [{"name": "cg"}]})", "meshes[0].sizes"},
+      {R"({"meshes": [{"sizes": [0.1, 0.2]}], "formulations": [{"name": "cg"}]})", "coarse to fine"},
+      {R"({"meshes": [{"sizes": [0.1], "realizations": 0}], "formulations": [{"name": "cg"}]})", "realizations"},
+      {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "dg-nitsche", "kp": [0]}]})", "kp"},
+      {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "cg"}], "material": {"nu": 0.5}})", "material.nu"},
+      {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "cg"}])", "not valid JSON"},
+  };
+  for (const Case& c : cases) {
+    std::ofstream(dir_ / "bad.json", std::ios::trunc) << c.text;
+    const RunResult r = run({"run", (dir_ / "bad.json").string(), "-o", (dir_ / "bad_out").string(), "--quiet"});
+    EXPECT_EQ(r.exit_code, 2) << c.text << "\n" << r.err;
+    EXPECT_EQ(r.err_lines(), 1) << r.err;
+    EXPECT_NE(r.err.find(c.mention), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(RunCommand, ListsTheShippedScenes) {
+  const RunResult r = run({"run", "--list"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("demo"), std::string::npos);
+  EXPECT_NE(r.out.find("patch-suite"), std::string::npos);
+}
+
+TEST_F(RunCommand, ThePatchSuiteMeetsItsExpectations) {
+  const RunResult r = run({"run", "patch-suite", "-o", (dir_ / "patch").string(), "--quiet", "--no-plots"});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("UNEXPECTED"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace vorodg

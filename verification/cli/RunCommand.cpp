@@ -1,0 +1,93 @@
+#include "verification/cli/RunCommand.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "core/util/Errors.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "verification/cli/CliSupport.hpp"
+#include "verification/study/Scene.hpp"
+#include "verification/study/StudyReport.hpp"
+#include "verification/study/StudyRunner.hpp"
+
+namespace vorodg {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scenes_dir() { return fs::path(VORODG_DATA_DIR) / "scenes"; }
+
+/// A scene given by name ("demo") is looked up among the shipped ones.
+fs::path resolve_scene(const std::string& name) {
+  if (fs::exists(name)) return name;
+  const fs::path shipped = scenes_dir() / (name + ".json");
+  if (fs::exists(shipped)) return shipped;
+  throw InputError("scene '" + name + "': no such file, and no shipped scene of that name (see vorodg run --list)");
+}
+
+int list_scenes() {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(scenes_dir()))
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& f : files) {
+    const Scene s = read_scene(f);
+    std::cout << std::left << std::setw(28) << f.stem().string() << s.study << ": " << s.description << "\n";
+  }
+  return 0;
+}
+
+/// Draws the plots with Debian's python and matplotlib; a missing plotter is a note, not an
+/// error (the numbers are all in the report files).
+void draw_plots(const fs::path& out) {
+  const fs::path script = fs::path(VORODG_SOURCE_DIR) / "scripts" / "plot_study.py";
+  const char* python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  if (!fs::exists(script)) {
+    std::cerr << "note: " << script << " not found; no plots drawn\n";
+    return;
+  }
+  const std::string cmd = std::string(python) + " '" + script.string() + "' '" + out.string() + "' >/dev/null";
+  if (std::system(cmd.c_str()) != 0) std::cerr << "note: the plots could not be drawn (" << cmd << ")\n";
+}
+
+}  // namespace
+
+CLI::App* add_run_command(CLI::App& app, RunCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand("run", "Run a study scene and write its report");
+  cmd->add_option("scene", o.scene, "Scene file (.json) or the name of a shipped scene");
+  cmd->add_option("-o,--output", o.out, "Output folder (created; a rerun resumes)");
+  cmd->add_option("--threads", o.threads, "Runs in parallel")->capture_default_str();
+  cmd->add_flag("--list", o.list, "List the shipped scenes");
+  cmd->add_flag("--no-plots", o.no_plots, "Skip the PNG plots");
+  cmd->add_flag("--quiet", o.quiet, "No progress bar");
+  return cmd;
+}
+
+int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
+  if (o.list) return list_scenes();
+  if (o.scene.empty()) throw InputError("run: expected a scene (a file or a shipped name; see --list)");
+  if (o.out.empty()) throw InputError("run: expected an output folder (-o DIR)");
+  if (o.threads < 1) throw InputError("--threads " + std::to_string(o.threads) + ": expected >= 1");
+  echo_options("vorodg run", command);
+  const Scene scene = read_scene(resolve_scene(o.scene));
+  Stopwatch clock;
+  StudyOptions options;
+  options.out = o.out;
+  options.threads = o.threads;
+  options.progress = !o.quiet;
+  const auto results = run_study(scene, options);
+  const int unexpected = write_study_report(scene, results, o.out);
+  if (!o.no_plots) draw_plots(o.out);
+  std::cout << "\n" << scene.name << ": " << results.size() << " runs, " << clock.seconds()
+            << " s; report in " << (fs::path(o.out) / "report.md").string() << "\n";
+  if (unexpected > 0) {
+    std::cerr << "vorodg: " << unexpected << " patch-suite outcomes differ from the expected ones\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,21 @@
+#pragma once
+// `vorodg run SCENE.json -o DIR`: runs a study scene (resuming what DIR already holds) and
+// writes its report; `vorodg run --list` lists the shipped scenes.
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace vorodg {
+
+struct RunCommandOptions {
+  std::string scene;
+  std::string out;
+  int threads = 2;
+  bool list = false;
+  bool no_plots = false;
+  bool quiet = false;
+};
+
+CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options);
+int run_run_command(const RunCommandOptions& options, const CLI::App& command);
+
+}  // namespace vorodg

@@ -1,0 +1,290 @@
+#include "verification/study/Scene.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "core/io/AtomicFile.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+
+namespace vorodg {
+namespace {
+
+using nlohmann::json;
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+/// Reads one JSON object of a scene, knowing its place ("meshes[1]") for messages, and refusing
+/// keys it was not asked about.
+class SceneObject {
+ public:
+  SceneObject(const json& value, std::string where, const std::string& source)
+      : value_(value), where_(std::move(where)), source_(source) {
+    if (!value.is_object()) fail("", "an object", value);
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& expected, const json& found) const {
+    throw InputError("scene " + source_ + ": key '" + path(key) + "': expected " + expected +
+                     ", found " + describe(found));
+  }
+  [[noreturn]] void fail_value(const std::string& key, const std::string& what) const {
+    throw InputError("scene " + source_ + ": key '" + path(key) + "': " + what);
+  }
+
+  bool has(const std::string& key) { return known(key), value_.contains(key); }
+  const json& at(const std::string& key) {
+    known(key);
+    if (!value_.contains(key)) {
+      for (const auto& [present, ignored] : value_.items())
+        if (edit_distance(present, key) < 4)
+          throw InputError("scene " + source_ + ": unknown key '" + path(present) +
+                           "' (did you mean '" + key + "'?)");
+      fail_value(key, "missing (required)");
+    }
+    return value_.at(key);
+  }
+  std::string text(const std::string& key, const std::string& fallback) {
+    if (!has(key)) return fallback;
+    const json& v = value_.at(key);
+    if (!v.is_string()) fail(key, "a string", v);
+    return v.get<std::string>();
+  }
+  double number(const std::string& key, double fallback) {
+    if (!has(key)) return fallback;
+    const json& v = value_.at(key);
+    if (!v.is_number()) fail(key, "a number", v);
+    return v.get<double>();
+  }
+  int integer(const std::string& key, int fallback) {
+    if (!has(key)) return fallback;
+    const json& v = value_.at(key);
+    if (!v.is_number_integer()) fail(key, "an integer", v);
+    return v.get<int>();
+  }
+  bool flag(const std::string& key, bool fallback) {
+    if (!has(key)) return fallback;
+    const json& v = value_.at(key);
+    if (!v.is_boolean()) fail(key, "true or false", v);
+    return v.get<bool>();
+  }
+  /// A number or a list of numbers (at least one).
+  std::vector<double> numbers(const std::string& key, std::vector<double> fallback) {
+    if (!has(key)) return fallback;
+    const json& v = value_.at(key);
+    if (v.is_number()) return {v.get<double>()};
+    if (!v.is_array() || v.empty()) fail(key, "a number or a non-empty array of numbers", v);
+    std::vector<double> out;
+    for (const json& x : v) {
+      if (!x.is_number()) fail(key, "an array of numbers", v);
+      out.push_back(x.get<double>());
+    }
+    return out;
+  }
+  std::vector<std::string> texts(const std::string& key, std::vector<std::string> fallback) {
+    if (!has(key)) return fallback;
+    const json& v = value_.at(key);
+    if (v.is_string()) return {v.get<std::string>()};
+    if (!v.is_array() || v.empty()) fail(key, "a string or a non-empty array of strings", v);
+    std::vector<std::string> out;
+    for (const json& x : v) {
+      if (!x.is_string()) fail(key, "an array of strings", v);
+      out.push_back(x.get<std::string>());
+    }
+    return out;
+  }
+  /// After reading: any key not asked about is an error, with the nearest known key suggested.
+  void finish() const {
+    for (const auto& [key, ignored] : value_.items()) {
+      if (asked_.count(key)) continue;
+      std::string nearest;
+      std::size_t best = 4;
+      for (const std::string& k : asked_)
+        if (const std::size_t d = edit_distance(key, k); d < best) best = d, nearest = k;
+      throw InputError("scene " + source_ + ": unknown key '" + path(key) + "'" +
+                       (nearest.empty() ? "" : " (did you mean '" + nearest + "'?)"));
+    }
+  }
+  std::string path(const std::string& key) const {
+    return where_.empty() ? key : key.empty() ? where_ : where_ + "." + key;
+  }
+
+ private:
+  void known(const std::string& key) { asked_.insert(key); }
+  static std::string describe(const json& v) {
+    std::string text = v.dump();
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    return std::string(v.type_name()) + " " + text;
+  }
+
+  const json& value_;
+  std::string where_;
+  const std::string& source_;
+  std::set<std::string> asked_;
+};
+
+SceneMesh read_mesh(SceneObject& m) {
+  SceneMesh mesh;
+  const std::string family = m.text("family", "rcp");
+  try {
+    mesh.family = parse_family(family);
+  } catch (const InputError& e) {
+    m.fail_value("family", e.what());
+  }
+  if (mesh.family == MeshFamily::file) m.fail_value("family", "'file' is not a generated family");
+  mesh.label = m.text("label", family);
+  mesh.sizes = m.numbers("sizes", {});
+  if (mesh.sizes.empty()) m.fail_value("sizes", "missing (required): the d or h of every level");
+  for (std::size_t i = 0; i < mesh.sizes.size(); ++i) {
+    if (!(mesh.sizes[i] > 0)) m.fail_value("sizes", "every size must be > 0");
+    if (i > 0 && !(mesh.sizes[i] < mesh.sizes[i - 1]))
+      m.fail_value("sizes", "levels must go from coarse to fine (strictly decreasing), found " +
+                                fmt(mesh.sizes[i - 1]) + " then " + fmt(mesh.sizes[i]));
+  }
+  mesh.realizations = m.integer("realizations", 1);
+  if (mesh.realizations < 1) m.fail_value("realizations", "expected at least 1");
+  const double seed = m.number("seed", 1);
+  if (seed < 0 || seed != std::floor(seed)) m.fail_value("seed", "expected a non-negative integer");
+  mesh.seed = static_cast<std::uint64_t>(seed);
+  mesh.perturbation = m.number("perturbation", 0.3);
+  mesh.regularization = m.number("regularization", 0.1);
+  m.finish();
+  return mesh;
+}
+
+SceneFormulation read_formulation(SceneObject& f) {
+  SceneFormulation out;
+  SolveSettings& s = out.settings;
+  s.formulation = f.text("name", "cg");
+  if (s.formulation != "cg") {
+    try {
+      parse_dg_method(s.formulation);
+    } catch (const InputError& e) {
+      f.fail_value("name", e.what());
+    }
+  }
+  s.element.divergence_correction = f.flag("correction", true);
+  s.element.rule_points = f.integer("rule", 3);
+  s.element.weights.refinement = f.integer("refinement", s.element.weights.refinement);
+  s.element.weights.degree = f.integer("degree", s.element.weights.degree);
+  s.mean_dilation = f.flag("mean_dilation", false);
+  s.dg.tolerance = f.number("tolerance", s.dg.tolerance);
+  s.dg.max_iterations = f.integer("max_iterations", s.dg.max_iterations);
+  s.dg.local_h = f.flag("local_h", false);
+  s.dg.al_update_kp = f.flag("al_update_kp", false);
+  s.dg.sipg_mean_stress = f.flag("sipg_mean_stress", false);
+  s.dg.sipg_sign = f.integer("sipg_sign", -1);
+  if (s.formulation != "cg") {
+    out.kp = f.numbers("kp", {1e3});
+    for (double k : out.kp)
+      if (!(k > 0)) f.fail_value("kp", "every k_p must be > 0 (relative to E)");
+  } else if (f.has("kp")) {
+    f.fail_value("kp", "only DG formulations take a penalty");
+  }
+  std::string label = s.formulation;
+  if (!s.element.divergence_correction) label += " no-correction";
+  if (s.mean_dilation) label += " mean-dilation";
+  if (s.element.rule_points != 3) label += " rule-" + std::to_string(s.element.rule_points);
+  out.label = f.text("label", label);
+  try {
+    check_weight_options(s.element.weights);
+    if (s.element.rule_points != 1 && s.element.rule_points != 3 && s.element.rule_points != 6)
+      f.fail_value("rule", "expected 1, 3 or 6");
+  } catch (const InputError& e) {
+    f.fail_value("refinement", e.what());
+  }
+  f.finish();
+  return out;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+  Scene scene;
+  SceneObject top(root, "", source);
+  scene.name = top.text("name", std::filesystem::path(source).stem().string());
+  scene.description = top.text("description", "");
+  scene.study = top.text("study", "convergence");
+  if (scene.study != "convergence" && scene.study != "penalty-sweep" && scene.study != "patch-suite")
+    top.fail_value("study", "'" + scene.study +
+                                "': expected convergence, penalty-sweep or patch-suite (trade-off and "
+                                "extremes are not available yet)");
+  scene.problems = top.texts("problems", {"beam"});
+  const bool beam = std::find(scene.problems.begin(), scene.problems.end(), "beam") != scene.problems.end();
+  const std::vector<double> domain = top.numbers("domain", beam ? std::vector<double>{0, -0.5, 4, 0.5}
+                                                                : std::vector<double>{0, 0, 2, 1});
+  if (domain.size() != 4) top.fail_value("domain", "expected four numbers [x0, y0, x1, y1]");
+  try {
+    scene.domain = Rectangle(domain[0], domain[1], domain[2], domain[3]);
+  } catch (const InputError& e) {
+    top.fail_value("domain", e.what());
+  }
+  {
+    const json material_value = top.has("material") ? top.at("material") : json::object();
+    SceneObject material(material_value, "material", source);
+    scene.E = material.number("E", 1.0);
+    scene.nu = material.numbers("nu", {0.3});
+    const std::string plane = material.text("plane", "stress");
+    if (plane != "stress" && plane != "strain") material.fail_value("plane", "expected stress or strain");
+    scene.plane = plane == "strain" ? PlaneModel::strain : PlaneModel::stress;
+    scene.load = material.number("load", 1.0);
+    material.finish();
+    for (double nu : scene.nu) {
+      try {
+        IsotropicElasticity(scene.E, nu, scene.plane);
+      } catch (const InputError& e) {
+        material.fail_value("nu", e.what());
+      }
+    }
+  }
+  const json& meshes = top.at("meshes");
+  if (!meshes.is_array() || meshes.empty()) top.fail("meshes", "a non-empty array of mesh objects", meshes);
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    SceneObject m(meshes[i], "meshes[" + std::to_string(i) + "]", source);
+    scene.meshes.push_back(read_mesh(m));
+  }
+  const json& forms = top.at("formulations");
+  if (!forms.is_array() || forms.empty())
+    top.fail("formulations", "a non-empty array of formulation objects", forms);
+  for (std::size_t i = 0; i < forms.size(); ++i) {
+    SceneObject f(forms[i], "formulations[" + std::to_string(i) + "]", source);
+    scene.formulations.push_back(read_formulation(f));
+  }
+  {
+    const json outputs_value = top.has("outputs") ? top.at("outputs") : json::object();
+    SceneObject outputs(outputs_value, "outputs", source);
+    scene.energy_error = outputs.flag("energy_error", true);
+    outputs.finish();
+  }
+  scene.patch_tolerance = top.number("patch_tolerance", 1e-10);
+  scene.reference = top.text("reference", "");
+  top.finish();
+  return scene;
+}
+
+Scene read_scene(const std::filesystem::path& path) {
+  Scene scene = parse_scene(read_file(path), path.string());
+  scene.path = path;
+  return scene;
+}
+
+}  // namespace vorodg

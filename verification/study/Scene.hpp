@@ -1,0 +1,57 @@
+#pragma once
+// A scene names one study (DESIGN.md "Studies, scenes and reports"): the problems, the material,
+// the mesh families with their levels and realizations, the formulations with their knobs. Every
+// key is documented in docs/scenes.md and validated: an unknown key or a wrong type is an error
+// naming the file and the key (with the nearest valid key suggested).
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/geometry/Rectangle.hpp"
+#include "core/meshgen/MeshFamily.hpp"
+#include "verification/SolveRun.hpp"
+
+namespace vorodg {
+
+struct SceneMesh {
+  std::string label;             // default: the family name
+  MeshFamily family = MeshFamily::rcp;
+  std::vector<double> sizes;     // d (rcp, tri) or h (hex, perturbed-hex, quad), coarse to fine
+  int realizations = 1;
+  std::uint64_t seed = 1;
+  double perturbation = 0.3;
+  double regularization = 0.1;
+};
+
+struct SceneFormulation {
+  std::string label;  // default: the name, plus the knobs that differ from the defaults
+  SolveSettings settings;  // formulation name, element options, DG options, mean dilation
+  std::vector<double> kp;  // DG: one run per value (empty for CG)
+};
+
+struct Scene {
+  std::filesystem::path path;
+  std::string name;
+  std::string description;
+  std::string study = "convergence";  // convergence | penalty-sweep | patch-suite
+  std::vector<std::string> problems;
+  Rectangle domain;
+  double E = 1.0;
+  std::vector<double> nu;
+  PlaneModel plane = PlaneModel::stress;
+  double load = 1.0;
+  std::vector<SceneMesh> meshes;
+  std::vector<SceneFormulation> formulations;
+  bool energy_error = true;
+  double patch_tolerance = 1e-10;  // patch-suite: errors at most this pass
+  std::string reference;           // key into data/reference/published.json (optional)
+};
+
+/// Reads and validates a scene. Throws InputError naming the file and the key.
+Scene read_scene(const std::filesystem::path& path);
+/// The same from text (`source` names it in messages).
+Scene parse_scene(const std::string& text, const std::string& source);
+
+}  // namespace vorodg

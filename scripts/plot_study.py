@@ -522,6 +522,37 @@ def plot_cdf(summary, outdir, dpi):
 # --------------------------------------------------------------------------------------------
 
 
+def plot_tradeoff(outdir, dpi):
+    """Error against median wall time per run (tradeoff.json, written for trade-off studies),
+    one marker per configuration and level, the Pareto front as a line."""
+    path = os.path.join(outdir, "tradeoff.json")
+    if not os.path.exists(path):
+        return False
+    with open(path) as f:
+        data = json.load(f)
+    points = data.get("points", [])
+    if not points:
+        return False
+    fig, ax = plt.subplots(figsize=(9, 6))
+    variants = list(dict.fromkeys(p["variant"] for p in points))
+    markers = "os^vD<>ph*XP"
+    for i, v in enumerate(variants):
+        mine = sorted((p for p in points if p["variant"] == v), key=lambda p: p["level"])
+        ax.loglog([p["seconds"] for p in mine], [p["l2_error"] for p in mine], marker=markers[i % len(markers)],
+                  linestyle=":", label=v)
+    front = data.get("pareto", [])
+    ax.loglog([p["seconds"] for p in front], [p["l2_error"] for p in front], "k-", lw=2, alpha=0.4,
+              label="Pareto front")
+    ax.set_xlabel("median wall time per run (s)")
+    ax.set_ylabel("mean relative L2 displacement error")
+    ax.set_title("error against wall time (markers: levels, coarse to fine along each line)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    save_atomically(fig, os.path.join(outdir, "tradeoff.png"), dpi)
+    return True
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -539,6 +570,7 @@ def main(argv):
     drawn = [plot_convergence(summary, *norm, args.outdir, args.dpi) for norm in NORMS]
     drawn.append(plot_penalty(summary, args.outdir, args.dpi))
     drawn.append(plot_cdf(summary, args.outdir, args.dpi))
+    drawn.append(plot_tradeoff(args.outdir, args.dpi))
     if not any(drawn):
         print(f"plot_study: nothing to plot for {summary['name']}: no group has two mesh sizes "
               "or a k_p, and no level has two realizations", file=sys.stderr)

@@ -115,6 +115,27 @@ TEST_F(RunCommand, BadScenesAreRefusedWithTheKeyNamed) {
   }
 }
 
+TEST_F(RunCommand, TradeOffStudyWritesItsParetoFront) {
+  std::ofstream(dir_ / "tradeoff.json") << R"({
+    "study": "trade-off",
+    "meshes": [{"family": "rcp", "sizes": [0.3, 0.15], "seed": 3}],
+    "formulations": [{"name": "cg"}, {"name": "cg", "rule": 1, "label": "one point"}]
+  })";
+  const RunResult r = run({"run", (dir_ / "tradeoff.json").string(), "-o", (dir_ / "t").string(), "--quiet", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto data = nlohmann::json::parse(slurp(dir_ / "t" / "tradeoff.json"));
+  EXPECT_EQ(data["points"].size(), 4u);  // 2 configurations x 2 levels
+  ASSERT_FALSE(data["pareto"].empty());
+  // The front is cheapest first and strictly more accurate at every step.
+  for (std::size_t i = 1; i < data["pareto"].size(); ++i) {
+    EXPECT_GE(data["pareto"][i]["seconds"].get<double>(), data["pareto"][i - 1]["seconds"].get<double>());
+    EXPECT_LT(data["pareto"][i]["l2_error"].get<double>(), data["pareto"][i - 1]["l2_error"].get<double>());
+  }
+  EXPECT_NE(slurp(dir_ / "t" / "report.md").find("Pareto front"), std::string::npos);
+  // Wall times never reach the summary: it stays deterministic.
+  EXPECT_EQ(slurp(dir_ / "t" / "summary.json").find("seconds"), std::string::npos);
+}
+
 TEST_F(RunCommand, ListsTheShippedScenes) {
   const RunResult r = run({"run", "--list"});
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -224,10 +224,11 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   scene.name = top.text("name", std::filesystem::path(source).stem().string());
   scene.description = top.text("description", "");
   scene.study = top.text("study", "convergence");
-  if (scene.study != "convergence" && scene.study != "penalty-sweep" && scene.study != "patch-suite")
+  if (scene.study != "convergence" && scene.study != "penalty-sweep" &&
+      scene.study != "patch-suite" && scene.study != "trade-off")
     top.fail_value("study", "'" + scene.study +
-                                "': expected convergence, penalty-sweep or patch-suite (trade-off and "
-                                "extremes are not available yet)");
+                                "': expected convergence, penalty-sweep, patch-suite or trade-off "
+                                "(extremes is not available yet)");
   scene.problems = top.texts("problems", {"beam"});
   const bool beam = std::find(scene.problems.begin(), scene.problems.end(), "beam") != scene.problems.end();
   const std::vector<double> domain = top.numbers("domain", beam ? std::vector<double>{0, -0.5, 4, 0.5}

@@ -89,6 +89,94 @@ std::string fixed(double x, int precision = 3) {
   return os.str();
 }
 
+double total_seconds(const json& r) {
+  double total = 0.0;
+  if (r.contains("seconds"))
+    for (const auto& [stage, s] : r["seconds"].items()) total += s.get<double>();
+  return total;
+}
+
+/// Error against wall time over the scene's knobs: per (variant, level) the mean L2 error and
+/// the median total seconds over the realizations; the Pareto front (no other configuration is
+/// both cheaper and more accurate); per knob, its cost and accuracy against the first
+/// formulation at the same level. Wall times are not deterministic, so all of this goes to
+/// tradeoff.json and report.md, never to summary.json.
+void write_tradeoff(const Scene& scene, const std::vector<json>& results,
+                    const std::filesystem::path& out, std::ostringstream& md) {
+  struct Point {
+    std::string variant;
+    int level;
+    double h, error, seconds;
+  };
+  std::map<std::pair<std::string, int>, std::vector<const json*>> groups;
+  std::vector<std::string> variants;
+  for (const json& r : results) {
+    if (!ok(r)) continue;
+    const std::string v = r["variant"];
+    if (std::find(variants.begin(), variants.end(), v) == variants.end()) variants.push_back(v);
+    groups[{v, r["level"].get<int>()}].push_back(&r);
+  }
+  std::vector<Point> points;
+  for (const auto& [key, runs] : groups) {
+    std::vector<double> e, t, h;
+    for (const json* r : runs) {
+      e.push_back((*r)["l2_error"]);
+      t.push_back(total_seconds(*r));
+      h.push_back((*r)["h_avg"]);
+    }
+    std::sort(t.begin(), t.end());
+    double mean_e = 0, mean_h = 0;
+    for (std::size_t i = 0; i < e.size(); ++i) mean_e += e[i] / e.size(), mean_h += h[i] / h.size();
+    points.push_back({key.first, key.second, mean_h, mean_e, t[t.size() / 2]});
+  }
+  std::sort(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.seconds < b.seconds; });
+  std::vector<const Point*> front;  // by increasing time, strictly decreasing error
+  for (const Point& p : points)
+    if (front.empty() || p.error < front.back()->error) front.push_back(&p);
+  json data = {{"points", json::array()}, {"pareto", json::array()}};
+  for (const Point& p : points)
+    data["points"].push_back({{"variant", p.variant}, {"level", p.level}, {"h_avg", p.h},
+                              {"l2_error", p.error}, {"seconds", p.seconds}});
+  md << "## Error against wall time\n\nPareto front (median total seconds per run over the "
+        "realizations; no other configuration is both cheaper and more accurate). For a target "
+        "error e, the cheapest configuration is the first row whose error is at most e:\n\n"
+        "| L2 error | seconds | configuration | level | h_avg |\n|---|---|---|---|---|\n";
+  std::cout << "\nPareto front (error against median wall time per run):\n";
+  for (const Point* p : front) {
+    data["pareto"].push_back({{"variant", p->variant}, {"level", p->level}, {"l2_error", p->error},
+                              {"seconds", p->seconds}});
+    md << "| " << fixed(p->error) << " | " << fmt(p->seconds, 3) << " | " << p->variant << " | "
+       << p->level << " | " << fmt(p->h, 4) << " |\n";
+    std::cout << "  " << fixed(p->error) << "  " << std::setw(9) << fmt(p->seconds, 3) << " s  "
+              << p->variant << ", level " << p->level << "\n";
+  }
+  md << "\nWhat each knob adds at fixed h, against `" << variants.front()
+     << "` (ratios of mean L2 error and of median seconds, per level):\n\n| configuration |";
+  int levels = 0;
+  for (const auto& [key, runs] : groups) levels = std::max(levels, key.second + 1);
+  for (int l = 0; l < levels; ++l) md << " level " << l << " error | level " << l << " time |";
+  md << "\n|---|";
+  for (int l = 0; l < levels; ++l) md << "---|---|";
+  md << "\n";
+  auto find = [&](const std::string& v, int l) -> const Point* {
+    for (const Point& p : points)
+      if (p.variant == v && p.level == l) return &p;
+    return nullptr;
+  };
+  for (const std::string& v : variants) {
+    md << "| " << v << " |";
+    for (int l = 0; l < levels; ++l) {
+      const Point *p = find(v, l), *base = find(variants.front(), l);
+      if (p && base) md << " " << fmt(p->error / base->error, 3) << " | " << fmt(p->seconds / base->seconds, 3) << " |";
+      else md << " - | - |";
+    }
+    md << "\n";
+  }
+  md << "\n![tradeoff.png](tradeoff.png)\n\n";
+  write_json(out / "tradeoff.json", data);
+  (void)scene;
+}
+
 }  // namespace
 
 std::pair<double, double> fit_rate(const std::vector<double>& h, const std::vector<double>& e) {
@@ -320,6 +408,7 @@ int write_study_report(const Scene& scene, const std::vector<json>& results,
     md << ". " << (rises ? "The rate rises with k_p." : "The rate does **not** rise with k_p beyond the 95% intervals.")
        << "\n\n";
   }
+  if (scene.study == "trade-off") write_tradeoff(scene, results, out, md);
   if (published.is_object() && published.contains("trend"))
     md << "Published trend (" << published.value("source", "") << "): "
        << published["trend"].get<std::string>() << "\n\n";

@@ -5,6 +5,7 @@
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/BlasInfo.hpp"
+#include "core/util/PeakMemory.hpp"
 #include "core/util/Errors.hpp"
 #include "verification/cli/JsonOutput.hpp"
 
@@ -164,6 +165,7 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
     json["seconds_per_iteration"] = r.dg->seconds_per_iteration;
   }
   json["blas"] = blas_description();
+  json["peak_memory_mb"] = peak_memory_mb();  // of the whole process, mesh generation included
   if (!o.metrics.empty()) write_json(o.metrics, json);
   if (!o.output.empty()) write_result(o.output, mesh, r, *exact, settings.formulation != "cg");
 

@@ -16,6 +16,7 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "core/util/PeakMemory.hpp"
 #include "core/util/Random.hpp"
 #include "core/util/Stopwatch.hpp"
 
@@ -102,6 +103,7 @@ json result_json(const StudyRun& run, const Scene& scene, const PolygonMesh& mes
   json seconds = json::object();
   for (const auto& [stage, s] : r.seconds) seconds[stage] = s;
   j["seconds"] = seconds;
+  j["peak_memory_mb"] = peak_memory_mb();  // of the study process so far (runs share it)
   return j;
 }
 

@@ -45,6 +45,8 @@ namespace {
 using testing::Family;
 using testing::kFamilies;
 using testing::table_of;
+using testing::make_mesh;
+using testing::test_name;
 
 constexpr double kBeamL = 4.618802153517006;  // L/D = 8/sqrt(3)
 
@@ -75,27 +77,10 @@ CgRun solve_cg(const ElementTable& table, const ExactSolution& problem, bool mea
   return r;
 }
 
-PolygonMesh make_mesh(MeshFamily family, const Rectangle& domain, double size, std::uint64_t seed = 7,
-                      double r = 0.3) {
-  MeshSpec spec;
-  spec.family = family;
-  spec.domain = domain;
-  spec.size = size;
-  spec.seed = seed;
-  spec.perturbation = r;
-  return generate_mesh(spec).mesh;
-}
-
 const Family& family_named(const std::string& name) {
   for (const Family& f : kFamilies)
     if (name == f.name) return f;
   throw std::logic_error("no test family " + name);
-}
-
-std::string test_name(std::string n) {
-  for (char& ch : n)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return n;
 }
 
 // ------------------------------------------------------------------------------------------

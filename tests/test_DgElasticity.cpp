@@ -60,12 +60,7 @@ namespace {
 using testing::Family;
 using testing::kFamilies;
 using testing::table_of;
-
-std::string test_name(std::string n) {
-  for (char& ch : n)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return n;
-}
+using testing::test_name;
 
 const Family& family_named(const std::string& name) {
   for (const Family& f : kFamilies)

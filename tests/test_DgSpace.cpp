@@ -25,13 +25,8 @@ namespace {
 
 using testing::Family;
 using testing::kFamilies;
+using testing::test_name;
 using testing::mesh_of;
-
-std::string test_name(std::string n) {
-  for (char& ch : n)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return n;
-}
 
 int local_index(const PolygonMesh& mesh, int c, int v) {
   const auto loop = mesh.cell_vertices(c);

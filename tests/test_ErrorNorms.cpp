@@ -28,6 +28,7 @@ namespace {
 using testing::Family;
 using testing::kFamilies;
 using testing::mesh_of;
+using testing::make_mesh;
 using testing::table_of;
 
 // Nodal interpolant of `exact` as the cell DOF vector (u_x, u_y per vertex, loop order).
@@ -85,20 +86,9 @@ IndependentErrors p1_interpolation_errors(const PolygonMesh& mesh, const ExactSo
   return e;
 }
 
-PolygonMesh make_mesh(MeshFamily family, const Rectangle& domain, double size, std::uint64_t seed = 5,
-                      double r = 0.3) {
-  MeshSpec spec;
-  spec.family = family;
-  spec.domain = domain;
-  spec.size = size;
-  spec.seed = seed;
-  spec.perturbation = r;
-  return generate_mesh(spec).mesh;
-}
-
 TEST(ErrorNorms, InterpolantOnTrianglesMatchesIndependentP1Errors) {
   const Rectangle domain(0.0, -0.5, 4.0, 0.5);
-  const PolygonMesh mesh = make_mesh(MeshFamily::tri, domain, 0.1);
+  const PolygonMesh mesh = make_mesh(MeshFamily::tri, domain, 0.1, 5);
   const ElementTable table(mesh, ElementOptions{});
   const IsotropicElasticity material(1.0, 0.3, PlaneModel::stress);
   const TimoshenkoBeam beam(material, 4.0, 1.0, 1.0);
@@ -127,7 +117,7 @@ TEST(ErrorNorms, InterpolantErrorsConvergeAtTheExpectedRates) {
   for (MeshFamily family : {MeshFamily::tri, MeshFamily::rcp}) {
     double h[2], l2[2], energy[2];
     for (int level = 0; level < 2; ++level) {
-      const PolygonMesh mesh = make_mesh(family, domain, level == 0 ? 0.1 : 0.05);
+      const PolygonMesh mesh = make_mesh(family, domain, level == 0 ? 0.1 : 0.05, 5);
       const ElementTable table(mesh, ElementOptions{});
       const ErrorReport r = compute_errors(table, mms, nodal_values(mesh, mms));
       h[level] = mesh.h_avg();

@@ -32,12 +32,7 @@ namespace {
 using testing::Family;
 using testing::kFamilies;
 using testing::table_of;
-
-std::string test_name(std::string n) {
-  for (char& ch : n)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return n;
-}
+using testing::test_name;
 
 constexpr double kPoints[] = {0.0, 0.2113248654051871, 0.5, 0.7886751345948129, 1.0};
 constexpr double kInterior[] = {0.2113248654051871, 0.5, 0.7886751345948129};

@@ -2,7 +2,9 @@
 // Meshes and element tables shared by the element-layer tests: one small mesh per family on
 // [0,2] x [0,1] (fixed seed), built once per test program and cached.
 #include <Eigen/Core>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -59,6 +61,25 @@ inline const ElementTable& table_of(const Family& f, int rule_points, bool corre
     it = cache.emplace(key, std::make_unique<ElementTable>(mesh_of(f), o)).first;
   }
   return *it->second;
+}
+
+/// A generated mesh of `family` on `domain` (size = d or h of the family).
+inline PolygonMesh make_mesh(MeshFamily family, const Rectangle& domain, double size,
+                             std::uint64_t seed, double r = 0.3) {
+  MeshSpec spec;
+  spec.family = family;
+  spec.domain = domain;
+  spec.size = size;
+  spec.seed = seed;
+  spec.perturbation = r;
+  return generate_mesh(spec).mesh;
+}
+
+/// A label made safe for a GoogleTest parameter name.
+inline std::string test_name(std::string n) {
+  for (char& ch : n)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return n;
 }
 
 /// Length scale of a cell for relative tolerances.

@@ -20,7 +20,8 @@ namespace vorodg {
 class CgElasticity {
  public:
   CgElasticity(const ElementTable& table, const ElasticityIntegrator& integrator,
-               const BoundaryValueProblem& problem, int threads = 1);
+               const BoundaryValueProblem& problem, int threads = 1,
+               FillOrdering ordering = FillOrdering::node_metis);
 
   /// setup_system, assemble_system, solve. Throws InputError if no side carries Dirichlet data
   /// (rigid motions free), NumericalError if the factorization breaks down.
@@ -40,10 +41,13 @@ class CgElasticity {
   const StageTimes& seconds() const { return seconds_; }
 
  private:
+  void add_lifting(int c, const Eigen::Ref<const Eigen::MatrixXd>& Kc, Eigen::VectorXd& lifted) const;
+
   const ElementTable& table_;
   const ElasticityIntegrator& integrator_;
   const BoundaryValueProblem& problem_;
   int threads_;
+  FillOrdering ordering_;
 
   std::optional<DirichletConstraints> constraints_;
   Eigen::SparseMatrix<double> K_;   // lower triangle of the free-free block

@@ -152,7 +152,7 @@ void DgElasticity::solve() {
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   if (symmetric) {
     try {
-      factorization_ = cholesky.factorize(A_.triangularView<Eigen::Lower>());
+      factorization_ = cholesky.factorize(A_.triangularView<Eigen::Lower>(), {.ordering = options_.ordering});
     } catch (const NumericalError&) {
       if (options_.method != DgMethod::sipg) throw;
       // Symmetric interior penalty is coercive only above a penalty threshold, which the large

@@ -39,6 +39,7 @@ struct DgOptions {
   bool al_update_kp = false;     // the report's Eq. 26: lambda <- lambda + kp E [u] (no 1/h)
   bool sipg_mean_stress = false; // sipg with each cell's mean stress instead of its own
   int sipg_sign = -1;            // -1 symmetric, +1 non-symmetric
+  FillOrdering ordering = FillOrdering::node_metis;  // of the sparse Cholesky factor
 };
 
 struct DgReport {

@@ -46,6 +46,7 @@ void collect(const Formulation& formulation, const PolygonMesh& mesh, SolveResul
   result.dofs = formulation.num_dofs();
   result.free_dofs = formulation.num_free_dofs();
   result.rcond = formulation.factorization().rcond;
+  result.factor_nonzeros = formulation.factorization().factor_nonzeros;
   result.cell_offsets.assign(mesh.num_cells() + 1, 0);
   for (int c = 0; c < mesh.num_cells(); ++c)
     result.cell_offsets[c + 1] = result.cell_offsets[c] + 2 * mesh.cell_size(c);
@@ -78,13 +79,14 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   }
   const ElasticityIntegrator integrator(table, problem->material(), settings.mean_dilation);
   if (cg) {
-    CgElasticity formulation(table, integrator, *problem, settings.element.threads);
+    CgElasticity formulation(table, integrator, *problem, settings.element.threads, settings.ordering);
     formulation.run();
     collect(formulation, mesh, result);
     result.edge_gaps.assign(mesh.num_edges(), 0.0);
   } else {
     DgOptions options = settings.dg;
     options.method = method;
+    options.ordering = settings.ordering;
     DgElasticity formulation(table, integrator, *problem, options, settings.element.threads);
     formulation.run();
     collect(formulation, mesh, result);

@@ -26,6 +26,7 @@ struct SolveSettings {
   double load = 1.0;  // beam end load P
   bool mean_dilation = false;
   ElementOptions element;  // rule, correction, weight refinement/degree, threads
+  FillOrdering ordering = FillOrdering::node_metis;  // the sparse Cholesky factor's ordering
   bool energy_error = true;
   DgOptions dg;  // k_p (relative to E), local h, tolerance, iterations, variants
 };
@@ -36,6 +37,7 @@ struct SolveResult {
   double l2_error = 0.0;
   double energy_error = 0.0;
   double rcond = 0.0;
+  long factor_nonzeros = 0;  // entries of the Cholesky factor (its memory: 8 bytes each)
   double max_divergence_defect = 0.0;  // before correction, relative to sqrt(cell area)
   double min_moment_rcond = 0.0;
   StageTimes seconds;

@@ -48,21 +48,23 @@ void ElasticityIntegrator::cell_matrix(int c, Eigen::MatrixXd& K) const {
   }
 }
 
-ElasticityIntegrator::CellMatrices ElasticityIntegrator::all_cell_matrices(int threads) const {
+ElasticityIntegrator::CellMatrices ElasticityIntegrator::cell_matrices(int first, int last,
+                                                                      int threads) const {
   const PolygonMesh& mesh = table_.mesh();
-  const int nc = mesh.num_cells();
+  const int count = last - first;
   CellMatrices out;
-  out.offset.assign(nc + 1, 0);
-  for (int c = 0; c < nc; ++c)
-    out.offset[c + 1] = out.offset[c] + 4 * std::size_t(mesh.cell_size(c)) * mesh.cell_size(c);
+  out.first = first;
+  out.offset.assign(count + 1, 0);
+  for (int i = 0; i < count; ++i)
+    out.offset[i + 1] = out.offset[i] + 4 * std::size_t(mesh.cell_size(first + i)) * mesh.cell_size(first + i);
   out.data.resize(out.offset.back());
 #pragma omp parallel num_threads(std::max(threads, 1))
   {
     Eigen::MatrixXd K;
 #pragma omp for schedule(dynamic, 256)
-    for (int c = 0; c < nc; ++c) {
-      cell_matrix(c, K);
-      std::copy(K.data(), K.data() + K.size(), out.data.begin() + out.offset[c]);
+    for (int i = 0; i < count; ++i) {
+      cell_matrix(first + i, K);
+      std::copy(K.data(), K.data() + K.size(), out.data.begin() + out.offset[i]);
     }
   }
   return out;

@@ -25,16 +25,21 @@ class ElasticityIntegrator {
   void strain_operator(int c, int q, StrainOperator& B) const;
   /// The cell stiffness matrix (2n x 2n).
   void cell_matrix(int c, Eigen::MatrixXd& K) const;
-  /// Every cell's matrix, computed in parallel into its own slot (so the result does not depend
-  /// on the thread count): block c is data[offset[c] ..] as a column-major 2n x 2n matrix.
+  /// The matrices of cells [first, last), computed in parallel into their own slots (so the
+  /// result does not depend on the thread count): block(c) is cell first + c's column-major
+  /// 2n x 2n matrix. Assembly works through the mesh in such chunks to bound the memory.
   struct CellMatrices {
+    int first = 0;
     std::vector<std::size_t> offset;
     std::vector<double> data;
     Eigen::Map<const Eigen::MatrixXd> block(int c, int size) const {
-      return {data.data() + offset[c], size, size};
+      return {data.data() + offset[c - first], size, size};
     }
   };
-  CellMatrices all_cell_matrices(int threads) const;
+  CellMatrices cell_matrices(int first, int last, int threads) const;
+  CellMatrices all_cell_matrices(int threads) const {
+    return cell_matrices(0, table_.mesh().num_cells(), threads);
+  }
   /// Area-weighted mean stress of cell c for the cell's DOF vector u (2n).
   Eigen::Vector3d mean_stress(int c, const Eigen::VectorXd& u) const;
 

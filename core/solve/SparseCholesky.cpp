@@ -1,7 +1,10 @@
 #include "core/solve/SparseCholesky.hpp"
 
-#include <Eigen/CholmodSupport>
+#include <cholmod.h>
+
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
@@ -10,51 +13,166 @@
 namespace vorodg {
 
 namespace {
-/// Eigen keeps the CHOLMOD factor protected; the condition estimate needs it.
-class SupernodalLLT : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
- public:
-  double rcond() { return cholmod_rcond(m_cholmodFactor, &cholmod()); }
-  long factor_nonzeros() const {
-    return m_cholmodFactor ? static_cast<long>(m_cholmodFactor->xsize) : 0;
-  }
+
+/// A CHOLMOD view (no copy) of a compressed column-major matrix holding one triangle.
+cholmod_sparse view_of(const Eigen::SparseMatrix<double>& m, int stype) {
+  cholmod_sparse v{};
+  v.nrow = static_cast<size_t>(m.rows());
+  v.ncol = static_cast<size_t>(m.cols());
+  v.nzmax = static_cast<size_t>(m.nonZeros());
+  v.p = const_cast<int*>(m.outerIndexPtr());
+  v.i = const_cast<int*>(m.innerIndexPtr());
+  v.x = const_cast<double*>(m.valuePtr());
+  v.stype = stype;
+  v.itype = CHOLMOD_INT;
+  v.xtype = CHOLMOD_REAL;
+  v.dtype = CHOLMOD_DOUBLE;
+  v.sorted = 1;
+  v.packed = 1;
+  return v;
+}
+
+/// Lower-triangle pattern of the node graph: node k = DOFs [b k, b k + b).
+struct NodeGraph {
+  std::vector<int> col_start, rows;
 };
+
+NodeGraph node_graph(const Eigen::SparseMatrix<double>& lower, int b) {
+  const int nodes = static_cast<int>(lower.cols()) / b;
+  NodeGraph g;
+  g.col_start.assign(nodes + 1, 0);
+  g.rows.reserve(static_cast<size_t>(lower.nonZeros()) / (b * b) + nodes);
+  std::vector<int> seen(nodes, -1);
+  const int* p = lower.outerIndexPtr();
+  const int* i = lower.innerIndexPtr();
+  for (int k = 0; k < nodes; ++k) {
+    const size_t begin = g.rows.size();
+    for (int j = b * k; j < b * (k + 1); ++j)
+      for (int q = p[j]; q < p[j + 1]; ++q) {
+        const int m = i[q] / b;
+        if (seen[m] != k) seen[m] = k, g.rows.push_back(m);
+      }
+    std::sort(g.rows.begin() + static_cast<long>(begin), g.rows.end());
+    g.col_start[k + 1] = static_cast<int>(g.rows.size());
+  }
+  return g;
+}
+
+/// METIS nested dissection of the node graph, expanded to the DOFs of each node.
+std::vector<int> node_metis_permutation(const Eigen::SparseMatrix<double>& lower, int b,
+                                        cholmod_common* c) {
+  NodeGraph g = node_graph(lower, b);
+  const int nodes = static_cast<int>(g.col_start.size()) - 1;
+  cholmod_sparse view{};
+  view.nrow = view.ncol = static_cast<size_t>(nodes);
+  view.nzmax = g.rows.size();
+  view.p = g.col_start.data();
+  view.i = g.rows.data();
+  view.stype = -1;
+  view.itype = CHOLMOD_INT;
+  view.xtype = CHOLMOD_PATTERN;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = view.packed = 1;
+  std::vector<int> node_perm(nodes);
+  if (!cholmod_metis(&view, nullptr, 0, /*postorder=*/1, node_perm.data(), c))
+    throw NumericalError("METIS could not order the node graph (CHOLMOD status " +
+                         std::to_string(c->status) + ")");
+  std::vector<int> perm(static_cast<size_t>(nodes) * b);
+  for (int k = 0; k < nodes; ++k)
+    for (int d = 0; d < b; ++d) perm[static_cast<size_t>(b) * k + d] = b * node_perm[k] + d;
+  return perm;
+}
+
 }  // namespace
 
 struct SparseCholesky::Impl {
-  SupernodalLLT llt;
+  cholmod_common common{};
+  cholmod_factor* factor = nullptr;
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;  // failures are reported by us, in one line, not on stdout
+    common.supernodal = CHOLMOD_SUPERNODAL;
+  }
+  ~Impl() {
+    if (factor) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+  void analyze(const Eigen::SparseMatrix<double>& lower, const FactorizationOptions& options);
 };
 
-SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {
-  impl_->llt.cholmod().print = 0;  // failures are reported by us, in one line, not on stdout
+void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
+                                   const FactorizationOptions& options) {
+  if (factor) cholmod_free_factor(&factor, &common);
+  cholmod_sparse a = view_of(lower, -1);
+  const int b = options.block_size;
+  // METIS pays off only on large graphs; small systems (patch tests, coarse levels) use AMD.
+  const bool use_nodes = options.ordering == FillOrdering::node_metis && b >= 1 &&
+                         lower.cols() % b == 0 && lower.cols() >= 4000;
+  common.postorder = 1;
+  if (use_nodes) {
+    std::vector<int> perm = node_metis_permutation(lower, b, &common);
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_GIVEN;
+    factor = cholmod_analyze_p(&a, perm.data(), nullptr, 0, &common);
+  } else {
+    common.nmethods = options.ordering == FillOrdering::cholmod_default ? 0 : 1;
+    common.method[0].ordering = CHOLMOD_AMD;
+    factor = cholmod_analyze(&a, &common);
+  }
+  if (!factor)
+    throw NumericalError("CHOLMOD's symbolic analysis failed (status " +
+                         std::to_string(common.status) + ", out of memory?)");
 }
+
+SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
 SparseCholesky::~SparseCholesky() = default;
 
 FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower,
-                                              double min_rcond) {
+                                              const FactorizationOptions& options) {
+  if (lower.rows() != lower.cols() || !lower.isCompressed())
+    throw NumericalError("internal: factorize needs a square compressed matrix");
   FactorizationReport report;
   Stopwatch clock;
-  impl_->llt.analyzePattern(lower);
+  impl_->analyze(lower, options);
   report.seconds_analyze = clock.seconds();
   clock.restart();
-  impl_->llt.factorize(lower);
+  cholmod_sparse a = view_of(lower, -1);
+  cholmod_factorize(&a, impl_->factor, &impl_->common);
   report.seconds_factorize = clock.seconds();
-  if (impl_->llt.info() != Eigen::Success)
+  if (impl_->common.status == CHOLMOD_NOT_POSDEF ||
+      impl_->factor->minor < impl_->factor->n)
     throw NumericalError(
         "the stiffness matrix is not positive definite: the system is singular or indefinite "
         "(rigid-body motions left free, or a material so close to incompressible that the "
         "volumetric stiffness swamps the rest in double precision)");
-  report.rcond = impl_->llt.rcond();
-  report.factor_nonzeros = impl_->llt.factor_nonzeros();
-  if (!(report.rcond >= min_rcond))
+  if (impl_->common.status < CHOLMOD_OK)
+    throw NumericalError("CHOLMOD's factorization failed (status " +
+                         std::to_string(impl_->common.status) + ", out of memory?)");
+  report.rcond = cholmod_rcond(impl_->factor, &impl_->common);
+  report.factor_nonzeros = static_cast<long>(impl_->factor->xsize);
+  if (!(report.rcond >= options.min_rcond))
     throw NumericalError("the stiffness matrix is numerically singular (CHOLMOD reciprocal "
-                         "condition estimate " + fmt(report.rcond) + ", below " + fmt(min_rcond) + ")");
+                         "condition estimate " + fmt(report.rcond) + ", below " +
+                         fmt(options.min_rcond) + ")");
   return report;
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
-  Eigen::VectorXd x = impl_->llt.solve(rhs);
-  if (!x.allFinite()) throw NumericalError("the sparse solve produced non-finite values");
-  return x;
+  if (!impl_->factor) throw NumericalError("internal: solve before factorize");
+  cholmod_dense b{};
+  b.nrow = static_cast<size_t>(rhs.size());
+  b.ncol = 1;
+  b.nzmax = b.d = b.nrow;
+  b.x = const_cast<double*>(rhs.data());
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
+  if (!x) throw NumericalError("CHOLMOD's solve failed (status " +
+                               std::to_string(impl_->common.status) + ")");
+  Eigen::VectorXd result = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), rhs.size());
+  cholmod_free_dense(&x, &impl_->common);
+  if (!result.allFinite()) throw NumericalError("the sparse solve produced non-finite values");
+  return result;
 }
 
 }  // namespace vorodg

@@ -1,17 +1,35 @@
 #pragma once
-// Sparse direct solves: CHOLMOD's supernodal Cholesky (through Eigen's CholmodSupport), which
-// runs its dense kernels on the BLAS (OpenBLAS, see blas_description()). A matrix factored once
-// serves any number of right-hand sides (the DG iterations back-solve with one factor).
+// Sparse direct solves: CHOLMOD's supernodal Cholesky, which runs its dense kernels on the BLAS
+// (OpenBLAS, see blas_description()). A matrix factored once serves any number of right-hand
+// sides (the DG iterations back-solve with one factor).
+//
+// The fill-reducing ordering is computed on the graph of the nodes, not of the DOFs: elasticity
+// couples the two DOFs of a node with the same neighbours, so METIS on the node graph (a quarter
+// of the nonzeros) gives the same fill as METIS on the DOF graph at a fraction of the cost
+// (docs/performance.md).
 #include <Eigen/SparseCore>
 #include <memory>
 
 namespace vorodg {
+
+/// How the fill-reducing ordering is chosen.
+enum class FillOrdering {
+  node_metis,       // METIS nested dissection on the node graph (block_size DOFs per node)
+  amd,              // approximate minimum degree on the DOF graph
+  cholmod_default,  // CHOLMOD's own choice: AMD, then METIS if AMD's fill is poor
+};
 
 struct FactorizationReport {
   double rcond = 0.0;              // CHOLMOD's estimate: (min diag L / max diag L)^2
   double seconds_analyze = 0.0;    // ordering and symbolic factorization
   double seconds_factorize = 0.0;  // numeric factorization
   long factor_nonzeros = 0;
+};
+
+struct FactorizationOptions {
+  FillOrdering ordering = FillOrdering::node_metis;
+  int block_size = 2;        // DOFs per node, numbered consecutively (2k, 2k+1 in 2D)
+  double min_rcond = 1e-15;  // below this the matrix counts as numerically singular
 };
 
 class SparseCholesky {
@@ -23,8 +41,9 @@ class SparseCholesky {
 
   /// Factors the symmetric matrix whose lower triangle is given. Throws NumericalError if it is
   /// not positive definite (a singular system: rigid motions left free by missing Dirichlet
-  /// data) or its condition estimate is below `min_rcond`.
-  FactorizationReport factorize(const Eigen::SparseMatrix<double>& lower, double min_rcond = 1e-15);
+  /// data) or its condition estimate is below `options.min_rcond`.
+  FactorizationReport factorize(const Eigen::SparseMatrix<double>& lower,
+                                const FactorizationOptions& options = {});
   /// Solves with the current factor. Throws NumericalError on a non-finite result.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
 

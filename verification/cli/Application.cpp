@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
@@ -32,6 +33,17 @@ int run_application(int argc, char** argv) {
   RunCommandOptions run_options;
   CLI::App* run = add_run_command(app, run_options);
   CLI::App* info = app.add_subcommand("info", "Print the version and the BLAS in use");
+  // CLI11 would only say "A subcommand is required": name what was found.
+  if (argc > 1) {
+    const std::string first = argv[1];
+    const bool option = first.starts_with('-');
+    if (option ? first != "-h" && first != "--help" && first != "--help-all" && first != "--version"
+               : first != "mesh" && first != "solve" && first != "run" && first != "info") {
+      std::cerr << "vorodg: error: unknown " << (option ? "option" : "command") << " '" << first
+                << "': expected a command, mesh, solve, run or info (see --help)\n";
+      return kExitInputError;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,5 +1,7 @@
 #include "verification/cli/CliSupport.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -29,23 +31,58 @@ double family_size(MeshFamily family, const MeshSourceOptions& o) {
 
 }  // namespace
 
+CLI::Validator finite_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const char* first = text.data() + (text.starts_with('+') ? 1 : 0);
+        const char* last = text.data() + text.size();
+        double x = 0.0;
+        const auto [end, ec] = std::from_chars(first, last, x);
+        if (ec == std::errc::result_out_of_range)
+          return "'" + text + "' is out of range, expected a finite number";
+        if (ec != std::errc() || end != last) return "'" + text + "' is not a number";
+        if (!std::isfinite(x)) return "'" + text + "', expected a finite number";
+        return {};
+      },
+      "");
+}
+
+CLI::Validator unsigned_integer() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t x = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+        if (ec != std::errc() || end != text.data() + text.size())
+          return "'" + text + "', expected an integer from 0 to 18446744073709551615";
+        return {};
+      },
+      "");
+}
+
 void add_mesh_source_options(CLI::App& cmd, MeshSourceOptions& o) {
   cmd.add_option("--family", o.family, "rcp | hex | perturbed-hex | tri | quad")
       ->capture_default_str();
   cmd.add_option("--domain", o.domain, "Rectangle x0,y0,x1,y1")->capture_default_str();
-  cmd.add_option("--d", o.d, "rcp, tri: minimum distance between seeds");
-  cmd.add_option("--h", o.h, "hex, perturbed-hex: hexagon spacing; quad: edge length");
+  cmd.add_option("--d", o.d, "rcp, tri: minimum distance between seeds")->check(finite_number());
+  cmd.add_option("--h", o.h, "hex, perturbed-hex: hexagon spacing; quad: edge length")
+      ->check(finite_number());
   cmd.add_option("--r", o.r, "perturbed-hex: perturbation, fraction of the shortest edge")
-      ->capture_default_str();
-  cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
+  cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str()->check(unsigned_integer());
   cmd.add_option("--regularize", o.regularize,
                  "rcp: collapse edges shorter than this times d (0: keep the raw Voronoi mesh)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
 }
 
 MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given) {
   MeshSpec spec;
-  spec.domain = Rectangle::parse(o.domain);
+  try {
+    spec.domain = Rectangle::parse(o.domain);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--domain: ") + e.what());
+  }
   spec.domain_given = domain_given;
   if (!o.file.empty()) {
     spec.family = MeshFamily::file;
@@ -87,8 +124,9 @@ void check_output_folder(const std::string& path, const char* option) {
   const auto folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec))
-    throw InputError(std::string(option) + " '" + path + "': folder '" + folder.string() +
-                     "' does not exist");
+    throw InputError(std::string(option) + " '" + path + "': expected an existing folder, but '" +
+                     folder.string() + "'" +
+                     (std::filesystem::exists(folder, ec) ? " is not a folder" : " does not exist"));
 }
 
 }  // namespace vorodg

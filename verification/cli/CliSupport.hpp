@@ -21,6 +21,13 @@ struct MeshSourceOptions {
   std::string file;  // --mesh FILE.vtu (solve only)
 };
 
+/// Refuses a number option's text unless it is a finite number ("nan", "inf", "1e400", "abc"
+/// are refused while parsing, before anything is echoed or computed).
+CLI::Validator finite_number();
+/// Refuses an unsigned option's text unless it is an integer in 0..2^64-1 (CLI11 would wrap
+/// "-1" and saturate "99999999999999999999").
+CLI::Validator unsigned_integer();
+
 /// Registers --family, --domain, --d, --h, --r, --seed, --regularize on a subcommand.
 void add_mesh_source_options(CLI::App& command, MeshSourceOptions& o);
 /// The MeshSpec the options describe (family `file` when o.file is set). `domain_given` says
@@ -29,7 +36,8 @@ MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given);
 
 /// Prints "# <prefix> --option value ..." with every option's value or default.
 void echo_options(const std::string& prefix, const CLI::App& command);
-/// Throws InputError if the folder of `path` does not exist (nothing to do for an empty path).
+/// Throws InputError if the folder of `path` is not an existing folder (nothing to do for an
+/// empty path).
 void check_output_folder(const std::string& path, const char* option);
 
 }  // namespace vorodg

@@ -50,10 +50,10 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& o) {
 int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
   const bool domain_given = command.count("--domain") > 0;
   if (!o.check.empty()) return check_mesh_file(o, domain_given);
-  echo_options("vorodg mesh", command);
   const MeshSpec spec = mesh_spec(o.mesh, true);
   check_output_folder(o.output, "--output");
   check_output_folder(o.stats, "--stats");
+  echo_options("vorodg mesh", command);  // after the checks: the echoed line is a valid run
 
   Stopwatch total;
   GeneratedMesh generated = generate_mesh(spec);

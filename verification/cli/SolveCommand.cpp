@@ -1,6 +1,8 @@
 #include "verification/cli/SolveCommand.hpp"
 
+#include <charconv>
 #include <iostream>
+#include <string_view>
 
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshValidator.hpp"
@@ -11,6 +13,13 @@
 
 namespace vorodg {
 namespace {
+
+/// The shortest text that reads back to x (0.7, not 0.69999999999999996; 0.49999999999999 exact).
+std::string exact(double x) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, end);
+}
 
 /// Per-cell result fields (mean stress, von Mises, error densities, largest interface gap).
 std::vector<VtuField> cell_fields(const PolygonMesh& mesh, const SolveResult& r,
@@ -80,10 +89,12 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   cmd->add_option("--formulation", s.formulation, "cg | dg-penalty | dg-al | dg-nitsche | dg-sipg")
       ->capture_default_str();
   cmd->add_option("--kp", s.dg.kp, "DG penalty k_p relative to E: eps = k_p E / h")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   cmd->add_flag("--local-h", s.dg.local_h, "DG: h per interface instead of h_avg");
   cmd->add_option("--tol", s.dg.tolerance, "DG iterations: relative change to stop at")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number());
   cmd->add_option("--max-iter", s.dg.max_iterations, "DG iterations: at most this many")
       ->capture_default_str();
   cmd->add_flag("--al-update-kp", s.dg.al_update_kp,
@@ -94,9 +105,9 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
       ->capture_default_str()
       ->check(CLI::IsMember({-1, 1}));
   cmd->add_option("--plane", o.plane, "stress | strain")->capture_default_str();
-  cmd->add_option("--E", s.E, "Young's modulus")->capture_default_str();
-  cmd->add_option("--nu", s.nu, "Poisson's ratio")->capture_default_str();
-  cmd->add_option("--load", s.load, "beam: end load P")->capture_default_str();
+  cmd->add_option("--E", s.E, "Young's modulus")->capture_default_str()->check(finite_number());
+  cmd->add_option("--nu", s.nu, "Poisson's ratio")->capture_default_str()->check(finite_number());
+  cmd->add_option("--load", s.load, "beam: end load P")->capture_default_str()->check(finite_number());
   cmd->add_flag("--mean-dilation", s.mean_dilation, "Mean-dilation (B-bar) strain operator");
   cmd->add_flag("--no-correction", o.no_correction, "Skip the divergence-consistency correction");
   cmd->add_option("--rule", s.element.rule_points, "Quadrature points per fan triangle: 1, 3 or 6")
@@ -108,24 +119,55 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
       ->capture_default_str();
   cmd->add_option("--threads", s.element.threads, "Threads for setup, assembly and errors")
       ->capture_default_str();
+  cmd->add_option("--ordering", o.ordering,
+                  "Fill-reducing ordering of the sparse factor: node-metis | amd | cholmod")
+      ->capture_default_str();
   cmd->add_option("-o,--output", o.output, "Result file to write (.vtu)");
   cmd->add_option("--metrics", o.metrics, "Metrics file to write (.json)");
   return cmd;
 }
 
 int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
-  echo_options("vorodg solve", command);
+  // Every value is checked, naming its option, before anything is echoed, meshed or solved.
   SolveSettings settings = o.settings;
   if (o.plane != "stress" && o.plane != "strain")
     throw InputError("--plane '" + o.plane + "': expected stress or strain");
   settings.plane = o.plane == "strain" ? PlaneModel::strain : PlaneModel::stress;
   settings.element.divergence_correction = !o.no_correction;
+  if (o.ordering == "node-metis") settings.ordering = FillOrdering::node_metis;
+  else if (o.ordering == "amd") settings.ordering = FillOrdering::amd;
+  else if (o.ordering == "cholmod") settings.ordering = FillOrdering::cholmod_default;
+  else throw InputError("--ordering '" + o.ordering + "': expected node-metis, amd or cholmod");
+  if (!(settings.E > 0))
+    throw InputError("--E " + exact(settings.E) + ": expected Young's modulus E > 0");
+  if (!(settings.nu > -1 && settings.nu < 0.5))
+    throw InputError("--nu " + exact(settings.nu) + ": expected Poisson's ratio -1 < nu < 0.5");
+  const auto& p = settings.problem;
+  if (p != "beam" && p != "patch" && p != "patch-mixed" && p != "patch-traction" && p != "mms")
+    throw InputError("--problem '" + p + "': expected beam, patch, patch-mixed, patch-traction or mms");
+  if (settings.formulation != "cg") parse_dg_method(settings.formulation);  // names it if unknown
+  if (!(settings.dg.kp > 0))
+    throw InputError("--kp " + exact(settings.dg.kp) + ": expected k_p > 0 (the penalty relative to E)");
+  if (!(settings.dg.tolerance > 0))
+    throw InputError("--tol " + exact(settings.dg.tolerance) + ": expected > 0");
+  if (settings.dg.max_iterations < 1)
+    throw InputError("--max-iter " + std::to_string(settings.dg.max_iterations) + ": expected >= 1");
+  const int rule = settings.element.rule_points;
+  if (rule != 1 && rule != 3 && rule != 6)
+    throw InputError("--rule " + std::to_string(rule) + ": expected 1, 3 or 6 points per fan triangle");
+  try {
+    check_weight_options(settings.element.weights);
+  } catch (const InputError& e) {
+    const bool degree = std::string_view(e.what()).find("degree") != std::string_view::npos;
+    throw InputError(std::string(degree ? "--degree: " : "--refinement: ") + e.what());
+  }
+  if (settings.element.threads < 1)
+    throw InputError("--threads " + std::to_string(settings.element.threads) + ": expected >= 1");
   check_output_folder(o.output, "--output");
   check_output_folder(o.metrics, "--metrics");
-  const IsotropicElasticity material(settings.E, settings.nu, settings.plane);  // validates
-
   Stopwatch clock;
   const MeshSpec spec = mesh_spec(o.mesh, command.count("--domain") > 0);
+  echo_options("vorodg solve", command);
   const GeneratedMesh generated = generate_mesh(spec);
   const PolygonMesh& mesh = generated.mesh;
   const auto validation = validate_mesh(mesh);
@@ -151,6 +193,7 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   json["l2_error"] = r.l2_error;
   json["energy_error"] = r.energy_error;
   json["rcond"] = r.rcond;
+  json["factor_nonzeros"] = r.factor_nonzeros;
   json["max_divergence_defect"] = r.max_divergence_defect;
   json["min_moment_rcond"] = r.min_moment_rcond;
   json["seconds"] = to_json(r.seconds);

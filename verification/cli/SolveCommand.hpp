@@ -15,6 +15,7 @@ struct SolveCommandOptions {
   SolveSettings settings;
   std::string plane = "stress";
   bool no_correction = false;
+  std::string ordering = "node-metis";
   std::string output;
   std::string metrics;
 };

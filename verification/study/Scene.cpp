@@ -1,8 +1,11 @@
 #include "verification/study/Scene.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <string_view>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
@@ -38,8 +41,9 @@ class SceneObject {
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& expected, const json& found) const {
-    throw InputError("scene " + source_ + ": key '" + path(key) + "': expected " + expected +
-                     ", found " + describe(found));
+    const std::string where = path(key).empty() ? "the top level" : "key '" + path(key) + "'";
+    throw InputError("scene " + source_ + ": " + where + ": expected " + expected + ", found " +
+                     describe(found));
   }
   [[noreturn]] void fail_value(const std::string& key, const std::string& what) const {
     throw InputError("scene " + source_ + ": key '" + path(key) + "': " + what);
@@ -136,7 +140,7 @@ class SceneObject {
   std::set<std::string> asked_;
 };
 
-SceneMesh read_mesh(SceneObject& m) {
+SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
   SceneMesh mesh;
   const std::string family = m.text("family", "rcp");
   try {
@@ -150,6 +154,11 @@ SceneMesh read_mesh(SceneObject& m) {
   if (mesh.sizes.empty()) m.fail_value("sizes", "missing (required): the d or h of every level");
   for (std::size_t i = 0; i < mesh.sizes.size(); ++i) {
     if (!(mesh.sizes[i] > 0)) m.fail_value("sizes", "every size must be > 0");
+    if (mesh.sizes[i] > domain.scale())
+      m.fail_value("sizes", "size " + fmt(mesh.sizes[i]) + " exceeds the domain's longer side " +
+                                fmt(domain.scale()));
+    if (domain.area() / (mesh.sizes[i] * mesh.sizes[i]) > 1.5e8)
+      m.fail_value("sizes", "size " + fmt(mesh.sizes[i]) + " gives more than 1.5e8 cells");
     if (i > 0 && !(mesh.sizes[i] < mesh.sizes[i - 1]))
       m.fail_value("sizes", "levels must go from coarse to fine (strictly decreasing), found " +
                                 fmt(mesh.sizes[i - 1]) + " then " + fmt(mesh.sizes[i]));
@@ -157,10 +166,15 @@ SceneMesh read_mesh(SceneObject& m) {
   mesh.realizations = m.integer("realizations", 1);
   if (mesh.realizations < 1) m.fail_value("realizations", "expected at least 1");
   const double seed = m.number("seed", 1);
-  if (seed < 0 || seed != std::floor(seed)) m.fail_value("seed", "expected a non-negative integer");
+  if (seed < 0 || seed != std::floor(seed) || seed > 9007199254740992.0)
+    m.fail_value("seed", "expected an integer in 0..2^53, found " + fmt(seed));
   mesh.seed = static_cast<std::uint64_t>(seed);
   mesh.perturbation = m.number("perturbation", 0.3);
+  if (!(mesh.perturbation >= 0 && mesh.perturbation < 0.5))
+    m.fail_value("perturbation", "expected 0 <= r < 0.5, found " + fmt(mesh.perturbation));
   mesh.regularization = m.number("regularization", 0.1);
+  if (!(mesh.regularization >= 0 && mesh.regularization < 1))
+    m.fail_value("regularization", "expected a fraction of d in [0, 1), found " + fmt(mesh.regularization));
   m.finish();
   return mesh;
 }
@@ -187,6 +201,11 @@ SceneFormulation read_formulation(SceneObject& f) {
   s.dg.al_update_kp = f.flag("al_update_kp", false);
   s.dg.sipg_mean_stress = f.flag("sipg_mean_stress", false);
   s.dg.sipg_sign = f.integer("sipg_sign", -1);
+  if (!(s.dg.tolerance > 0)) f.fail_value("tolerance", "expected > 0, found " + fmt(s.dg.tolerance));
+  if (s.dg.max_iterations < 1)
+    f.fail_value("max_iterations", "expected >= 1, found " + std::to_string(s.dg.max_iterations));
+  if (s.dg.sipg_sign != -1 && s.dg.sipg_sign != 1)
+    f.fail_value("sipg_sign", "expected -1 or 1, found " + std::to_string(s.dg.sipg_sign));
   if (s.formulation != "cg") {
     out.kp = f.numbers("kp", {1e3});
     for (double k : out.kp)
@@ -199,12 +218,13 @@ SceneFormulation read_formulation(SceneObject& f) {
   if (s.mean_dilation) label += " mean-dilation";
   if (s.element.rule_points != 3) label += " rule-" + std::to_string(s.element.rule_points);
   out.label = f.text("label", label);
+  if (s.element.rule_points != 1 && s.element.rule_points != 3 && s.element.rule_points != 6)
+    f.fail_value("rule", "expected 1, 3 or 6, found " + std::to_string(s.element.rule_points));
   try {
     check_weight_options(s.element.weights);
-    if (s.element.rule_points != 1 && s.element.rule_points != 3 && s.element.rule_points != 6)
-      f.fail_value("rule", "expected 1, 3 or 6");
   } catch (const InputError& e) {
-    f.fail_value("refinement", e.what());
+    const bool degree = std::string_view(e.what()).find("degree") != std::string_view::npos;
+    f.fail_value(degree ? "degree" : "refinement", e.what());
   }
   f.finish();
   return out;
@@ -216,7 +236,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   json root;
   try {
     root = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e400
     throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
   }
   Scene scene;
@@ -249,6 +269,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     scene.plane = plane == "strain" ? PlaneModel::strain : PlaneModel::stress;
     scene.load = material.number("load", 1.0);
     material.finish();
+    if (!(std::isfinite(scene.E) && scene.E > 0))
+      material.fail_value("E", "expected a finite E > 0, found " + fmt(scene.E));
     for (double nu : scene.nu) {
       try {
         IsotropicElasticity(scene.E, nu, scene.plane);
@@ -257,11 +279,32 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       }
     }
   }
+  // Every problem must exist, live on the domain and be solvable: refused here, not run by run.
+  for (const std::string& problem : scene.problems) {
+    SolveSettings settings;
+    settings.problem = problem;
+    settings.E = scene.E;
+    settings.nu = scene.nu.front();
+    settings.plane = scene.plane;
+    if (problem != "beam" && problem != "patch" && problem != "patch-mixed" &&
+        problem != "patch-traction" && problem != "mms")
+      top.fail_value("problems", "'" + problem + "': expected beam, patch, patch-mixed, patch-traction or mms");
+    std::unique_ptr<ExactSolution> exact;
+    try {
+      exact = make_problem(settings, scene.domain);
+    } catch (const InputError& e) {
+      top.fail_value("domain", e.what());
+    }
+    if (!exact->has_dirichlet_side())
+      top.fail_value("problems", "'" + problem +
+                                     "' prescribes no displacement on any side: every run would be "
+                                     "singular, expected a problem with a Dirichlet side");
+  }
   const json& meshes = top.at("meshes");
   if (!meshes.is_array() || meshes.empty()) top.fail("meshes", "a non-empty array of mesh objects", meshes);
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     SceneObject m(meshes[i], "meshes[" + std::to_string(i) + "]", source);
-    scene.meshes.push_back(read_mesh(m));
+    scene.meshes.push_back(read_mesh(m, scene.domain));
   }
   const json& forms = top.at("formulations");
   if (!forms.is_array() || forms.empty())

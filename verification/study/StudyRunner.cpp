@@ -97,6 +97,7 @@ json result_json(const StudyRun& run, const Scene& scene, const PolygonMesh& mes
             {"l2_error", r.l2_error},
             {"energy_error", r.energy_error},
             {"rcond", r.rcond},
+            {"factor_nonzeros", r.factor_nonzeros},
             {"iterations", r.dg ? r.dg->iterations : 1},
             {"stop_reason", r.dg ? r.dg->stop_reason : "direct"},
             {"relative_gap", r.dg ? r.dg->relative_gap : 0.0}};
@@ -148,13 +149,14 @@ std::vector<StudyRun> expand_runs(const Scene& scene) {
 
 std::vector<json> run_study(const Scene& scene, const StudyOptions& options) {
   namespace fs = std::filesystem;
+  const std::vector<StudyRun> runs = expand_runs(scene);  // refuses a bad scene before any output
   std::error_code ec;
   fs::create_directories(options.out, ec);
   if (!fs::is_directory(options.out))
-    throw InputError("output folder '" + options.out.string() + "' cannot be created");
+    throw InputError("output folder '" + options.out.string() + "' cannot be created" +
+                     (ec ? " (" + ec.message() + ")" : std::string()));
   const fs::path results_file = options.out / "results.jsonl";
   std::map<std::string, json> done = read_results(results_file);
-  const std::vector<StudyRun> runs = expand_runs(scene);
 
   // Work by mesh: every pending run on the same (mesh, level, realization) shares one mesh.
   std::map<std::tuple<int, int, int>, std::vector<const StudyRun*>> pending;

@@ -12,21 +12,9 @@ struct CellSums {
   double l2 = 0, l2_exact = 0, energy = 0, energy_exact = 0;
 };
 
-/// Cell mean of the in-plane dilatation div u_h, over the table's quadrature points.
-double mean_dilatation(const ElementTable& table, int c, const Eigen::VectorXd& u) {
-  double sum = 0.0, area = 0.0;
-  for (int q = 0; q < table.num_points(c); ++q) {
-    double div = 0.0;
-    for (int k = 0; k < table.num_nodes(c); ++k)
-      div += u[2 * k] * table.grad(c, q, k).x() + u[2 * k + 1] * table.grad(c, q, k).y();
-    sum += table.weight(c, q) * div;
-    area += table.weight(c, q);
-  }
-  return sum / area;
-}
-
 CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, int c,
-                        const Eigen::VectorXd& u, bool energy, bool mean_dilation) {
+                        const Eigen::VectorXd& u, bool energy, const CellDilatationMean& dilatation_mean) {
+  const bool mean_dilation = static_cast<bool>(dilatation_mean);
   const PolygonMesh& mesh = table.mesh();
   const auto loop = mesh.cell_vertices(c);
   const int n = static_cast<int>(loop.size());
@@ -37,7 +25,7 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
   double psi[64];
   Eigen::Vector2d grad[64];
   CellSums sums;
-  const double dilatation_mean = mean_dilation ? mean_dilatation(table, c, u) : 0.0;
+  const double cell_dilatation = mean_dilation ? dilatation_mean(c, u) : 0.0;
   for (int k = 0; k < n; ++k) {
     const double fan_area = 0.5 * std::abs((mesh.vertex(loop[k]) - C).x() * (mesh.vertex(loop[(k + 1) % n]) - C).y() -
                                            (mesh.vertex(loop[k]) - C).y() * (mesh.vertex(loop[(k + 1) % n]) - C).x());
@@ -65,7 +53,7 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
             if (!energy) continue;
             Eigen::Vector3d eh(Gh(0, 0), Gh(1, 1), Gh(0, 1) + Gh(1, 0));
             if (mean_dilation) {  // as the B-bar operator: half the gap to each normal strain
-              const double shift = 0.5 * (dilatation_mean - (eh[0] + eh[1]));
+              const double shift = 0.5 * (cell_dilatation - (eh[0] + eh[1]));
               eh[0] += shift;
               eh[1] += shift;
             }
@@ -82,13 +70,13 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
 
 ErrorReport compute_errors(const ElementTable& table, const ExactSolution& exact,
                            const std::function<Eigen::VectorXd(int)>& cell_dofs, bool energy,
-                           int threads, bool mean_dilation) {
+                           int threads, const CellDilatationMean& dilatation_mean) {
   const PolygonMesh& mesh = table.mesh();
   const int nc = mesh.num_cells();
   std::vector<CellSums> sums(nc);
 #pragma omp parallel for schedule(dynamic, 128) num_threads(std::max(threads, 1))
   for (int c = 0; c < nc; ++c)
-    sums[c] = integrate_cell(table, exact, c, cell_dofs(c), energy, mean_dilation);
+    sums[c] = integrate_cell(table, exact, c, cell_dofs(c), energy, dilatation_mean);
   ErrorReport report;
   report.cell_l2_density.resize(nc);
   report.cell_energy_density.resize(nc);

@@ -23,11 +23,13 @@ struct ErrorReport {
 
 /// `cell_dofs(c)` gives the DOF vector (u_x, u_y per vertex in loop order) of cell c: the same
 /// call serves CG (gathered from vertices) and DG (the cell's own copies).
-/// With `mean_dilation` the discrete strain in the energy norm is the one the method uses: its
-/// in-plane dilatation replaced by the cell mean (otherwise, near incompressibility, the
-/// lambda-weighted pointwise dilatation that mean dilation leaves uncontrolled swamps the norm).
+/// With `dilatation_mean` (mean dilation) the discrete strain in the energy norm is the one the
+/// method uses: its in-plane dilatation replaced by the cell mean that dilatation_mean(c, u)
+/// gives (otherwise, near incompressibility, the lambda-weighted pointwise dilatation that mean
+/// dilation leaves uncontrolled swamps the norm).
+using CellDilatationMean = std::function<double(int, const Eigen::VectorXd&)>;
 ErrorReport compute_errors(const ElementTable& table, const ExactSolution& exact,
                            const std::function<Eigen::VectorXd(int)>& cell_dofs, bool energy = true,
-                           int threads = 1, bool mean_dilation = false);
+                           int threads = 1, const CellDilatationMean& dilatation_mean = {});
 
 }  // namespace vorodg

@@ -71,15 +71,32 @@ ElasticityIntegrator::CellMatrices ElasticityIntegrator::cell_matrices(int first
 }
 
 Eigen::Vector3d ElasticityIntegrator::mean_stress(int c, const Eigen::VectorXd& u) const {
-  StrainOperator B;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  return material_.D() * (mean_strain_operator(c) * u);
+}
+
+StrainOperator ElasticityIntegrator::mean_strain_operator(int c) const {
+  StrainOperator B, sum = StrainOperator::Zero(3, 2 * table_.num_nodes(c));
   double area = 0.0;
   for (int q = 0; q < table_.num_points(c); ++q) {
     strain_operator(c, q, B);
-    sum += table_.weight(c, q) * (material_.D() * (B * u));
+    sum += table_.weight(c, q) * B;
     area += table_.weight(c, q);
   }
   return sum / area;
+}
+
+ElasticityIntegrator::MeanStrainOperators ElasticityIntegrator::all_mean_strain_operators(int threads) const {
+  const int nc = table_.mesh().num_cells();
+  MeanStrainOperators out;
+  out.offset.assign(nc + 1, 0);
+  for (int c = 0; c < nc; ++c) out.offset[c + 1] = out.offset[c] + 6 * std::size_t(table_.num_nodes(c));
+  out.data.resize(out.offset.back());
+#pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(threads, 1))
+  for (int c = 0; c < nc; ++c) {
+    const StrainOperator op = mean_strain_operator(c);
+    std::copy(op.data(), op.data() + op.size(), out.data.begin() + out.offset[c]);
+  }
+  return out;
 }
 
 }  // namespace vorodg

@@ -42,6 +42,18 @@ class ElasticityIntegrator {
   }
   /// Area-weighted mean stress of cell c for the cell's DOF vector u (2n).
   Eigen::Vector3d mean_stress(int c, const Eigen::VectorXd& u) const;
+  /// The cell mean of the strain operator, (1/|c|) sum_q w_q B_q (3 x 2n): the mean strain of a
+  /// DOF vector, hence its mean stress (D times it) and mean dilatation (rows 0 + 1). Kept per
+  /// cell, it lets a solve release the element table's point values before the factorization.
+  StrainOperator mean_strain_operator(int c) const;
+  struct MeanStrainOperators {
+    std::vector<std::size_t> offset;
+    std::vector<double> data;
+    Eigen::Map<const StrainOperator> block(int c) const {
+      return {data.data() + offset[c], 3, static_cast<Eigen::Index>((offset[c + 1] - offset[c]) / 3)};
+    }
+  };
+  MeanStrainOperators all_mean_strain_operators(int threads) const;
 
  private:
   const ElementTable& table_;

@@ -64,21 +64,31 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
   grad_.resize(value_offsets_.back());
   defect_.assign(nc, 0.0);
   rcond_.assign(nc, 0.0);
+  min_weight_.assign(nc, 0.0);
 
   // Exceptions must not leave a parallel region: remember the first failing cell instead.
   std::atomic<int> failed{nc};
 #pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(options.threads, 1))
   for (int c = 0; c < nc; ++c) {
     build_cell(c);
-    if (!(rcond_[c] > 1e-14)) {
+    if (!(rcond_[c] > kMinMomentRcond) || !(min_weight_[c] > 0.0)) {
       int expected = failed.load();
       while (c < expected && !failed.compare_exchange_weak(expected, c)) {}
     }
   }
-  if (failed < nc)
-    throw NumericalError("cell " + std::to_string(failed.load()) +
+  if (failed < nc) {
+    const int c = failed.load();
+    // A weight function must be positive wherever the cell's shape functions are evaluated:
+    // every vertex's patch contains the cell. A zero or negative one makes the moment matrix
+    // indefinite or leaves a node without influence.
+    if (!(min_weight_[c] > 0.0))
+      throw NumericalError("cell " + std::to_string(c) + ": a vertex weight function is " +
+                           fmt(min_weight_[c]) + " <= 0 at a quadrature point (expected > 0 inside "
+                           "the cell; a degenerate cell or weight sub-triangle)");
+    throw NumericalError("cell " + std::to_string(c) +
                          ": the RK moment matrix is singular at a quadrature point (reciprocal "
-                         "condition " + fmt(rcond_[failed.load()]) + ")");
+                         "condition " + fmt(rcond_[c]) + ", expected > " + fmt(kMinMomentRcond) + ")");
+  }
 }
 
 void ElementTable::build_cell(int c) {
@@ -91,6 +101,7 @@ void ElementTable::build_cell(int c) {
   for (int k = 0; k < n; ++k) nodes[k] = mesh_.vertex(loop[k]);
   const TriangleRule& rule = triangle_rule(options_.rule_points);
   double min_rcond = std::numeric_limits<double>::infinity();
+  double min_weight = std::numeric_limits<double>::infinity();
   int q = 0;
   for (int k = 0; k < n; ++k) {
     const Point& A = nodes[k];
@@ -102,6 +113,7 @@ void ElementTable::build_cell(int c) {
       points_[at] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
       weights_q_[at] = rule.weights[r] * fan_area;
       weights_->evaluate(c, k, rule.bary[r], w, grad_w);
+      for (int j = 0; j < n; ++j) min_weight = std::min(min_weight, std::isnan(w[j]) ? -1.0 : w[j]);
       const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
       const double rc = rk_shape_functions(frame, {nodes, static_cast<std::size_t>(n)}, points_[at],
                                            w, grad_w, &shape_[v], &grad_[v]);
@@ -109,6 +121,7 @@ void ElementTable::build_cell(int c) {
     }
   }
   rcond_[c] = min_rcond;
+  min_weight_[c] = min_weight;
 
   // Discrete divergence identity (Eq. 16): sum_q w_q dpsi_k/dx_i must equal the boundary
   // integral of psi_k n_i, which for edge-linear psi_k is half the sum of (length x normal) of
@@ -162,6 +175,14 @@ void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vecto
     psi[at.fan] = at.bary[1] / s;
     psi[(at.fan + 1) % n] = at.bary[2] / s;
   }
+}
+
+void ElementTable::release_point_values() {
+  std::vector<Point>().swap(points_);
+  std::vector<FanPoint>().swap(fan_points_);
+  std::vector<double>().swap(shape_);
+  std::vector<Eigen::Vector2d>().swap(grad_);
+  released_ = true;
 }
 
 }  // namespace vorodg

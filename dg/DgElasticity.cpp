@@ -6,6 +6,7 @@
 #include "core/element/LoadIntegrator.hpp"
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
 
 namespace vorodg {
 
@@ -158,7 +159,7 @@ void DgElasticity::solve() {
       // Symmetric interior penalty is coercive only above a penalty threshold, which the large
       // one-sided gradients of RK shape functions at short edges push up.
       throw NumericalError("dg-sipg: the matrix is not positive definite at k_p = " +
-                           std::to_string(options_.kp) +
+                           fmt(options_.kp) +
                            " E: the penalty is below the coercivity threshold of the interface "
                            "terms on this mesh (raise --kp, or use --sipg-mean-stress)");
     }

@@ -553,6 +553,61 @@ def plot_tradeoff(outdir, dpi):
     return True
 
 
+def plot_extremes(outdir, dpi):
+    """extremes.csv (extremes studies): one panel per axis, the error of every run against the
+    axis value, one marker per formulation, coloured by verdict (ok / degraded / broken)."""
+    path = os.path.join(outdir, "extremes.csv")
+    if not os.path.exists(path):
+        return False
+    import csv
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    axes = list(dict.fromkeys(r["axis"] for r in rows))
+    colour = {"ok": "tab:green", "degraded": "tab:orange", "broken": "tab:red"}
+    markers = "os^vD<>ph*XP"
+    cols = min(3, len(axes))
+    nrows = (len(axes) + cols - 1) // cols
+    fig, grid = plt.subplots(nrows, cols, figsize=(5.2 * cols, 4.2 * nrows), squeeze=False)
+    def as_float(text):
+        try:
+            return float(text)
+        except ValueError:
+            return math.nan
+
+    for panel, axis in zip(grid.flat, axes):
+        mine = [r for r in rows if r["axis"] == axis]
+        # nu is drawn against -log10(0.5 - nu), the number of nines; other wide axes on log scale.
+        def x_of(r):
+            v = as_float(r["value"])
+            return -math.log10(0.5 - v) if axis == "nu" else v
+        xs = [x_of(r) for r in mine if math.isfinite(x_of(r)) and x_of(r) > 0]
+        logx = axis != "nu" and bool(xs) and max(xs) / min(xs) > 20
+        forms = list(dict.fromkeys(r["formulation"] for r in mine))
+        for i, form in enumerate(forms):
+            for verdict, c in colour.items():
+                pts = [(x_of(r), as_float(r["l2_error"])) for r in mine
+                       if r["formulation"] == form and r["verdict"] == verdict]
+                pts = [(x, y if usable(y) else 1.0) for x, y in pts
+                       if math.isfinite(x) and (x > 0 or not logx)]
+                if pts:
+                    panel.scatter([p[0] for p in pts], [p[1] for p in pts], color=c,
+                                  marker=markers[i % len(markers)], s=28, alpha=0.8,
+                                  label=form if verdict == "ok" else None)
+        if logx:
+            panel.set_xscale("log")
+        panel.set_xlabel("-log10(0.5 - nu)" if axis == "nu" else axis)
+        panel.set_yscale("log")
+        panel.set_ylabel("relative L2 error (failed runs at 1)")
+        panel.set_title(f"{axis}: green ok, orange degraded, red broken", fontsize=9)
+        panel.grid(True, which="both", alpha=0.3)
+        panel.legend(fontsize=7)
+    for panel in list(grid.flat)[len(axes):]:
+        panel.set_visible(False)
+    fig.tight_layout()
+    save_atomically(fig, os.path.join(outdir, "extremes.png"), dpi)
+    return True
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -562,6 +617,8 @@ def main(argv):
     args = ap.parse_args(argv)
     if args.dpi <= 0:
         ap.error(f"--dpi must be positive, got {args.dpi}")
+    if plot_extremes(args.outdir, args.dpi):
+        return 0
     try:
         summary = read_summary(os.path.join(args.outdir, "summary.json"))
     except InputError as e:

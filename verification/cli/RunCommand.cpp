@@ -9,6 +9,7 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "verification/cli/CliSupport.hpp"
+#include "verification/study/ExtremesReport.hpp"
 #include "verification/study/Scene.hpp"
 #include "verification/study/StudyReport.hpp"
 #include "verification/study/StudyRunner.hpp"
@@ -53,6 +54,26 @@ void draw_plots(const fs::path& out) {
   if (std::system(cmd.c_str()) != 0) std::cerr << "note: the plots could not be drawn (" << cmd << ")\n";
 }
 
+/// An extremes study: each sweep runs (and reports) in its own subfolder, then every run gets
+/// its verdict. Broken runs are findings of the study, not a failure of the program: exit 0.
+int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots, const Stopwatch& clock) {
+  std::vector<std::vector<nlohmann::json>> results;
+  std::size_t runs = 0;
+  for (const auto& sweep : scene.sweeps) {
+    StudyOptions sub = options;
+    sub.out = options.out / sweep->name;
+    std::cout << "\n== sweep " << sweep->name << " (" << sweep->axis << ")\n";
+    results.push_back(run_study(*sweep, sub));
+    write_study_report(*sweep, results.back(), sub.out);
+    runs += results.back().size();
+  }
+  const int broken = write_extremes_report(scene, results, options.out);
+  if (!no_plots) draw_plots(options.out);
+  std::cout << "\n" << scene.name << ": " << runs << " runs (" << broken << " broken), "
+            << clock.seconds() << " s; report in " << (options.out / "report.md").string() << "\n";
+  return 0;
+}
+
 }  // namespace
 
 CLI::App* add_run_command(CLI::App& app, RunCommandOptions& o) {
@@ -78,6 +99,7 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   options.out = o.out;
   options.threads = o.threads;
   options.progress = !o.quiet;
+  if (scene.study == "extremes") return run_extremes(scene, options, o.no_plots, clock);
   const auto results = run_study(scene, options);
   const int unexpected = write_study_report(scene, results, o.out);
   if (!o.no_plots) draw_plots(o.out);

@@ -232,6 +232,8 @@ SceneFormulation read_formulation(SceneObject& f) {
 
 }  // namespace
 
+Scene parse_extremes(const json& root, SceneObject& top, const std::string& source);
+
 Scene parse_scene(const std::string& text, const std::string& source) {
   json root;
   try {
@@ -245,10 +247,16 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   scene.description = top.text("description", "");
   scene.study = top.text("study", "convergence");
   if (scene.study != "convergence" && scene.study != "penalty-sweep" &&
-      scene.study != "patch-suite" && scene.study != "trade-off")
+      scene.study != "patch-suite" && scene.study != "trade-off" && scene.study != "extremes")
     top.fail_value("study", "'" + scene.study +
-                                "': expected convergence, penalty-sweep, patch-suite or trade-off "
-                                "(extremes is not available yet)");
+                                "': expected convergence, penalty-sweep, patch-suite, trade-off or extremes");
+  if (scene.study == "extremes") {
+    Scene extremes = parse_extremes(root, top, source);
+    extremes.name = scene.name;
+    extremes.description = scene.description;
+    extremes.study = scene.study;
+    return extremes;
+  }
   scene.problems = top.texts("problems", {"beam"});
   const bool beam = std::find(scene.problems.begin(), scene.problems.end(), "beam") != scene.problems.end();
   const std::vector<double> domain = top.numbers("domain", beam ? std::vector<double>{0, -0.5, 4, 0.5}
@@ -322,6 +330,62 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   scene.patch_tolerance = top.number("patch_tolerance", 1e-10);
   scene.reference = top.text("reference", "");
   top.finish();
+  return scene;
+}
+
+/// An extremes scene: every entry of "sweeps" is merged (JSON merge patch) over the top-level
+/// keys and read as a scene of its own, so each sweep is validated like any scene.
+Scene parse_extremes(const json& root, SceneObject& top, const std::string& source) {
+  const json& sweeps = top.at("sweeps");
+  if (!sweeps.is_array() || sweeps.empty()) top.fail("sweeps", "a non-empty array of sweep objects", sweeps);
+  json base = root;
+  for (const char* key : {"name", "description", "study", "sweeps"}) base.erase(key);
+  Scene scene;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < sweeps.size(); ++i) {
+    const std::string where = "sweeps[" + std::to_string(i) + "]";
+    SceneObject s(sweeps[i], where, source);
+    json merged = base;
+    json patch = sweeps[i];
+    static const std::vector<std::string> sweep_keys = {"name", "axis", "baseline", "expected_rate",
+                                                        "degraded_factor", "broken_factor"};
+    static const std::set<std::string> scene_keys = {"problems", "domain", "material", "meshes",
+                                                     "formulations", "outputs", "patch_tolerance", "reference"};
+    for (const auto& [key, ignored] : sweeps[i].items()) {
+      if (scene_keys.count(key) || std::find(sweep_keys.begin(), sweep_keys.end(), key) != sweep_keys.end())
+        continue;
+      for (const std::string& known : sweep_keys)  // a misspelt sweep key: suggest it here
+        if (edit_distance(key, known) < 4)
+          throw InputError("scene " + source + ": unknown key '" + where + "." + key +
+                           "' (did you mean '" + known + "'?)");
+    }
+    for (const std::string& key : sweep_keys) patch.erase(key);
+    merged.merge_patch(patch);
+    merged["study"] = "convergence";
+    auto sweep = std::make_shared<Scene>(parse_scene(merged.dump(), source + " " + where));
+    sweep->name = s.text("name", "");
+    if (sweep->name.empty() || sweep->name.find_first_of("/\\ ") != std::string::npos)
+      s.fail_value("name", "expected a non-empty folder name without '/', '\\' or spaces");
+    if (!names.insert(sweep->name).second) s.fail_value("name", "'" + sweep->name + "' names two sweeps");
+    sweep->axis = s.text("axis", "");
+    static const std::set<std::string> axes = {"nu", "kp", "aspect", "perturbation", "regularization", "h"};
+    if (!axes.count(sweep->axis))
+      s.fail_value("axis", "'" + sweep->axis + "': expected nu, kp, aspect, perturbation, regularization or h");
+    sweep->baseline = s.text("baseline", "none");
+    static const std::set<std::string> baselines = {"first-nu", "cg", "first-mesh", "coarsest-level", "none"};
+    if (!baselines.count(sweep->baseline))
+      s.fail_value("baseline", "'" + sweep->baseline + "': expected first-nu, cg, first-mesh, coarsest-level or none");
+    const bool has_cg = std::any_of(sweep->formulations.begin(), sweep->formulations.end(),
+                                    [](const SceneFormulation& f) { return f.settings.formulation == "cg"; });
+    if (sweep->baseline == "cg" && !has_cg)
+      s.fail_value("baseline", "'cg' needs a cg formulation in the sweep");
+    sweep->expected_rate = s.number("expected_rate", 2.0);
+    sweep->degraded_factor = s.number("degraded_factor", 3.0);
+    sweep->broken_factor = s.number("broken_factor", 30.0);
+    if (!(sweep->degraded_factor > 1 && sweep->broken_factor > sweep->degraded_factor))
+      s.fail_value("broken_factor", "expected 1 < degraded_factor < broken_factor");
+    scene.sweeps.push_back(sweep);
+  }
   return scene;
 }
 

@@ -5,6 +5,7 @@
 // naming the file and the key (with the nearest valid key suggested).
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +36,7 @@ struct Scene {
   std::filesystem::path path;
   std::string name;
   std::string description;
-  std::string study = "convergence";  // convergence | penalty-sweep | patch-suite
+  std::string study = "convergence";  // convergence | penalty-sweep | patch-suite | trade-off | extremes
   std::vector<std::string> problems;
   Rectangle domain;
   double E = 1.0;
@@ -47,6 +48,16 @@ struct Scene {
   bool energy_error = true;
   double patch_tolerance = 1e-10;  // patch-suite: errors at most this pass
   std::string reference;           // key into data/reference/published.json (optional)
+
+  // extremes: the sweeps, each a scene of its own (the top-level keys with the sweep's keys
+  // merged over them), run into a subfolder named after it.
+  std::vector<std::shared_ptr<const Scene>> sweeps;
+  // A sweep of an extremes study: what it varies and what its verdicts compare against.
+  std::string axis;                 // nu | kp | aspect | perturbation | regularization | h
+  std::string baseline = "none";    // first-nu | cg | first-mesh | coarsest-level | none
+  double expected_rate = 2.0;       // coarsest-level: the error expected to fall as h^rate
+  double degraded_factor = 3.0;     // error above this times the baseline: degraded
+  double broken_factor = 30.0;      // error above this times the baseline: broken
 };
 
 /// Reads and validates a scene. Throws InputError naming the file and the key.

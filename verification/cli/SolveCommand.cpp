@@ -4,11 +4,14 @@
 #include <iostream>
 #include <string_view>
 
+#include <thread>
+
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/BlasInfo.hpp"
 #include "core/util/PeakMemory.hpp"
 #include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
 #include "verification/cli/JsonOutput.hpp"
 
 namespace vorodg {
@@ -117,6 +120,8 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
       ->capture_default_str();
   cmd->add_option("--degree", s.element.weights.degree, "Weight functions: P1 or P2")
       ->capture_default_str();
+  // Both cores by default; results are bitwise the same for any thread count.
+  s.element.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   cmd->add_option("--threads", s.element.threads, "Threads for setup, assembly and errors")
       ->capture_default_str();
   cmd->add_option("--ordering", o.ordering,
@@ -179,6 +184,14 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
 
   SolveResult r = run_solve(mesh, settings);
   r.seconds["mesh"] = mesh_seconds;
+  // A DG iteration that did not converge leaves a plausible-looking wrong answer: refuse it.
+  if (r.dg && r.dg->stop_reason != "converged" && r.dg->stop_reason != "direct")
+    throw NumericalError(settings.formulation + ": the interface iteration " +
+                         (r.dg->stop_reason == "diverged" ? "diverged" : "did not converge") +
+                         " (stop reason " + r.dg->stop_reason + " after " +
+                         std::to_string(r.dg->iterations) + " iterations, relative change " +
+                         fmt(r.dg->last_change, 3) + ", tolerance " + fmt(settings.dg.tolerance, 3) +
+                         "); nothing written: raise --max-iter, or --kp");
   const auto exact = make_problem(settings, mesh.domain());
 
   nlohmann::json json;

@@ -42,10 +42,12 @@ void BM_DgIteration(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_DgIteration)
+    ->Args({1000, 0})
     ->Args({10000, 0})
     ->Args({100000, 0})
     ->Args({100000, 1})
     ->Iterations(1)
+    ->Repetitions(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
 

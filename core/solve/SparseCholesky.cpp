@@ -58,9 +58,9 @@ NodeGraph node_graph(const Eigen::SparseMatrix<double>& lower, int b) {
   return g;
 }
 
-/// METIS nested dissection of the node graph, expanded to the DOFs of each node.
-std::vector<int> node_metis_permutation(const Eigen::SparseMatrix<double>& lower, int b,
-                                        cholmod_common* c) {
+/// A fill-reducing ordering of the node graph (METIS or AMD), expanded to the DOFs of each node.
+std::vector<int> node_permutation(const Eigen::SparseMatrix<double>& lower, int b, bool metis,
+                                  cholmod_common* c) {
   NodeGraph g = node_graph(lower, b);
   const int nodes = static_cast<int>(g.col_start.size()) - 1;
   cholmod_sparse view{};
@@ -74,8 +74,11 @@ std::vector<int> node_metis_permutation(const Eigen::SparseMatrix<double>& lower
   view.dtype = CHOLMOD_DOUBLE;
   view.sorted = view.packed = 1;
   std::vector<int> node_perm(nodes);
-  if (!cholmod_metis(&view, nullptr, 0, /*postorder=*/1, node_perm.data(), c))
-    throw NumericalError("METIS could not order the node graph (CHOLMOD status " +
+  const int done = metis ? cholmod_metis(&view, nullptr, 0, /*postorder=*/1, node_perm.data(), c)
+                         : cholmod_amd(&view, nullptr, 0, node_perm.data(), c);
+  if (!done)
+    throw NumericalError(std::string(metis ? "METIS" : "AMD") +
+                         " could not order the node graph (CHOLMOD status " +
                          std::to_string(c->status) + ")");
   std::vector<int> perm(static_cast<size_t>(nodes) * b);
   for (int k = 0; k < nodes; ++k)
@@ -106,11 +109,13 @@ void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
   cholmod_sparse a = view_of(lower, -1);
   const int b = options.block_size;
   // METIS pays off only on large graphs; small systems (patch tests, coarse levels) use AMD.
-  const bool use_nodes = options.ordering == FillOrdering::node_metis && b >= 1 &&
-                         lower.cols() % b == 0 && lower.cols() >= 4000;
+  const bool by_nodes = options.ordering == FillOrdering::node_metis ||
+                        options.ordering == FillOrdering::node_amd;
+  const bool use_nodes = by_nodes && b >= 1 && lower.cols() % b == 0 && lower.cols() >= 4000;
   common.postorder = 1;
   if (use_nodes) {
-    std::vector<int> perm = node_metis_permutation(lower, b, &common);
+    std::vector<int> perm =
+        node_permutation(lower, b, options.ordering == FillOrdering::node_metis, &common);
     common.nmethods = 1;
     common.method[0].ordering = CHOLMOD_GIVEN;
     factor = cholmod_analyze_p(&a, perm.data(), nullptr, 0, &common);

@@ -15,6 +15,7 @@ namespace vorodg {
 /// How the fill-reducing ordering is chosen.
 enum class FillOrdering {
   node_metis,       // METIS nested dissection on the node graph (block_size DOFs per node)
+  node_amd,         // approximate minimum degree on the node graph: fast, more fill
   amd,              // approximate minimum degree on the DOF graph
   cholmod_default,  // CHOLMOD's own choice: AMD, then METIS if AMD's fill is poor
 };

@@ -125,7 +125,7 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   cmd->add_option("--threads", s.element.threads, "Threads for setup, assembly and errors")
       ->capture_default_str();
   cmd->add_option("--ordering", o.ordering,
-                  "Fill-reducing ordering of the sparse factor: node-metis | amd | cholmod")
+                  "Fill-reducing ordering of the sparse factor: node-metis | node-amd | amd | cholmod")
       ->capture_default_str();
   cmd->add_option("-o,--output", o.output, "Result file to write (.vtu)");
   cmd->add_option("--metrics", o.metrics, "Metrics file to write (.json)");
@@ -140,9 +140,10 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   settings.plane = o.plane == "strain" ? PlaneModel::strain : PlaneModel::stress;
   settings.element.divergence_correction = !o.no_correction;
   if (o.ordering == "node-metis") settings.ordering = FillOrdering::node_metis;
+  else if (o.ordering == "node-amd") settings.ordering = FillOrdering::node_amd;
   else if (o.ordering == "amd") settings.ordering = FillOrdering::amd;
   else if (o.ordering == "cholmod") settings.ordering = FillOrdering::cholmod_default;
-  else throw InputError("--ordering '" + o.ordering + "': expected node-metis, amd or cholmod");
+  else throw InputError("--ordering '" + o.ordering + "': expected node-metis, node-amd, amd or cholmod");
   if (!(settings.E > 0))
     throw InputError("--E " + exact(settings.E) + ": expected Young's modulus E > 0");
   if (!(settings.nu > -1 && settings.nu < 0.5))

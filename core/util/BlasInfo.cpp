@@ -8,10 +8,30 @@
 
 namespace vorodg {
 
-std::string blas_description() {
-  // The BLAS behind libblas.so.3 (Debian's alternatives choose it), loaded if no one has yet.
+namespace {
+void* blas_handle() {
   void* handle = dlopen("libblas.so.3", RTLD_LAZY | RTLD_NOLOAD);
   if (!handle) handle = dlopen("libblas.so.3", RTLD_LAZY | RTLD_LOCAL);
+  return handle;
+}
+}  // namespace
+
+int set_blas_threads(int threads) {
+  void* handle = blas_handle();
+  if (!handle) return 1;
+  using GetFn = int (*)();
+  using SetFn = void (*)(int);
+  auto get = reinterpret_cast<GetFn>(dlsym(handle, "openblas_get_num_threads"));
+  auto set = reinterpret_cast<SetFn>(dlsym(handle, "openblas_set_num_threads"));
+  if (!get || !set) return 1;
+  const int previous = get();
+  set(threads);
+  return previous;
+}
+
+std::string blas_description() {
+  // The BLAS behind libblas.so.3 (Debian's alternatives choose it), loaded if no one has yet.
+  void* handle = blas_handle();
   if (!handle) return "no libblas.so.3 found";
   std::string path = "?";
   link_map* map = nullptr;

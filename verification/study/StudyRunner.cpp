@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/mesh/MeshValidator.hpp"
+#include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/PeakMemory.hpp"
@@ -224,9 +225,12 @@ std::vector<json> run_study(const Scene& scene, const StudyOptions& options) {
       }
     }
   };
+  // One run per core: the BLAS must not start threads of its own on top.
+  const int blas_threads = options.threads > 1 ? set_blas_threads(1) : 0;
   std::vector<std::thread> threads;
   for (int t = 0; t < std::max(options.threads, 1); ++t) threads.emplace_back(worker);
   for (auto& t : threads) t.join();
+  if (blas_threads > 0) set_blas_threads(blas_threads);
 
   std::vector<json> results;
   for (const StudyRun& run : runs) results.push_back(done.at(run.id));

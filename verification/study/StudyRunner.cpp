@@ -225,12 +225,13 @@ std::vector<json> run_study(const Scene& scene, const StudyOptions& options) {
       }
     }
   };
-  // One run per core: the BLAS must not start threads of its own on top.
-  const int blas_threads = options.threads > 1 ? set_blas_threads(1) : 0;
+  // One run per core: the BLAS must not start threads of its own on top. Always one, so that
+  // the results (the BLAS's summation order included) do not depend on --threads.
+  const int blas_threads = set_blas_threads(1);
   std::vector<std::thread> threads;
   for (int t = 0; t < std::max(options.threads, 1); ++t) threads.emplace_back(worker);
   for (auto& t : threads) t.join();
-  if (blas_threads > 0) set_blas_threads(blas_threads);
+  set_blas_threads(blas_threads);
 
   std::vector<json> results;
   for (const StudyRun& run : runs) results.push_back(done.at(run.id));

@@ -259,10 +259,13 @@ VtuCells parse_vtu(const std::string& text, const std::string& source) {
 }
 
 PolygonMesh read_vtu(const std::filesystem::path& path, const Rectangle* domain) {
-  const std::string text = read_file(path);
-  VtuCells cells = parse_vtu(text, path.string());
+  return read_vtu_text(read_file(path), path.string(), domain);
+}
+
+PolygonMesh read_vtu_text(const std::string& text, const std::string& source, const Rectangle* domain) {
+  VtuCells cells = parse_vtu(text, source);
   if (cells.points.empty() || cells.offsets.size() < 2)
-    throw InputError(path.string() + ": the mesh is empty (no points or no cells)");
+    throw InputError(source + ": the mesh is empty (no points or no cells)");
   Rectangle dom;
   if (domain) {
     dom = *domain;

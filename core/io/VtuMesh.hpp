@@ -43,5 +43,8 @@ VtuCells parse_vtu(const std::string& text, const std::string& source);
 /// Reads a mesh file. The domain is `domain` if given, else the file's FieldData "domain", else
 /// the bounding box of the points.
 PolygonMesh read_vtu(const std::filesystem::path& path, const Rectangle* domain = nullptr);
+/// The same from .vtu text already in memory (`source` names it in messages).
+PolygonMesh read_vtu_text(const std::string& text, const std::string& source,
+                          const Rectangle* domain = nullptr);
 
 }  // namespace vorodg

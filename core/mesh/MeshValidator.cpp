@@ -69,9 +69,9 @@ void check_cell(const PolygonMesh& mesh, int c, double tol, double min_area, Def
       break;
     }
   const double area = polygon::signed_area(pts);
-  if (std::abs(area) <= min_area) {
+  if (!std::isfinite(area) || std::abs(area) <= min_area) {  // not finite: coordinates overflow
     out.add(MeshDefect::Kind::zero_area_cell, c,
-            cell_name(c) + " has area " + fmt(area) + ", expected more than " + fmt(min_area));
+            cell_name(c) + " has area " + fmt(area) + ", expected a finite area above " + fmt(min_area));
     return;
   }
   if (polygon::self_intersects(pts)) {
@@ -86,7 +86,14 @@ void check_cell(const PolygonMesh& mesh, int c, double tol, double min_area, Def
     return;
   }
   // Fan quadrature and the RK element need every fan triangle from the centroid positive.
-  if (!polygon::star_shaped_about(pts, polygon::centroid(pts, area), 0.0))
+  const Point centroid = polygon::centroid(pts, area);
+  if (!centroid.allFinite()) {  // a NaN centroid would pass the test below
+    out.add(MeshDefect::Kind::not_star_shaped, c,
+            cell_name(c) + " has centroid (" + fmt(centroid.x()) + "," + fmt(centroid.y()) +
+                "), expected finite coordinates (the cell is too large for double precision)");
+    return;
+  }
+  if (!polygon::star_shaped_about(pts, centroid, 0.0))
     out.add(MeshDefect::Kind::not_star_shaped, c,
             cell_name(c) + " is not star-shaped with respect to its centroid");
 }
@@ -152,6 +159,15 @@ MeshValidationReport validate_mesh(const PolygonMesh& mesh, const MeshValidation
     out.add(MeshDefect::Kind::empty_mesh, -1, "the mesh has no cells");
     return report;
   }
+  // Sizes and areas must be finite for every tolerance below (a NaN comparison passes).
+  const Rectangle& domain = mesh.domain();
+  if (!std::isfinite(domain.area()) || !(domain.area() > 0)) {
+    out.add(MeshDefect::Kind::area_mismatch, -1,
+            "the domain " + domain.to_string() + " has area " + fmt(domain.area()) +
+                ", expected a finite positive area (coordinates too large or too small for double "
+                "precision)");
+    return report;
+  }
   const double tol = options.relative_tolerance * mesh.domain().scale();
   const double h = mesh.h_avg();
   const double min_area = options.relative_min_area * h * h;
@@ -161,7 +177,7 @@ MeshValidationReport validate_mesh(const PolygonMesh& mesh, const MeshValidation
   const double area = mesh.total_area();
   const double domain_area = mesh.domain().area();
   const double mismatch = std::abs(area - domain_area) / domain_area;
-  if (mismatch > options.relative_area_tolerance)
+  if (!(mismatch <= options.relative_area_tolerance))  // NaN (an infinite cell area) fails too
     out.add(MeshDefect::Kind::area_mismatch, -1,
             "cells cover area " + fmt(area) + ", expected the domain's " + fmt(domain_area) +
                 " (relative difference " + fmt(mismatch) + ": " +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -77,6 +78,11 @@ class SceneObject {
     if (!has(key)) return fallback;
     const json& v = value_.at(key);
     if (!v.is_number_integer()) fail(key, "an integer", v);
+    // get<int>() would wrap silently (4294967299 -> 3): refuse what an int cannot hold.
+    constexpr int lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+    if (v.is_number_unsigned() ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)
+                               : v.get<std::int64_t>() < lo || v.get<std::int64_t>() > hi)
+      fail(key, "an integer in " + std::to_string(lo) + ".." + std::to_string(hi), v);
     return v.get<int>();
   }
   bool flag(const std::string& key, bool fallback) {

@@ -294,8 +294,9 @@ void expect_factors(const Scene& s, json run, const json& base, double base_erro
     run["l2_error"] = c.factor * base_error;
     const Verdict v = judge_run(s, run, {base, run});
     EXPECT_EQ(v.level, c.level) << s.baseline << " x" << c.factor << ": " << v.reason;
-    if (std::string(c.level) != "ok")
+    if (std::string(c.level) != "ok") {
       EXPECT_NE(v.reason.find("baseline (" + s.baseline + ")"), std::string::npos) << v.reason;
+    }
   }
 }
 

@@ -274,7 +274,11 @@ PolygonMesh read_vtu_text(const std::string& text, const std::string& source, co
   } else {
     Point lo = cells.points[0], hi = cells.points[0];
     for (const Point& p : cells.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    dom = Rectangle(lo.x(), lo.y(), hi.x(), hi.y());
+    try {
+      dom = Rectangle(lo.x(), lo.y(), hi.x(), hi.y());
+    } catch (const InputError& e) {  // all points on one line: name the file
+      throw InputError(source + ": no FieldData 'domain', and the bounding box of the points: " + e.what());
+    }
   }
   return PolygonMesh(dom, std::move(cells.points), std::move(cells.offsets),
                      std::move(cells.connectivity));

@@ -182,7 +182,6 @@ void ElementTable::release_point_values() {
   std::vector<FanPoint>().swap(fan_points_);
   std::vector<double>().swap(shape_);
   std::vector<Eigen::Vector2d>().swap(grad_);
-  released_ = true;
 }
 
 }  // namespace vorodg

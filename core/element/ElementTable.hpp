@@ -67,7 +67,6 @@ class ElementTable {
   /// then factors without them (at 1e6 cells, 3.6 GB). Afterwards only evaluate(), position(),
   /// weight() and the per-cell data are available.
   void release_point_values();
-  bool has_point_values() const { return !released_; }
 
  private:
   void build_cell(int c);
@@ -83,7 +82,6 @@ class ElementTable {
   std::vector<double> shape_;
   std::vector<Eigen::Vector2d> grad_;
   std::vector<double> defect_, rcond_, min_weight_;
-  bool released_ = false;
 };
 
 }  // namespace vorodg

@@ -9,17 +9,8 @@ InterfaceOperators::InterfaceOperators(const DgSpace& space, const ElasticityInt
     : space_(space), integrator_(integrator), table_(table) {
   const PolygonMesh& mesh = space.mesh();
   mean_stress_.resize(mesh.num_cells());
-  StrainOperator B;
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    Eigen::Matrix<double, 3, Eigen::Dynamic> mean = Eigen::MatrixXd::Zero(3, 2 * mesh.cell_size(c));
-    double area = 0.0;
-    for (int q = 0; q < table.num_points(c); ++q) {
-      integrator.strain_operator(c, q, B);
-      mean += table.weight(c, q) * B;
-      area += table.weight(c, q);
-    }
-    mean_stress_[c] = integrator.material().D() * (mean / area);
-  }
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    mean_stress_[c] = integrator.material().D() * integrator.mean_strain_operator(c);
 }
 
 std::vector<int> InterfaceOperators::dofs(const Interface& f) const {

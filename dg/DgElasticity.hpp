@@ -1,6 +1,6 @@
 #pragma once
 // Discontinuous Galerkin elasticity on disconnected RK polygons (report section 9; sign
-// conventions and the discretization of the multiplier as DESIGN.md fixes them). The bulk term
+// conventions and multiplier placement: docs/design.md "Discontinuous Galerkin"). The bulk term
 // is the shared cell-stiffness kernel, unchanged; the formulations differ in their interface
 // terms (eps = k_p E f(h), f(h) = 1/h, [u] = u_1 - u_2, n outward from cell 1):
 //   penalty:    a(u,v) + eps int [u].[v] = l(v)                                  (one solve)

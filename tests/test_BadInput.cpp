@@ -1,4 +1,4 @@
-// Bad input (issue 8), table-driven: every row of tests/data/bad/cases.json runs the built
+// Bad input, table-driven: every row of tests/data/bad/cases.json runs the built
 // program on one bad input (a .vtu mesh, a scene, a command-line value, an unwritable output) and
 // checks that it is refused cleanly:
 // - the expected exit code (2 bad input, 3 numerical breakdown), no signal, no abort;

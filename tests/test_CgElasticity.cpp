@@ -1,5 +1,5 @@
-// Continuous Galerkin elasticity (cg/CgElasticity) end to end, DESIGN.md "Formulations" and
-// "Verification problems":
+// Continuous Galerkin elasticity (cg/CgElasticity) end to end, docs/design.md "Continuous
+// Galerkin" and "Verification problems and error norms":
 // 1. Patch tests (patch, patch-mixed): with the divergence correction the affine field is
 //    reproduced to 1e-10 (L2, energy, nodal) on rcp, hex, perturbed-hex (r = 0.4), tri and quad;
 //    without it the test fails on rcp and perturbed hexagons (errors printed).

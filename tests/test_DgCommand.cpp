@@ -1,4 +1,4 @@
-// `vorodg solve --formulation dg-*` end to end (issue 5): a dg-nitsche beam run writes metrics with
+// `vorodg solve --formulation dg-*` end to end: a dg-nitsche beam run writes metrics with
 // every DG key (finite) and a .vtu with the cells drawn apart (points = the cells' vertex copies)
 // and "max_interface_gap"; every formulation runs; bad DG options exit 2 with one line on stderr
 // and write no files. (Split from test_DgElasticity.cpp, which tests the library.)

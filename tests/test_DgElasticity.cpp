@@ -1,4 +1,5 @@
-// Discontinuous Galerkin elasticity (dg/DgElasticity) end to end, DESIGN.md "Formulations":
+// Discontinuous Galerkin elasticity (dg/DgElasticity) end to end, docs/design.md "Discontinuous
+// Galerkin":
 // 1. Linear patch tests (patch, patch-mixed) on rcp and perturbed-hex (r = 0.3, 0.4) meshes:
 //    dg-al and dg-nitsche (tol 1e-12) reproduce the affine field to 1e-9 (L2, energy, nodal) and
 //    report "converged"; dg-sipg reproduces it to 1e-10 (symmetric at k_p = 1e3, mean-stress at

@@ -247,7 +247,7 @@ TEST(ElasticityIntegrator, MeanDilationKeepsTheAverageVolumetricOperator) {
 }
 
 TEST(ElasticityIntegrator, MeanDilationVolumetricStrainIsTheCellMeanAtEveryPoint) {
-  // B-bar replaces the volumetric part of the strain by its cell mean (DESIGN.md): the in-plane
+  // B-bar replaces the volumetric part of the strain by its cell mean (docs/design.md): in-plane
   // volumetric strain eps_xx + eps_yy of the B-bar operator (row 0 + row 1) must be the same at
   // every quadrature point of the cell, equal to the standard operator's cell average. In plane
   // strain eps_zz = 0, so eps_xx + eps_yy is the whole volumetric strain.

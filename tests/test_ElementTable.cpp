@@ -211,7 +211,7 @@ TEST(ElementTable, UncorrectedDefectIsReportedAndNonzeroOnGeneralPolygons) {
 
 TEST(ElementTable, RegularInteriorHexagonsHaveNoDefect) {
   // A hexagon whose vertex patches are all full regular hexagons away from the boundary: by
-  // symmetry the identity holds without correction (DESIGN.md, prototype notes).
+  // symmetry the identity holds without correction (docs/design.md, divergence correction).
   const ElementTable& t = table_of(kFamilies[1], 3, false);
   const PolygonMesh& mesh = t.mesh();
   int checked = 0;

@@ -1,5 +1,5 @@
-// Exact solutions of the verification problems (DESIGN.md, "Verification problems"):
-// - Timoshenko's beam: displacement and stress against the formulas of the design notes written
+// Exact solutions (docs/design.md, "Verification problems and error norms"):
+// - Timoshenko's beam: displacement and stress against the formulas of docs/design.md written
 //   out again here, zero body force (plane stress and plane strain), traction-free top and
 //   bottom, the end traction integrates to the load P (and carries no axial force or moment);
 //   gradients and hessians against central finite differences.

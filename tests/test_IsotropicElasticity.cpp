@@ -1,6 +1,6 @@
 // Isotropic linear elasticity (core/material/IsotropicElasticity): the plane-stress and
 // plane-strain constitutive matrices against their closed forms, the Lame constants, the
-// plane-strain <-> plane-stress conversion of DESIGN.md (E -> E/(1-nu^2), nu -> nu/(1-nu)),
+// plane-strain <-> plane-stress conversion of docs/design.md (E -> E/(1-nu^2), nu -> nu/(1-nu)),
 // positive definiteness up to nu -> 0.5, and rejection of E <= 0 and nu outside (-1, 0.5).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// `vorodg run` end to end (issue 6): a small scene through the program, the report files it
+// `vorodg run` end to end: a small scene through the program, the report files it
 // writes, a study killed half way and resumed giving the same summary.json as an uninterrupted
 // one, and scene validation (unknown keys named with a suggestion, wrong types, bad levels).
 #include <gtest/gtest.h>

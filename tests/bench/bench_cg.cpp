@@ -1,4 +1,4 @@
-// The whole CG pipeline on rcp meshes (issues 4, 7): beam, plane stress, default element
+// The whole CG pipeline on rcp meshes: beam, plane stress, default element
 // settings, two threads (the default of `vorodg solve` on this machine). Each benchmark iteration
 // runs every stage; the counters give the seconds of each stage (mesh, element, pattern, cell
 // matrices, assembly, cell means, analysis, factorization, solve, error), the factor's nonzeros

@@ -1,4 +1,4 @@
-// DG iteration cost against the factorization (issue 5): the beam on rcp meshes with dg-nitsche
+// DG iteration cost against the factorization: the beam on rcp meshes with dg-nitsche
 // and dg-al (k_p = 1e3 E); counters give the analysis and factorization seconds of a + eps P and
 // the seconds of one iteration (back-solve + interface-load update). Target at 1e5 cells: one
 // iteration <= 10% of the factorization.

@@ -1,4 +1,4 @@
-// Throughput of the RK element layer (issue 3), in cells per second (items_per_second), on rcp
+// Throughput of the RK element layer, in cells per second (items_per_second), on rcp
 // meshes of the 4 x 1 beam domain:
 //   BM_WeightFunctions/N/refinement/degree   the vertex-patch Poisson solves alone
 //   BM_ElementTable/N/refinement/degree      weights + quadrature + shape functions + correction

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/element/StrainOperator.hpp"
+
 namespace vorodg {
 
 InterfaceOperators::InterfaceOperators(const DgSpace& space, const ElasticityIntegrator& integrator,
@@ -70,13 +72,8 @@ InterfaceOperator InterfaceOperators::point_traction(const Interface& f, double 
     double psi[64];
     Eigen::Vector2d grad[64];
     table_.evaluate(c, FanPoint{fan, Eigen::Vector3d(0.0, 1.0 - along, along)}, psi, grad);
-    StrainOperator B = StrainOperator::Zero(3, 2 * n);
-    for (int k = 0; k < n; ++k) {
-      B(0, 2 * k) = grad[k].x();
-      B(1, 2 * k + 1) = grad[k].y();
-      B(2, 2 * k) = grad[k].y();
-      B(2, 2 * k + 1) = grad[k].x();
-    }
+    StrainOperator B;
+    strain_operator(grad, n, B);
     (s == 0 ? T.leftCols(m1) : T.rightCols(m2)) = 0.5 * N * D * B;
   }
   return T;

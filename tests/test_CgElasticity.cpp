@@ -37,6 +37,7 @@
 #include "verification/ErrorNorms.hpp"
 #include "verification/SolveRun.hpp"
 #include "verification/problems/AffineField.hpp"
+#include "verification/problems/ManufacturedSolution.hpp"
 #include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {

@@ -20,6 +20,7 @@
 #include "support/ElementTestMeshes.hpp"
 #include "verification/ErrorNorms.hpp"
 #include "verification/problems/AffineField.hpp"
+#include "verification/problems/ManufacturedSolution.hpp"
 #include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {

@@ -16,6 +16,7 @@
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/util/Errors.hpp"
 #include "verification/problems/AffineField.hpp"
+#include "verification/problems/ManufacturedSolution.hpp"
 #include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {

@@ -8,6 +8,7 @@
 #include "core/util/Format.hpp"
 #include "verification/ErrorNorms.hpp"
 #include "verification/problems/AffineField.hpp"
+#include "verification/problems/ManufacturedSolution.hpp"
 #include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {

@@ -10,14 +10,7 @@ ElasticityIntegrator::ElasticityIntegrator(const ElementTable& table,
 
 void ElasticityIntegrator::strain_operator(int c, int q, StrainOperator& B) const {
   const int n = table_.num_nodes(c);
-  B.setZero(3, 2 * n);
-  for (int k = 0; k < n; ++k) {
-    const Eigen::Vector2d& g = table_.grad(c, q, k);
-    B(0, 2 * k) = g.x();
-    B(1, 2 * k + 1) = g.y();
-    B(2, 2 * k) = g.y();
-    B(2, 2 * k + 1) = g.x();
-  }
+  vorodg::strain_operator(&table_.grad(c, q, 0), n, B);  // the gradients of (c, q) are contiguous
   if (!mean_dilation_) return;
   // B-bar: the in-plane dilatation eps_xx + eps_yy (all of the volumetric strain in plane
   // strain, where eps_zz = 0) is replaced by its cell mean: each of the two normal strains takes

@@ -7,11 +7,10 @@
 #include <vector>
 
 #include "core/element/ElementTable.hpp"
+#include "core/element/StrainOperator.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 
 namespace vorodg {
-
-using StrainOperator = Eigen::Matrix<double, 3, Eigen::Dynamic>;
 
 class ElasticityIntegrator {
  public:

@@ -65,22 +65,30 @@ bool star_shaped_about(std::span<const Point> loop, const Point& c, double min_a
   return true;
 }
 
-double min_interior_angle(std::span<const Point> loop) {
+double interior_angle(std::span<const Point> loop, std::size_t i) {
   const std::size_t n = loop.size();
+  const Point& here = loop[i];
+  const Point a = loop[(i + 1) % n] - here;
+  const Point b = loop[(i + n - 1) % n] - here;
+  // Angle swept counter-clockwise from (next - here) to (prev - here): the interior angle
+  // of a counter-clockwise loop.
+  double angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+  if (angle < 0) angle += 2.0 * std::numbers::pi;
+  return angle;
+}
+
+double min_interior_angle(std::span<const Point> loop) {
   double smallest = 2.0 * std::numbers::pi;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point& prev = loop[(i + n - 1) % n];
-    const Point& here = loop[i];
-    const Point& next = loop[(i + 1) % n];
-    const Point a = next - here;
-    const Point b = prev - here;
-    // Angle swept counter-clockwise from (next - here) to (prev - here): the interior angle
-    // of a counter-clockwise loop.
-    double angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-    if (angle < 0) angle += 2.0 * std::numbers::pi;
-    smallest = std::min(smallest, angle);
-  }
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    smallest = std::min(smallest, interior_angle(loop, i));
   return smallest;
+}
+
+double max_interior_angle(std::span<const Point> loop) {
+  double largest = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    largest = std::max(largest, interior_angle(loop, i));
+  return largest;
 }
 
 double distance_to_segment(const Point& p, const Point& a, const Point& b) {

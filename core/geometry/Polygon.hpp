@@ -24,8 +24,12 @@ bool self_intersects(std::span<const Point> loop);
 /// True if every fan triangle (c, v_i, v_i+1) is counter-clockwise with area above
 /// `min_area`: the loop is star-shaped with respect to c (c lies in its kernel).
 bool star_shaped_about(std::span<const Point> loop, const Point& c, double min_area);
+/// Interior angle at vertex i of a counter-clockwise loop, in [0, 2 pi) radians.
+double interior_angle(std::span<const Point> loop, std::size_t i);
 /// Smallest interior angle in radians (reflex angles count as their interior value).
 double min_interior_angle(std::span<const Point> loop);
+/// Largest interior angle in radians.
+double max_interior_angle(std::span<const Point> loop);
 /// True if closed segments [p1,p2] and [q1,q2] share a point.
 bool segments_intersect(const Point& p1, const Point& p2, const Point& q1, const Point& q2);
 /// Distance from p to the segment [a, b].

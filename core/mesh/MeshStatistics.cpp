@@ -35,14 +35,7 @@ MeshStatistics compute_statistics(const PolygonMesh& mesh) {
     const auto pts = mesh.cell_points(c);
     area += polygon::signed_area(pts);
     min_angle = std::min(min_angle, polygon::min_interior_angle(pts));
-    // Largest interior angle: 2*pi minus the smallest angle of the reversed loop's exterior.
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      const Point& prev = pts[(i + pts.size() - 1) % pts.size()];
-      const Point a = pts[(i + 1) % pts.size()] - pts[i], b = prev - pts[i];
-      double angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-      if (angle < 0) angle += 2 * std::numbers::pi;
-      max_angle = std::max(max_angle, angle);
-    }
+    max_angle = std::max(max_angle, polygon::max_interior_angle(pts));
   }
   s.min_interior_angle_deg = mesh.num_cells() ? min_angle * 180.0 / std::numbers::pi : 0.0;
   s.max_interior_angle_deg = max_angle * 180.0 / std::numbers::pi;

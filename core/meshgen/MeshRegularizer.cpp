@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <numbers>
 #include <queue>
+#include <span>
 #include <tuple>
 
 #include "core/geometry/Polygon.hpp"
@@ -15,6 +15,29 @@ namespace {
 // A corner counts as reflex when it bends the wrong way by more than this (relative).
 constexpr double kConvexTolerance = 1e-9;
 constexpr unsigned kLeft = 1u, kRight = 2u, kBottom = 4u, kTop = 8u;
+
+/// The mesh of `loops` (cells in this order) over `positions`, like `like` in domain and tagging,
+/// without the vertices no loop uses. Vertices keep their relative input order, which keeps
+/// generation deterministic.
+PolygonMesh compact_mesh(const PolygonMesh& like, std::span<const Point> positions,
+                         const std::vector<std::span<const int>>& loops) {
+  std::vector<int> new_id(positions.size(), -1);
+  for (auto loop : loops)
+    for (int v : loop) new_id[v] = 0;
+  std::vector<Point> vertices;
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    if (new_id[v] == 0) {
+      new_id[v] = static_cast<int>(vertices.size());
+      vertices.push_back(positions[v]);
+    }
+  std::vector<int> offsets{0}, cells;
+  for (auto loop : loops) {
+    for (int v : loop) cells.push_back(new_id[v]);
+    offsets.push_back(static_cast<int>(cells.size()));
+  }
+  return PolygonMesh(like.domain(), std::move(vertices), std::move(offsets), std::move(cells),
+                     like.tag_tolerance());
+}
 
 // Mutable copy of a mesh in which edges collapse: cells keep their CSR slots and shrink in place,
 // merged vertices form union-find classes whose cells are the union of their members' cells.
@@ -184,43 +207,15 @@ bool CollapsibleMesh::try_collapse(int a, int b, int min_sides) {
 }
 
 PolygonMesh CollapsibleMesh::build() const {
-  std::vector<int> new_id(pos_.size(), -1);
-  std::vector<Point> vertices;
-  std::vector<int> offsets{0};
-  std::vector<int> cells;
-  cells.reserve(loop_.size());
-  // Vertices keep the relative order of the input, which keeps generation deterministic.
+  std::vector<std::span<const int>> loops;
   for (int c = 0; c < mesh_.num_cells(); ++c)
-    for (int k = 0; k < len_[c]; ++k) new_id[loop_[mesh_.offsets()[c] + k]] = 0;
-  for (std::size_t v = 0; v < pos_.size(); ++v)
-    if (new_id[v] == 0) {
-      new_id[v] = static_cast<int>(vertices.size());
-      vertices.push_back(pos_[v]);
-    }
-  for (int c = 0; c < mesh_.num_cells(); ++c) {
-    for (int k = 0; k < len_[c]; ++k) cells.push_back(new_id[loop_[mesh_.offsets()[c] + k]]);
-    offsets.push_back(static_cast<int>(cells.size()));
-  }
-  return PolygonMesh(mesh_.domain(), std::move(vertices), std::move(offsets), std::move(cells),
-                     mesh_.tag_tolerance());
+    loops.emplace_back(&loop_[mesh_.offsets()[c]], len_[c]);
+  return compact_mesh(mesh_, pos_, loops);
 }
 
 }  // namespace
 
 namespace {
-
-/// Largest interior angle of a counter-clockwise loop, in radians.
-double max_interior_angle(const std::vector<Point>& pts) {
-  double largest = 0.0;
-  const std::size_t n = pts.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Point a = pts[(k + 1) % n] - pts[k], b = pts[(k + n - 1) % n] - pts[k];
-    double angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-    if (angle < 0) angle += 2 * std::numbers::pi;
-    largest = std::max(largest, angle);
-  }
-  return largest;
-}
 
 bool acceptable_cell(const std::vector<Point>& pts) {
   const double area = polygon::signed_area(pts);
@@ -295,7 +290,7 @@ PolygonMesh merge_small_cells(const PolygonMesh& mesh, int min_sides, int max_si
       std::vector<Point> pts;
       for (int v : loop) pts.push_back(mesh.vertex(v));
       if (!acceptable_cell(pts)) continue;
-      const double angle = max_interior_angle(pts);
+      const double angle = polygon::max_interior_angle(pts);
       if (best >= 0 && std::make_pair(angle, loop.size()) >= std::make_pair(best_angle, best_loop.size()))
         continue;
       best = nb;
@@ -309,25 +304,10 @@ PolygonMesh merge_small_cells(const PolygonMesh& mesh, int min_sides, int max_si
     ++merged;
   }
   if (merged == 0) return mesh;
-  // Renumber: cells keep their order, vertices that no loop uses any more are dropped.
-  std::vector<int> new_id(mesh.num_vertices(), -1);
+  std::vector<std::span<const int>> kept;
   for (int c = 0; c < mesh.num_cells(); ++c)
-    if (!removed[c])
-      for (int v : loops[c]) new_id[v] = 0;
-  std::vector<Point> vertices;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (new_id[v] == 0) {
-      new_id[v] = static_cast<int>(vertices.size());
-      vertices.push_back(mesh.vertex(v));
-    }
-  std::vector<int> offsets{0}, cells;
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (removed[c]) continue;
-    for (int v : loops[c]) cells.push_back(new_id[v]);
-    offsets.push_back(static_cast<int>(cells.size()));
-  }
-  return PolygonMesh(mesh.domain(), std::move(vertices), std::move(offsets), std::move(cells),
-                     mesh.tag_tolerance());
+    if (!removed[c]) kept.emplace_back(loops[c]);
+  return compact_mesh(mesh, mesh.vertices(), kept);
 }
 
 RegularizationResult regularize_mesh(const PolygonMesh& mesh, double threshold, int min_sides,

@@ -47,16 +47,7 @@ class SampleGrid {
   /// for which every distance comparison is false, so they need no test of their own.
   template <class F>
   bool any_neighbor(int cell, F&& f) const {
-    const int ci = cell % nx_, cj = cell / nx_;
-    const int j0 = std::max(cj - 2, 0), j1 = std::min(cj + 2, ny_ - 1);
-    for (int j = j0; j <= j1; ++j) {
-      const int reach = (j == cj - 2 || j == cj + 2) ? 1 : 2;
-      const int i0 = std::max(ci - reach, 0), i1 = std::min(ci + reach, nx_ - 1);
-      const Point* row = cells_.data() + static_cast<std::size_t>(j) * nx_;
-      for (int i = i0; i <= i1; ++i)
-        if (f(row[i])) return true;
-    }
-    return false;
+    return for_each_neighbor_cell(cell, [&](int k) { return f(cells_[k]); });
   }
 
   /// Calls f(cell index) for the 21 neighbour cells of `cell` (including itself) until f

@@ -1,231 +1,121 @@
+// The .vtu reader (parse_vtu, read_vtu, read_vtu_text of VtuMesh.hpp); the data arrays are decoded
+// by VtuArrayDecoder, the writer is VtuWriter.cpp.
 #include "core/io/VtuMesh.hpp"
 
 #include <pugixml.hpp>
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/io/VtuDataArray.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
 namespace {
 
 constexpr int kVtkTriangle = 5, kVtkPolygon = 7, kVtkPixel = 8, kVtkQuad = 9;
+constexpr int kMaxComponents = 1024;
+constexpr std::string_view kAppendedClose = "</AppendedData>";
 
-class TextBuilder {
- public:
-  explicit TextBuilder(std::size_t reserve) { text_.reserve(reserve); }
-  TextBuilder& operator<<(std::string_view s) {
-    text_.append(s);
-    return *this;
-  }
-  /// Shortest decimal form that reads back to the same double: deterministic and exact.
-  void number(double x) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-    text_.append(buf, end);
-  }
-  void number(long long x) {
-    char buf[24];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-    text_.append(buf, end);
-  }
-  std::string take() { return std::move(text_); }
-
- private:
-  std::string text_;
+/// Raw appended data is not XML: the parser gets the text with <AppendedData> emptied, and the
+/// arrays read the bytes after its opening '_' directly, by offset.
+struct SplitText {
+  bool has_appended = false;
+  std::string xml;            // the text without the appended data (if there is any)
+  std::string_view appended;  // the bytes after the '_'
 };
 
-void write_field(TextBuilder& out, const VtuField& field, std::size_t count, const char* where) {
-  if (field.values.size() != count * field.components)
-    throw InputError(std::string("vtu ") + where + " field '" + field.name + "': " +
-                     std::to_string(field.values.size()) + " values, expected " +
-                     std::to_string(count * field.components));
-  for (double v : field.values)
-    if (!std::isfinite(v))
-      throw NumericalError(std::string("vtu ") + where + " field '" + field.name +
-                           "' holds a non-finite value; refusing to write it");
-  out << "        <DataArray type=\"Float64\" Name=\"" << field.name
-      << "\" NumberOfComponents=\"" << std::to_string(field.components) << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < field.values.size(); ++i) {
-    out << ((i % field.components == 0) ? (i ? "\n          " : "          ") : " ");
-    out.number(field.values[i]);
-  }
-  out << "\n        </DataArray>\n";
+SplitText split_appended(const std::string& text, const VtuArrayDecoder& d) {
+  SplitText s;
+  const std::size_t open = text.find("<AppendedData");
+  const std::size_t tag_end = open == std::string::npos ? open : text.find('>', open);
+  if (tag_end == std::string::npos || text[tag_end - 1] == '/') return s;  // the parser decides
+  std::size_t at = tag_end + 1;
+  while (at < text.size() && std::string_view(" \t\r\n").find(text[at]) != std::string_view::npos)
+    ++at;
+  if (at == text.size() || text[at] != '_')
+    d.fail("<AppendedData> does not begin with '_', expected '_' before the data");
+  // The last closing tag: raw data may contain any bytes, "</AppendedData>" among them.
+  const std::size_t close = text.rfind(kAppendedClose);
+  if (close == std::string::npos || close < at)
+    d.fail("<AppendedData> has no closing </AppendedData> after its data (truncated file?)");
+  s.has_appended = true;
+  s.appended = std::string_view(text).substr(at + 1, close - at - 1);
+  s.xml = text.substr(0, tag_end + 1) + text.substr(close);
+  return s;
 }
 
-}  // namespace
-
-std::string vtu_text(const PolygonMesh& mesh, const VtuFields& fields) {
-  TextBuilder out(64 * static_cast<std::size_t>(mesh.num_vertices() + mesh.num_cells()) + 4096);
-  out << "<?xml version=\"1.0\"?>\n"
-         "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-         "  <UnstructuredGrid>\n"
-         "    <FieldData>\n"
-         "      <DataArray type=\"Float64\" Name=\"domain\" NumberOfTuples=\"4\" format=\"ascii\">";
-  const Rectangle& d = mesh.domain();
-  for (double x : {d.x0(), d.y0(), d.x1(), d.y1()}) {
-    out << " ";
-    out.number(x);
-  }
-  out << " </DataArray>\n    </FieldData>\n";
-  out << "    <Piece NumberOfPoints=\"" << std::to_string(mesh.num_vertices())
-      << "\" NumberOfCells=\"" << std::to_string(mesh.num_cells()) << "\">\n";
-  out << "      <PointData>\n";
-  for (const auto& f : fields.point_data) write_field(out, f, mesh.num_vertices(), "point");
-  out << "      </PointData>\n      <CellData>\n";
-  for (const auto& f : fields.cell_data) write_field(out, f, mesh.num_cells(), "cell");
-  out << "      </CellData>\n      <Points>\n"
-         "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const Point& p : mesh.vertices()) {
-    out << "          ";
-    out.number(p.x());
-    out << " ";
-    out.number(p.y());
-    out << " 0\n";
-  }
-  out << "        </DataArray>\n      </Points>\n      <Cells>\n"
-         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    out << "         ";
-    for (int v : mesh.cell_vertices(c)) {
-      out << " ";
-      out.number(static_cast<long long>(v));
-    }
-    out << "\n";
-  }
-  out << "        </DataArray>\n"
-         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    out << ((c % 16 == 0) ? (c ? "\n          " : "          ") : " ");
-    out.number(static_cast<long long>(mesh.offsets()[c + 1]));
-  }
-  out << "\n        </DataArray>\n"
-         "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (int c = 0; c < mesh.num_cells(); ++c)
-    out << ((c % 32 == 0) ? (c ? "\n          7" : "          7") : " 7");
-  out << "\n        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-  return out.take();
-}
-
-void write_vtu(const std::filesystem::path& path, const PolygonMesh& mesh, const VtuFields& fields) {
-  write_file_atomically(path, vtu_text(mesh, fields));
-}
-
-namespace {
-
-class VtuParser {
- public:
-  explicit VtuParser(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(source_ + ": " + what);
-  }
-
-  template <class T>
-  std::vector<T> numbers(const pugi::xml_node& array, const std::string& name) const {
-    const std::string format = array.attribute("format").as_string("ascii");
-    if (format != "ascii")
-      fail("DataArray '" + name + "' has format=\"" + format +
-           "\", expected \"ascii\" (binary and appended data are not supported)");
-    const char* p = array.child_value();
-    const char* end = p + std::char_traits<char>::length(p);
-    std::vector<T> values;
-    while (true) {
-      while (p < end && (*p == ' ' || *p == '\n' || *p == '\t' || *p == '\r')) ++p;
-      if (p == end) break;
-      T x{};
-      auto [next, ec] = std::from_chars(p, end, x);
-      if (ec != std::errc() || (next < end && !std::isspace(static_cast<unsigned char>(*next))))
-        fail("DataArray '" + name + "' entry " + std::to_string(values.size()) +
-             " is not a valid number");
-      if constexpr (std::is_floating_point_v<T>)
-        if (!std::isfinite(x))
-          fail("DataArray '" + name + "' entry " + std::to_string(values.size()) +
-               " is not finite");
-      values.push_back(x);
-      p = next;
-    }
-    return values;
-  }
-
-  pugi::xml_node named_array(const pugi::xml_node& parent, const char* name) const {
-    for (auto a : parent.children("DataArray"))
-      if (std::string(a.attribute("Name").as_string()) == name) return a;
-    fail(std::string("<Cells> has no DataArray Name=\"") + name + "\"");
-  }
-
- private:
-  std::string source_;
-};
-
-long long count_attribute(const VtuParser& parser, const pugi::xml_node& piece, const char* name) {
+long long count_attribute(const VtuArrayDecoder& d, const pugi::xml_node& piece, const char* name) {
   const auto attr = piece.attribute(name);
   long long value = -1;
   const std::string text = attr.as_string();
   auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (!attr || ec != std::errc() || value < 0 || value > std::numeric_limits<int>::max() / 8)
-    parser.fail(std::string("<Piece> attribute ") + name + "=\"" + text +
-                "\", expected a non-negative integer");
+    d.fail(std::string("<Piece> attribute ") + name + "=\"" + text +
+           "\", expected a non-negative integer");
   return value;
 }
 
-}  // namespace
+pugi::xml_node named_array(const VtuArrayDecoder& d, const pugi::xml_node& parent,
+                           const char* name) {
+  for (auto a : parent.children("DataArray"))
+    if (std::string_view(a.attribute("Name").as_string()) == name) return a;
+  d.fail(std::string("<Cells> has no DataArray Name=\"") + name + "\"");
+}
 
-VtuCells parse_vtu(const std::string& text, const std::string& source) {
-  VtuParser parser(source);
-  pugi::xml_document doc;
-  const auto parsed = doc.load_buffer(text.data(), text.size());
-  if (!parsed)
-    parser.fail(std::string("not well-formed XML (") + parsed.description() + " at byte " +
-                std::to_string(parsed.offset) + ")");
-  const auto root = doc.child("VTKFile");
-  if (!root || std::string(root.attribute("type").as_string()) != "UnstructuredGrid")
-    parser.fail("expected a <VTKFile type=\"UnstructuredGrid\"> root element");
-  const auto piece = root.child("UnstructuredGrid").child("Piece");
-  if (!piece) parser.fail("no <UnstructuredGrid><Piece> element");
-  if (piece.next_sibling("Piece")) parser.fail("more than one <Piece>, expected exactly one");
-  const long long n_points = count_attribute(parser, piece, "NumberOfPoints");
-  const long long n_cells = count_attribute(parser, piece, "NumberOfCells");
+/// The numeric arrays under <PointData> or <CellData>, `count` tuples each (String and Bit arrays
+/// are not numbers and are left out).
+std::vector<VtuField> read_fields(const VtuArrayDecoder& d, const pugi::xml_node& parent,
+                                  long long count, const char* where) {
+  std::vector<VtuField> fields;
+  for (auto a : parent.children("DataArray")) {
+    if (!VtuArrayDecoder::numeric(a)) continue;
+    VtuField f{a.attribute("Name").as_string(), a.attribute("NumberOfComponents").as_int(1), {}};
+    const std::string what = std::string(where) + " array '" + f.name + "'";
+    if (f.components < 1 || f.components > kMaxComponents)
+      d.fail(what + " has NumberOfComponents=" + std::to_string(f.components) + ", expected 1.." +
+             std::to_string(kMaxComponents));
+    f.values = d.reals(a, f.name, false);
+    if (static_cast<long long>(f.values.size()) != count * f.components)
+      d.fail(what + " holds " + std::to_string(f.values.size()) + " numbers, expected " +
+             std::to_string(count * f.components) + " (" + std::to_string(count) + " x " +
+             std::to_string(f.components) + " components)");
+    fields.push_back(std::move(f));
+  }
+  return fields;
+}
 
-  const auto points_array = piece.child("Points").child("DataArray");
-  if (!points_array) parser.fail("no <Points><DataArray> element");
-  const int components = points_array.attribute("NumberOfComponents").as_int(1);
-  if (components != 2 && components != 3)
-    parser.fail("<Points> has NumberOfComponents=" + std::to_string(components) + ", expected 3");
-  const auto xyz = parser.numbers<double>(points_array, "Points");
-  if (static_cast<long long>(xyz.size()) != n_points * components)
-    parser.fail("<Points> holds " + std::to_string(xyz.size()) + " numbers, expected " +
-                std::to_string(n_points * components) + " for NumberOfPoints=" +
-                std::to_string(n_points));
-
-  const auto cells = piece.child("Cells");
-  if (!cells) parser.fail("no <Cells> element");
-  const auto conn = parser.numbers<long long>(parser.named_array(cells, "connectivity"), "connectivity");
-  const auto offs = parser.numbers<long long>(parser.named_array(cells, "offsets"), "offsets");
-  const auto types = parser.numbers<int>(parser.named_array(cells, "types"), "types");
-  if (static_cast<long long>(offs.size()) != n_cells || static_cast<long long>(types.size()) != n_cells)
-    parser.fail("offsets/types hold " + std::to_string(offs.size()) + "/" +
-                std::to_string(types.size()) + " entries, expected NumberOfCells=" +
-                std::to_string(n_cells));
-
-  VtuCells out;
-  for (auto a : root.child("UnstructuredGrid").child("FieldData").children("DataArray"))
-    if (std::string(a.attribute("Name").as_string()) == "domain") {
-      const auto v = parser.numbers<double>(a, "domain");
-      if (v.size() != 4) parser.fail("FieldData 'domain' holds " + std::to_string(v.size()) +
-                                     " numbers, expected 4 (x0 y0 x1 y1)");
+std::optional<Rectangle> read_domain(const VtuArrayDecoder& d, const pugi::xml_node& grid) {
+  std::optional<Rectangle> domain;
+  for (auto a : grid.child("FieldData").children("DataArray"))
+    if (std::string_view(a.attribute("Name").as_string()) == "domain") {
+      const auto v = d.reals(a, "domain", true);
+      if (v.size() != 4)
+        d.fail("FieldData 'domain' holds " + std::to_string(v.size()) +
+               " numbers, expected 4 (x0 y0 x1 y1)");
       try {
-        out.domain = Rectangle(v[0], v[1], v[2], v[3]);
+        domain = Rectangle(v[0], v[1], v[2], v[3]);
       } catch (const InputError& e) {
-        parser.fail(std::string("FieldData 'domain': ") + e.what());
+        d.fail(std::string("FieldData 'domain': ") + e.what());
       }
     }
-  out.points.reserve(n_points);
-  for (long long i = 0; i < n_points; ++i) out.points.emplace_back(xyz[components * i], xyz[components * i + 1]);
+  return domain;
+}
+
+/// Checks the cells and converts them to counter-clockwise loops in CSR form.
+void read_cells(const VtuArrayDecoder& d, const pugi::xml_node& cells, long long n_points,
+                long long n_cells, VtuCells& out) {
+  const auto conn = d.integers(named_array(d, cells, "connectivity"), "connectivity");
+  const auto offs = d.integers(named_array(d, cells, "offsets"), "offsets");
+  const auto types = d.integers(named_array(d, cells, "types"), "types");
+  if (static_cast<long long>(offs.size()) != n_cells ||
+      static_cast<long long>(types.size()) != n_cells)
+    d.fail("offsets/types hold " + std::to_string(offs.size()) + "/" +
+           std::to_string(types.size()) +
+           " entries, expected NumberOfCells=" + std::to_string(n_cells));
   out.offsets.reserve(n_cells + 1);
   out.offsets.push_back(0);
   out.connectivity.reserve(conn.size());
@@ -234,27 +124,89 @@ VtuCells parse_vtu(const std::string& text, const std::string& source) {
     const long long end = offs[c];
     const std::string cell = "cell " + std::to_string(c);
     if (end <= begin || end > static_cast<long long>(conn.size()))
-      parser.fail(cell + ": offset " + std::to_string(end) + " out of order or beyond the " +
-                  std::to_string(conn.size()) + " connectivity entries");
-    const int t = types[c];
+      d.fail(cell + ": offset " + std::to_string(end) + " out of order or beyond the " +
+             std::to_string(conn.size()) + " connectivity entries");
+    const long long t = types[c];
     const long long n = end - begin;
     const bool ok = (t == kVtkPolygon && n >= 3) || (t == kVtkTriangle && n == 3) ||
                     ((t == kVtkQuad || t == kVtkPixel) && n == 4);
     if (!ok)
-      parser.fail(cell + ": VTK cell type " + std::to_string(t) + " with " + std::to_string(n) +
-                  " vertices, expected a polygon (7), triangle (5), pixel (8) or quad (9)");
-    std::vector<int> loop;
+      d.fail(cell + ": VTK cell type " + std::to_string(t) + " with " + std::to_string(n) +
+             " vertices, expected a polygon (7), triangle (5), pixel (8) or quad (9)");
+    const std::size_t first = out.connectivity.size();
     for (long long k = begin; k < end; ++k) {
       if (conn[k] < 0 || conn[k] >= n_points)
-        parser.fail(cell + ": vertex index " + std::to_string(conn[k]) + " out of range 0.." +
-                    std::to_string(n_points - 1));
-      loop.push_back(static_cast<int>(conn[k]));
+        d.fail(cell + ": vertex index " + std::to_string(conn[k]) + " out of range 0.." +
+               std::to_string(n_points - 1));
+      out.connectivity.push_back(static_cast<int>(conn[k]));
     }
-    if (t == kVtkPixel) std::swap(loop[2], loop[3]);  // pixels are numbered row by row
-    out.connectivity.insert(out.connectivity.end(), loop.begin(), loop.end());
+    // Pixels are numbered row by row; swap the last two for a counter-clockwise loop.
+    if (t == kVtkPixel) std::swap(out.connectivity[first + 2], out.connectivity[first + 3]);
     out.offsets.push_back(static_cast<int>(out.connectivity.size()));
     begin = end;
   }
+}
+
+VtuBinaryFormat binary_format(const pugi::xml_node& root, const SplitText& split) {
+  VtuBinaryFormat format;
+  format.header_type = root.attribute("header_type").as_string("UInt32");
+  format.compressor = root.attribute("compressor").as_string("");
+  format.byte_order = root.attribute("byte_order").as_string("LittleEndian");
+  format.has_appended = split.has_appended;
+  format.appended = split.appended;
+  format.appended_encoding = root.child("AppendedData").attribute("encoding").as_string("raw");
+  return format;
+}
+
+std::vector<Point> read_points(const VtuArrayDecoder& d, const pugi::xml_node& piece,
+                               long long n_points) {
+  const auto array = piece.child("Points").child("DataArray");
+  if (!array) d.fail("no <Points><DataArray> element");
+  const int components = array.attribute("NumberOfComponents").as_int(1);
+  if (components != 2 && components != 3)
+    d.fail("<Points> has NumberOfComponents=" + std::to_string(components) + ", expected 3");
+  const auto xyz = d.reals(array, "Points", true);
+  if (static_cast<long long>(xyz.size()) != n_points * components)
+    d.fail("<Points> holds " + std::to_string(xyz.size()) + " numbers, expected " +
+           std::to_string(n_points * components) +
+           " for NumberOfPoints=" + std::to_string(n_points));
+  std::vector<Point> points;
+  points.reserve(n_points);
+  for (long long i = 0; i < n_points; ++i)
+    points.emplace_back(xyz[components * i], xyz[components * i + 1]);
+  return points;
+}
+
+}  // namespace
+
+VtuCells parse_vtu(const std::string& text, const std::string& source) {
+  const VtuArrayDecoder plain(source, {});  // for the errors found before the format is known
+  const SplitText split = split_appended(text, plain);
+  const std::string& xml = split.has_appended ? split.xml : text;
+  pugi::xml_document doc;
+  const auto parsed = doc.load_buffer(xml.data(), xml.size());
+  if (!parsed)
+    plain.fail(std::string("not well-formed XML (") + parsed.description() + " at byte " +
+               std::to_string(parsed.offset) + ")");
+  const auto root = doc.child("VTKFile");
+  if (!root || std::string_view(root.attribute("type").as_string()) != "UnstructuredGrid")
+    plain.fail("expected a <VTKFile type=\"UnstructuredGrid\"> root element");
+  const VtuArrayDecoder d(source, binary_format(root, split));
+
+  const auto grid = root.child("UnstructuredGrid");
+  const auto piece = grid.child("Piece");
+  if (!piece) d.fail("no <UnstructuredGrid><Piece> element");
+  if (piece.next_sibling("Piece")) d.fail("more than one <Piece>, expected exactly one");
+  const long long n_points = count_attribute(d, piece, "NumberOfPoints");
+  const long long n_cells = count_attribute(d, piece, "NumberOfCells");
+  VtuCells out;
+  out.points = read_points(d, piece, n_points);
+  const auto cells = piece.child("Cells");
+  if (!cells) d.fail("no <Cells> element");
+  read_cells(d, cells, n_points, n_cells, out);
+  out.domain = read_domain(d, grid);
+  out.fields.point_data = read_fields(d, piece.child("PointData"), n_points, "PointData");
+  out.fields.cell_data = read_fields(d, piece.child("CellData"), n_cells, "CellData");
   return out;
 }
 
@@ -262,7 +214,8 @@ PolygonMesh read_vtu(const std::filesystem::path& path, const Rectangle* domain)
   return read_vtu_text(read_file(path), path.string(), domain);
 }
 
-PolygonMesh read_vtu_text(const std::string& text, const std::string& source, const Rectangle* domain) {
+PolygonMesh read_vtu_text(const std::string& text, const std::string& source,
+                          const Rectangle* domain) {
   VtuCells cells = parse_vtu(text, source);
   if (cells.points.empty() || cells.offsets.size() < 2)
     throw InputError(source + ": the mesh is empty (no points or no cells)");
@@ -277,7 +230,8 @@ PolygonMesh read_vtu_text(const std::string& text, const std::string& source, co
     try {
       dom = Rectangle(lo.x(), lo.y(), hi.x(), hi.y());
     } catch (const InputError& e) {  // all points on one line: name the file
-      throw InputError(source + ": no FieldData 'domain', and the bounding box of the points: " + e.what());
+      throw InputError(source +
+                       ": no FieldData 'domain', and the bounding box of the points: " + e.what());
     }
   }
   return PolygonMesh(dom, std::move(cells.points), std::move(cells.offsets),

@@ -1,7 +1,8 @@
 // libFuzzer target: a .vtu file read as `vorodg mesh --check` reads it (read_vtu, then
-// validate_mesh). Findings: crashes, sanitizer reports, exceptions other than our error types,
-// hangs, and a mesh the validator passes although its geometry is not finite and positive, or
-// that does not survive a write and read back unchanged.
+// validate_mesh), with ASCII, base64 binary or appended data, zlib-compressed or not. Findings:
+// crashes, sanitizer reports, exceptions other than our error types, hangs, and a mesh the
+// validator passes although its geometry is not finite and positive, or that does not survive a
+// write and read back unchanged (binary and ASCII).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -40,17 +41,20 @@ void check_valid_mesh(const PolygonMesh& mesh) {
     require(e.cell0 >= 0 && e.cell0 < mesh.num_cells() && e.cell1 < mesh.num_cells(), "valid mesh, edge cell out of range");
     require(!e.on_boundary() || e.side != Side::none, "valid mesh with a boundary edge on no side");
   }
-  // What vorodg writes it reads back unchanged.
-  PolygonMesh back;
-  try {
-    back = read_vtu_text(vtu_text(mesh), "round trip");
-  } catch (const std::exception& e) {
-    fuzz::finding(std::string("valid mesh written and read back: ") + e.what());
+  // What vorodg writes it reads back unchanged, in both encodings.
+  for (VtuEncoding encoding : {VtuEncoding::binary_zlib, VtuEncoding::ascii}) {
+    const char* name = encoding == VtuEncoding::ascii ? "ascii" : "binary";
+    PolygonMesh back;
+    try {
+      back = read_vtu_text(vtu_text(mesh, {}, encoding), "round trip");
+    } catch (const std::exception& e) {
+      fuzz::finding(std::string("valid mesh written (") + name + ") and read back: " + e.what());
+    }
+    require(back.vertices() == mesh.vertices() && back.offsets() == mesh.offsets() &&
+                back.cell_vertex_list() == mesh.cell_vertex_list() &&
+                back.domain().lo() == d.lo() && back.domain().hi() == d.hi(),
+            std::string("valid mesh changed in a write (") + name + ") and read back");
   }
-  require(back.vertices() == mesh.vertices() && back.offsets() == mesh.offsets() &&
-              back.cell_vertex_list() == mesh.cell_vertex_list() &&
-              back.domain().lo() == d.lo() && back.domain().hi() == d.hi(),
-          "valid mesh changed in a write and read back");
 }
 
 }  // namespace

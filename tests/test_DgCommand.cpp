@@ -76,8 +76,9 @@ const std::vector<std::string> kBeamArgs = {"solve", "--family", "rcp", "--d", "
 TEST_F(DgCommand, NitscheBeamWritesMetricsAndExplodedResult) {
   const fs::path out = dir_ / "result.vtu", metrics = dir_ / "metrics.json";
   std::vector<std::string> args = kBeamArgs;
+  // ASCII, so the text checks below can read the values.
   args.insert(args.end(), {"--formulation", "dg-nitsche", "--kp", "1e3", "--tol", "1e-10", "--max-iter", "500",
-                           "-o", out.string(), "--metrics", metrics.string()});
+                           "-o", out.string(), "--metrics", metrics.string(), "--ascii"});
   const RunResult r = run(args);
   ASSERT_EQ(r.exit_code, 0) << describe(args, r);
   EXPECT_TRUE(r.err.empty()) << describe(args, r);

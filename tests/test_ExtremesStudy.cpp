@@ -228,13 +228,56 @@ json failed_row(const std::string& formulation, const std::string& error, const 
   return r;
 }
 
+/// The typed record a row stands for (the rows above are easier to vary in a test).
+RunRecord record(const json& r) {
+  RunRecord out;
+  StudyRun& run = out.run;
+  run.id = r["id"];
+  run.mesh_label = r["mesh"];
+  run.level = r["level"];
+  run.size = run.level == 0 ? 0.5 : 0.25;  // hand_sweep's sizes, for both meshes
+  run.realization = r["realization"];
+  run.problem = r["problem"];
+  run.nu = r["nu"];
+  run.formulation_name = r["formulation"];
+  run.formulation_label = r["formulation"];
+  run.formulation = run.formulation_name == "cg" ? 0 : 1;  // hand_sweep's order
+  run.variant = r["variant"];
+  if (r["kp"].get<double>() > 0) run.kp = r["kp"].get<double>();
+  if (r["status"] != "ok") {
+    out.error = r["error"];
+    return out;
+  }
+  RunMetrics m;
+  auto number = [&](const char* key) { return r[key].is_number() ? r[key].get<double>() : std::nan(""); };
+  m.h_avg = number("h_avg");
+  m.l2_error = number("l2_error");
+  m.rcond = number("rcond");
+  if (run.kp) {
+    DgReport dg;
+    dg.iterations = r["iterations"];
+    dg.stop_reason = r["stop_reason"];
+    m.dg = dg;
+  }
+  out.metrics = m;
+  return out;
+}
+
+Verdict judge(const Scene& sweep, const json& run, const std::vector<json>& runs) {
+  std::vector<RunRecord> records;
+  for (const json& r : runs) records.push_back(record(r));
+  return judge_run(sweep, record(run), records);
+}
+
+double axis(const Scene& sweep, const json& run) { return axis_value(sweep, record(run)); }
+
 // Exactly representable errors, so that ratios at the factors are exact.
 constexpr double kBase = 1.0 / 1024;
 
 TEST(ExtremesVerdict, AFailedRunIsBrokenWithItsError) {
   const Scene s = hand_sweep("none");
   const json r = failed_row("dg-sipg", "the matrix is not positive definite at k_p = 0.001 E");
-  const Verdict v = judge_run(s, r, {r});
+  const Verdict v = judge(s, r, {r});
   EXPECT_EQ(v.level, "broken");
   EXPECT_NE(v.reason.find("the matrix is not positive definite at k_p = 0.001 E"), std::string::npos) << v.reason;
 }
@@ -245,39 +288,39 @@ TEST(ExtremesVerdict, ANonConvergedDgIterationIsBroken) {
     json r = row("dg-al", 0.01);
     r["stop_reason"] = stop;
     r["iterations"] = 100;
-    const Verdict v = judge_run(s, r, {r});
+    const Verdict v = judge(s, r, {r});
     EXPECT_EQ(v.level, "broken") << stop;
     EXPECT_NE(v.reason.find(stop), std::string::npos) << v.reason;
   }
   // Converged in few steps, or a direct solve: ok.
   const json converged = row("dg-al", 0.01);
-  EXPECT_EQ(judge_run(s, converged, {converged}).level, "ok");
+  EXPECT_EQ(judge(s, converged, {converged}).level, "ok");
   const json direct = row("cg", 0.01);
-  EXPECT_EQ(judge_run(s, direct, {direct}).level, "ok");
+  EXPECT_EQ(judge(s, direct, {direct}).level, "ok");
 }
 
 TEST(ExtremesVerdict, ARelativeErrorOfOneOrMoreIsBroken) {
   const Scene s = hand_sweep("none");
   for (double e : {1.0, 740.0}) {
     const json r = row("cg", e);
-    const Verdict v = judge_run(s, r, {r});
+    const Verdict v = judge(s, r, {r});
     EXPECT_EQ(v.level, "broken") << e;
     EXPECT_NE(v.reason.find(">= 1"), std::string::npos) << v.reason;
   }
   const json r = row("cg", 0.999);
-  EXPECT_EQ(judge_run(s, r, {r}).level, "ok");
+  EXPECT_EQ(judge(s, r, {r}).level, "ok");
 }
 
 TEST(ExtremesVerdict, ANonFiniteErrorIsBroken) {
   const Scene s = hand_sweep("none");
   const json nan_row = row("dg-al", std::numeric_limits<double>::quiet_NaN());
-  EXPECT_EQ(judge_run(s, nan_row, {nan_row}).level, "broken");
+  EXPECT_EQ(judge(s, nan_row, {nan_row}).level, "broken");
   // A NaN or an infinity is written to results.jsonl as null (JSON has neither): a resumed study
   // reads it back that way and must give the same verdict, not throw.
   const json reread = json::parse(nan_row.dump());
   ASSERT_TRUE(reread["l2_error"].is_null());
   Verdict v;
-  EXPECT_NO_THROW(v = judge_run(s, reread, {reread}));
+  EXPECT_NO_THROW(v = judge(s, reread, {reread}));
   EXPECT_EQ(v.level, "broken");
   EXPECT_NE(v.reason.find("non-finite"), std::string::npos) << v.reason;
 }
@@ -292,7 +335,7 @@ void expect_factors(const Scene& s, json run, const json& base, double base_erro
   for (const Case& c : {Case{1.0, "ok"}, Case{2.5, "ok"}, Case{3.0, "ok"}, Case{3.5, "degraded"},
                         Case{30.0, "degraded"}, Case{31.0, "broken"}, Case{200.0, "broken"}}) {
     run["l2_error"] = c.factor * base_error;
-    const Verdict v = judge_run(s, run, {base, run});
+    const Verdict v = judge(s, run, {base, run});
     EXPECT_EQ(v.level, c.level) << s.baseline << " x" << c.factor << ": " << v.reason;
     if (std::string(c.level) != "ok") {
       EXPECT_NE(v.reason.find("baseline (" + s.baseline + ")"), std::string::npos) << v.reason;
@@ -307,7 +350,7 @@ TEST(ExtremesVerdict, FirstNuBaseline) {
   // The baseline is the same variant at the first nu: a cg run at the first nu is no baseline.
   const json cg = row("cg", kBase, "first", 0, 0.3);
   const json run = row("dg-al", 100 * kBase, "first", 0, 0.49);
-  EXPECT_EQ(judge_run(s, run, {cg, run}).level, "ok");
+  EXPECT_EQ(judge(s, run, {cg, run}).level, "ok");
 }
 
 TEST(ExtremesVerdict, CgBaseline) {
@@ -318,13 +361,13 @@ TEST(ExtremesVerdict, CgBaseline) {
   const json cg0 = row("cg", kBase, "first", 0, 0.3, 0);
   const json cg1 = row("cg", 16 * kBase, "first", 0, 0.3, 1);
   const json dg1 = row("dg-al", 32 * kBase, "first", 0, 0.3, 1);
-  EXPECT_EQ(judge_run(s, dg1, {cg0, cg1, dg1}).level, "ok");
+  EXPECT_EQ(judge(s, dg1, {cg0, cg1, dg1}).level, "ok");
   // And at the same nu.
   const json cg_other_nu = row("cg", kBase, "first", 0, 0.49);
   const json cg_same_nu = row("cg", 16 * kBase, "first", 0, 0.3);
-  EXPECT_EQ(judge_run(s, dg1, {cg_other_nu, dg1}).level, "ok");  // no baseline at all
+  EXPECT_EQ(judge(s, dg1, {cg_other_nu, dg1}).level, "ok");  // no baseline at all
   const json dg0 = row("dg-al", 32 * kBase);
-  EXPECT_EQ(judge_run(s, dg0, {cg_other_nu, cg_same_nu, dg0}).level, "ok");
+  EXPECT_EQ(judge(s, dg0, {cg_other_nu, cg_same_nu, dg0}).level, "ok");
 }
 
 TEST(ExtremesVerdict, FirstMeshBaseline) {
@@ -334,7 +377,7 @@ TEST(ExtremesVerdict, FirstMeshBaseline) {
   // The same variant on the first mesh: cg there is no baseline for dg-al.
   const json cg = row("cg", kBase, "first");
   const json run = row("dg-al", 100 * kBase, "second");
-  EXPECT_EQ(judge_run(s, run, {cg, run}).level, "ok");
+  EXPECT_EQ(judge(s, run, {cg, run}).level, "ok");
 }
 
 TEST(ExtremesVerdict, CoarsestLevelBaselineScalesWithTheExpectedRate) {
@@ -345,12 +388,12 @@ TEST(ExtremesVerdict, CoarsestLevelBaselineScalesWithTheExpectedRate) {
   expect_factors(s, row("cg", 0.0, "first", 1, 0.3, 0, 0.25), base, expected);
   // An error that did not fall at all is 4x the expected one at rate 2: degraded ...
   const json flat = row("cg", 1.0 / 64, "first", 1, 0.3, 0, 0.25);
-  EXPECT_EQ(judge_run(s, flat, {base, flat}).level, "degraded");
+  EXPECT_EQ(judge(s, flat, {base, flat}).level, "degraded");
   // ... but only 2x at rate 1: ok.
   s.expected_rate = 1.0;
-  EXPECT_EQ(judge_run(s, flat, {base, flat}).level, "ok");
+  EXPECT_EQ(judge(s, flat, {base, flat}).level, "ok");
   // The coarsest level is its own baseline.
-  EXPECT_EQ(judge_run(s, base, {base, flat}).level, "ok");
+  EXPECT_EQ(judge(s, base, {base, flat}).level, "ok");
 }
 
 TEST(ExtremesVerdict, FactorsComeFromTheSweep) {
@@ -359,35 +402,35 @@ TEST(ExtremesVerdict, FactorsComeFromTheSweep) {
   s.broken_factor = 100;
   const json base = row("cg", kBase);
   json run = row("dg-al", 8 * kBase);
-  EXPECT_EQ(judge_run(s, run, {base, run}).level, "ok");
+  EXPECT_EQ(judge(s, run, {base, run}).level, "ok");
   run["l2_error"] = 10 * kBase;
-  EXPECT_EQ(judge_run(s, run, {base, run}).level, "ok");
+  EXPECT_EQ(judge(s, run, {base, run}).level, "ok");
   run["l2_error"] = 12 * kBase;
-  EXPECT_EQ(judge_run(s, run, {base, run}).level, "degraded");
+  EXPECT_EQ(judge(s, run, {base, run}).level, "degraded");
   run["l2_error"] = 100 * kBase;
-  EXPECT_EQ(judge_run(s, run, {base, run}).level, "degraded");
+  EXPECT_EQ(judge(s, run, {base, run}).level, "degraded");
   run["l2_error"] = 128 * kBase;
-  EXPECT_EQ(judge_run(s, run, {base, run}).level, "broken");
+  EXPECT_EQ(judge(s, run, {base, run}).level, "broken");
 }
 
 TEST(ExtremesVerdict, ANearSingularFactorIsDegraded) {
   const Scene s = hand_sweep("none");
   json r = row("dg-al", 0.01);
   r["rcond"] = 1e-14;
-  Verdict v = judge_run(s, r, {r});
+  Verdict v = judge(s, r, {r});
   EXPECT_EQ(v.level, "degraded");
   EXPECT_NE(v.reason.find("rcond"), std::string::npos) << v.reason;
   r["rcond"] = 1e-12;  // at the threshold: not below it
-  EXPECT_EQ(judge_run(s, r, {r}).level, "ok");
+  EXPECT_EQ(judge(s, r, {r}).level, "ok");
   r["rcond"] = 1e-6;
-  EXPECT_EQ(judge_run(s, r, {r}).level, "ok");
+  EXPECT_EQ(judge(s, r, {r}).level, "ok");
   // A slow DG iteration (more than half of the formulation's 100 steps): degraded.
   r["iterations"] = 51;
-  v = judge_run(s, r, {r});
+  v = judge(s, r, {r});
   EXPECT_EQ(v.level, "degraded");
   EXPECT_NE(v.reason.find("slow"), std::string::npos) << v.reason;
   r["iterations"] = 50;
-  EXPECT_EQ(judge_run(s, r, {r}).level, "ok");
+  EXPECT_EQ(judge(s, r, {r}).level, "ok");
 }
 
 TEST(ExtremesVerdict, AMissingOrFailedBaselineLeavesTheAbsoluteChecks) {
@@ -395,20 +438,20 @@ TEST(ExtremesVerdict, AMissingOrFailedBaselineLeavesTheAbsoluteChecks) {
     const Scene s = hand_sweep(baseline);
     // The run would be 512x its baseline, if there were one.
     const json run = row("dg-al", 0.5, "second", 1, 0.49, 0, 0.25);
-    EXPECT_EQ(judge_run(s, run, {run}).level, "ok") << baseline;
+    EXPECT_EQ(judge(s, run, {run}).level, "ok") << baseline;
     // A failed baseline run of each kind: no comparison either.
     json failed = failed_row(std::string(baseline) == "cg" ? "cg" : "dg-al", "singular");
     failed["nu"] = std::string(baseline) == "first-nu" ? 0.3 : 0.49;
     failed["mesh"] = std::string(baseline) == "first-mesh" ? "first" : "second";
     failed["level"] = std::string(baseline) == "coarsest-level" ? 0 : 1;
-    EXPECT_EQ(judge_run(s, run, {failed, run}).level, "ok") << baseline;
+    EXPECT_EQ(judge(s, run, {failed, run}).level, "ok") << baseline;
     // The absolute checks still apply.
     json bad = run;
     bad["l2_error"] = 2.0;
-    EXPECT_EQ(judge_run(s, bad, {failed, bad}).level, "broken") << baseline;
+    EXPECT_EQ(judge(s, bad, {failed, bad}).level, "broken") << baseline;
     bad = run;
     bad["rcond"] = 1e-13;
-    EXPECT_EQ(judge_run(s, bad, {failed, bad}).level, "degraded") << baseline;
+    EXPECT_EQ(judge(s, bad, {failed, bad}).level, "degraded") << baseline;
   }
 }
 
@@ -424,26 +467,26 @@ TEST(ExtremesAxis, EachAxisGivesItsValue) {
   r["kp"] = 1e6;
 
   s.axis = "nu";
-  EXPECT_DOUBLE_EQ(axis_value(s, r), 0.49);
+  EXPECT_DOUBLE_EQ(axis(s, r), 0.49);
   s.axis = "kp";
-  EXPECT_DOUBLE_EQ(axis_value(s, r), 1e6);
+  EXPECT_DOUBLE_EQ(axis(s, r), 1e6);
   s.axis = "aspect";
-  EXPECT_DOUBLE_EQ(axis_value(s, r), 10.0);
+  EXPECT_DOUBLE_EQ(axis(s, r), 10.0);
   s.axis = "perturbation";
-  EXPECT_DOUBLE_EQ(axis_value(s, r), 0.4);
-  EXPECT_DOUBLE_EQ(axis_value(s, row("cg", 0.01, "first")), 0.1);
+  EXPECT_DOUBLE_EQ(axis(s, r), 0.4);
+  EXPECT_DOUBLE_EQ(axis(s, row("cg", 0.01, "first")), 0.1);
   s.axis = "regularization";
-  EXPECT_DOUBLE_EQ(axis_value(s, r), 0.01);
-  EXPECT_DOUBLE_EQ(axis_value(s, row("cg", 0.01, "first")), 0.0);
+  EXPECT_DOUBLE_EQ(axis(s, r), 0.01);
+  EXPECT_DOUBLE_EQ(axis(s, row("cg", 0.01, "first")), 0.0);
   s.axis = "h";
-  EXPECT_DOUBLE_EQ(axis_value(s, r), 0.27);  // the measured h_avg
+  EXPECT_DOUBLE_EQ(axis(s, r), 0.27);  // the measured h_avg
   // A failed run has no h_avg: the level's nominal size.
   json failed = failed_row("dg-al", "singular", "second");
   failed["level"] = 1;
-  EXPECT_DOUBLE_EQ(axis_value(s, failed), 0.25);
+  EXPECT_DOUBLE_EQ(axis(s, failed), 0.25);
   // A mesh the sweep does not know: no value.
   s.axis = "perturbation";
-  EXPECT_TRUE(std::isnan(axis_value(s, row("cg", 0.01, "elsewhere"))));
+  EXPECT_TRUE(std::isnan(axis(s, row("cg", 0.01, "elsewhere"))));
 }
 
 // ---------------------------------------------------------------------------------------------

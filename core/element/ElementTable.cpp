@@ -1,5 +1,6 @@
 #include "core/element/ElementTable.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -17,7 +18,7 @@ namespace {
 constexpr int kMaxNodes = 64;  // cells with more vertices are rejected
 
 void check_options(const ElementOptions& o) {
-  if (o.rule_points != 1 && o.rule_points != 3 && o.rule_points != 6)
+  if (std::find(kFanRulePoints.begin(), kFanRulePoints.end(), o.rule_points) == kFanRulePoints.end())
     throw InputError("quadrature rule with " + std::to_string(o.rule_points) +
                      " points per fan triangle: expected 1, 3 or 6");
   check_weight_options(o.weights);

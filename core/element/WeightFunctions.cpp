@@ -126,9 +126,9 @@ void number_patch(const PolygonMesh& mesh, int vertex, int N, PatchNumbering& pa
 }  // namespace
 
 void check_weight_options(const WeightFunctionOptions& o) {
-  if (o.degree != 1 && o.degree != 2)
+  if (std::find(kWeightDegrees.begin(), kWeightDegrees.end(), o.degree) == kWeightDegrees.end())
     throw InputError("weight function degree " + std::to_string(o.degree) + ": expected 1 or 2");
-  if (o.refinement < 0 || o.refinement > 4)
+  if (o.refinement < 0 || o.refinement > kMaxWeightRefinement)
     throw InputError("weight function refinement " + std::to_string(o.refinement) +
                      ": expected 0..4");
 }

@@ -1,10 +1,11 @@
 #pragma once
 // Nodal weight functions of the RK polygon element (report Eq. 11, boundary conditions as
-// DESIGN.md reads them): for each vertex I, -lap w = 1 on its patch (the cells around I),
+// docs/design.md reads them): for each vertex I, -lap w = 1 on its patch (the cells around I),
 // w = 0 on every patch edge not incident to I, dw/dn = 0 on the domain-boundary edges incident
 // to I. Solved by finite elements (P1 or P2) on each cell's fan lattice; the cell lattices of
 // neighbouring cells match along shared edges, so the patch problem is conforming.
 #include <Eigen/Core>
+#include <array>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct WeightFunctionOptions {
   int refinement = 0;  // each fan triangle cut into 4^refinement sub-triangles
   int degree = 2;      // 1 (P1) or 2 (P2) on the sub-triangles
 };
+
+/// The weight-function options a user may choose: degrees, and refinement 0..kMaxWeightRefinement.
+inline constexpr std::array<int, 2> kWeightDegrees = {1, 2};
+inline constexpr int kMaxWeightRefinement = 4;
 
 /// Throws InputError unless refinement is in 0..4 and degree is 1 or 2 (P1 needs refinement
 /// >= 0; note P1 with refinement 0 has no node inside a fan triangle).

@@ -38,7 +38,7 @@ std::optional<double> interior_fraction(const Rectangle& dom, const std::vector<
 
 GeneratedMesh generate_rcp(const MeshSpec& spec) {
   GeneratedMesh out;
-  if (!(spec.regularization >= 0.0 && spec.regularization < 1.0))
+  if (!(spec.regularization >= 0.0 && spec.regularization < kMaxRegularization))
     throw InputError("regularization threshold " + fmt(spec.regularization) +
                      ": expected a fraction of d in [0, 1)");
   Stopwatch clock;

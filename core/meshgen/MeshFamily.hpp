@@ -1,6 +1,6 @@
 #pragma once
-// The mesh families of DESIGN.md and the one entry point that builds any of them. A MeshSpec is
-// a pure description: the same spec gives a byte-identical mesh.
+// The mesh families (docs/design.md "Meshes") and the one entry point that builds any of them.
+// A MeshSpec is a pure description: the same spec gives a byte-identical mesh.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -18,6 +18,11 @@ enum class MeshFamily { rcp, hex, perturbed_hex, tri, quad, file };
 std::string_view family_name(MeshFamily f);
 /// Parses a family name; throws InputError listing the valid names.
 MeshFamily parse_family(const std::string& name);
+
+/// The generators' parameter ranges: perturbed-hex r in [0, kMaxPerturbation), rcp
+/// regularization threshold in [0, kMaxRegularization) times d.
+inline constexpr double kMaxPerturbation = 0.5;
+inline constexpr double kMaxRegularization = 1.0;
 
 struct MeshSpec {
   MeshFamily family = MeshFamily::rcp;

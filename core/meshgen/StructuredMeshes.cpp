@@ -4,6 +4,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/meshgen/MeshFamily.hpp"
 #include "core/meshgen/VoronoiTessellator.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
@@ -55,7 +56,7 @@ PolygonMesh hex_mesh(const Rectangle& domain, double spacing) {
 }
 
 PolygonMesh perturb_mesh(const PolygonMesh& mesh, double r, std::uint64_t seed) {
-  if (!(r >= 0.0 && r < 0.5))
+  if (!(r >= 0.0 && r < kMaxPerturbation))
     throw InputError("perturbation r = " + fmt(r) + ": expected 0 <= r < 0.5");
   const Rectangle& dom = mesh.domain();
   const double tol = mesh.tag_tolerance() * dom.scale();

@@ -18,6 +18,9 @@ struct TriangleRule {
 /// points. Throws InputError for any other count.
 const TriangleRule& triangle_rule(int points);
 
+/// The point counts a fan triangle's rule may have (the element layer's `rule` option).
+inline constexpr std::array<int, 3> kFanRulePoints = {1, 3, 6};
+
 /// Two-point Gauss rule on [0, 1]: exact for cubics (and so for products of the edge-linear
 /// fields the interface terms integrate).
 struct SegmentRule {

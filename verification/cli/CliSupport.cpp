@@ -8,6 +8,7 @@
 
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "verification/model/Choices.hpp"
 
 namespace vorodg {
 namespace {
@@ -59,8 +60,13 @@ CLI::Validator unsigned_integer() {
       "");
 }
 
+void add_vtu_output_options(CLI::App& cmd, VtuOutputOptions& o, const std::string& what) {
+  cmd.add_option("-o,--output", o.path, what + " to write (.vtu)");
+  cmd.add_flag("--ascii", o.ascii, "Write ASCII .vtu (default: zlib-compressed binary)");
+}
+
 void add_mesh_source_options(CLI::App& cmd, MeshSourceOptions& o) {
-  cmd.add_option("--family", o.family, "rcp | hex | perturbed-hex | tri | quad")
+  cmd.add_option("--family", o.family, choice_alternatives(generated_family_choices()))
       ->capture_default_str();
   cmd.add_option("--domain", o.domain, "Rectangle x0,y0,x1,y1")->capture_default_str();
   cmd.add_option("--d", o.d, "rcp, tri: minimum distance between seeds")->check(finite_number());

@@ -6,20 +6,30 @@
 #include <cstdint>
 #include <string>
 
+#include "core/io/VtuMesh.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 
 namespace vorodg {
 
 struct MeshSourceOptions {
-  std::string family = "rcp";
+  std::string family = std::string(family_name(MeshSpec{}.family));
   std::string domain = "0,0,4,1";
   double d = 0.0;  // rcp, tri
   double h = 0.0;  // hex, perturbed-hex, quad
-  double r = 0.3;
-  std::uint64_t seed = 1;
-  double regularize = 0.1;
+  double r = MeshSpec{}.perturbation;
+  std::uint64_t seed = MeshSpec{}.seed;
+  double regularize = MeshSpec{}.regularization;
   std::string file;  // --mesh FILE.vtu (solve only)
 };
+
+/// Where a command writes its .vtu (`-o FILE`) and how (`--ascii`; compressed binary otherwise).
+struct VtuOutputOptions {
+  std::string path;
+  bool ascii = false;
+  VtuEncoding encoding() const { return ascii ? VtuEncoding::ascii : VtuEncoding::binary_zlib; }
+};
+/// Registers -o/--output (`what` says what is written) and --ascii.
+void add_vtu_output_options(CLI::App& command, VtuOutputOptions& o, const std::string& what);
 
 /// Refuses a number option's text unless it is a finite number ("nan", "inf", "1e400", "abc"
 /// are refused while parsing, before anything is echoed or computed).

@@ -41,7 +41,7 @@ int check_mesh_file(const MeshCommandOptions& o, bool domain_given) {
 CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand("mesh", "Generate a mesh (or --check one) and report on it");
   add_mesh_source_options(*cmd, o.mesh);
-  cmd->add_option("-o,--output", o.output, "Mesh file to write (.vtu)");
+  add_vtu_output_options(*cmd, o.output, "Mesh file");
   cmd->add_option("--stats", o.stats, "Statistics file to write (.json)");
   cmd->add_option("--check", o.check, "Validate this .vtu mesh instead of generating one");
   return cmd;
@@ -51,7 +51,7 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
   const bool domain_given = command.count("--domain") > 0;
   if (!o.check.empty()) return check_mesh_file(o, domain_given);
   const MeshSpec spec = mesh_spec(o.mesh, true);
-  check_output_folder(o.output, "--output");
+  check_output_folder(o.output.path, "--output");
   check_output_folder(o.stats, "--stats");
   echo_options("vorodg mesh", command);  // after the checks: the echoed line is a valid run
 
@@ -66,14 +66,15 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
                          std::to_string(validation.defect_count) + " defects)");
   const MeshStatistics stats = compute_statistics(generated.mesh);
 
-  if (!o.output.empty()) {
+  if (!o.output.path.empty()) {
     clock.restart();
     std::vector<double> sides, ids;
     for (int c = 0; c < generated.mesh.num_cells(); ++c) {
       sides.push_back(generated.mesh.cell_size(c));
       ids.push_back(c);
     }
-    write_vtu(o.output, generated.mesh, {{}, {{"cell_id", 1, ids}, {"sides", 1, sides}}});
+    write_vtu(o.output.path, generated.mesh, {{}, {{"cell_id", 1, ids}, {"sides", 1, sides}}},
+              o.output.encoding());
     generated.report.seconds["write"] = clock.seconds();
   }
   nlohmann::json json = to_json(stats);

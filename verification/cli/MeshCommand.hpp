@@ -11,7 +11,7 @@ namespace vorodg {
 
 struct MeshCommandOptions {
   MeshSourceOptions mesh;
-  std::string output;
+  VtuOutputOptions output;
   std::string stats;
   std::string check;
 };

@@ -57,18 +57,21 @@ void draw_plots(const fs::path& out) {
 /// An extremes study: each sweep runs (and reports) in its own subfolder, then every run gets
 /// its verdict. Broken runs are findings of the study, not a failure of the program: exit 0.
 int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots, const Stopwatch& clock) {
-  std::vector<std::vector<nlohmann::json>> results;
+  std::vector<std::vector<RunRecord>> results;
   std::size_t runs = 0;
   for (const auto& sweep : scene.sweeps) {
     StudyOptions sub = options;
     sub.out = options.out / sweep->name;
     std::cout << "\n== sweep " << sweep->name << " (" << sweep->axis << ")\n";
     results.push_back(run_study(*sweep, sub));
-    write_study_report(*sweep, results.back(), sub.out);
+    // A sweep's own report has no pictures: the extremes plot stands for them all.
+    finish_report_markdown(write_study_report(*sweep, results.back(), sub.out).markdown, sub.out, {});
     runs += results.back().size();
   }
-  const int broken = write_extremes_report(scene, results, options.out);
+  std::string markdown;
+  const int broken = write_extremes_report(scene, results, options.out, markdown);
   if (!no_plots) draw_plots(options.out);
+  finish_report_markdown(markdown, options.out, study_pictures());
   std::cout << "\n" << scene.name << ": " << runs << " runs (" << broken << " broken), "
             << clock.seconds() << " s; report in " << (options.out / "report.md").string() << "\n";
   return 0;
@@ -101,8 +104,10 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   options.progress = !o.quiet;
   if (scene.study == "extremes") return run_extremes(scene, options, o.no_plots, clock);
   const auto results = run_study(scene, options);
-  const int unexpected = write_study_report(scene, results, o.out);
+  const StudyReport report = write_study_report(scene, results, o.out);
   if (!o.no_plots) draw_plots(o.out);
+  finish_report_markdown(report.markdown, o.out, study_pictures());
+  const int unexpected = report.unexpected;
   std::cout << "\n" << scene.name << ": " << results.size() << " runs, " << clock.seconds()
             << " s; report in " << (fs::path(o.out) / "report.md").string() << "\n";
   if (unexpected > 0) {

@@ -1,22 +1,19 @@
 #pragma once
 // `vorodg solve`: one problem on one mesh (generated or read), one formulation; writes the
-// result as .vtu (displacement, exact displacement, error; per cell mean stress, von Mises and
-// error densities) and the metrics as JSON.
+// result as .vtu (verification/cli/ResultFile.hpp) and the metrics as JSON. Its settings are
+// the schema's (verification/model/SettingsSchema.hpp).
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "verification/SolveRun.hpp"
 #include "verification/cli/CliSupport.hpp"
+#include "verification/cli/SettingOptions.hpp"
 
 namespace vorodg {
 
 struct SolveCommandOptions {
   MeshSourceOptions mesh;
-  SolveSettings settings;
-  std::string plane = "stress";
-  bool no_correction = false;
-  std::string ordering = "node-metis";
-  std::string output;
+  SettingOptions settings;
+  VtuOutputOptions output;
   std::string metrics;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/io/AtomicFile.hpp"
@@ -17,85 +18,82 @@ using nlohmann::json;
 
 constexpr double kMinRcond = 1e-12;
 
-bool ok(const json& r) { return r.value("status", "") == "ok"; }
+double l2_error(const RunRecord& r) { return r.metrics ? r.metrics->l2_error : std::nan(""); }
 
-/// A number of a result row; NaN when absent or null (JSON has no NaN: a non-finite value
-/// written to results.jsonl comes back as null).
-double number(const json& r, const char* key) {
-  const auto it = r.find(key);
-  return it != r.end() && it->is_number() ? it->get<double>() : std::nan("");
+bool same_place(const StudyRun& a, const StudyRun& b) {
+  return a.mesh_label == b.mesh_label && a.level == b.level && a.realization == b.realization &&
+         a.problem == b.problem;
 }
 
-/// The formulation a run belongs to in the trust table: its variant without the k_p suffix.
-std::string family_of(const json& r) {
-  std::string v = r.value("variant", "");
-  const auto at = v.find(" kp=");
-  return at == std::string::npos ? v : v.substr(0, at);
-}
-
-bool same_place(const json& a, const json& b) {
-  return a["mesh"] == b["mesh"] && a["level"] == b["level"] && a["realization"] == b["realization"] &&
-         a["problem"] == b["problem"];
+/// The run of `runs` a run of the sweep is compared with (nullptr if none).
+const RunRecord* baseline_run(const Scene& sweep, const StudyRun& run, const std::vector<RunRecord>& runs) {
+  auto find = [&](auto&& match) -> const RunRecord* {
+    for (const RunRecord& r : runs)
+      if (match(r.run)) return &r;
+    return nullptr;
+  };
+  if (sweep.baseline == "first-nu")
+    return find([&](const StudyRun& r) {
+      return same_place(r, run) && r.variant == run.variant && r.nu == sweep.nu.front();
+    });
+  if (sweep.baseline == "cg")
+    return find([&](const StudyRun& r) {
+      return same_place(r, run) && r.formulation_name == "cg" && r.nu == run.nu;
+    });
+  if (sweep.baseline == "first-mesh")
+    return find([&](const StudyRun& r) {
+      return r.mesh_label == sweep.meshes.front().label && r.level == run.level &&
+             r.realization == run.realization && r.problem == run.problem &&
+             r.variant == run.variant && r.nu == run.nu;
+    });
+  if (sweep.baseline == "coarsest-level")
+    return find([&](const StudyRun& r) {
+      return r.mesh_label == run.mesh_label && r.level == 0 && r.realization == run.realization &&
+             r.problem == run.problem && r.variant == run.variant && r.nu == run.nu;
+    });
+  return nullptr;
 }
 
 /// The baseline error of a run, or NaN when the sweep has none or its baseline run failed.
-double baseline_error(const Scene& sweep, const json& run, const std::vector<json>& runs) {
-  const double nan = std::nan("");
-  auto find = [&](auto&& match) -> const json* {
-    for (const json& r : runs)
-      if (match(r)) return &r;
-    return nullptr;
-  };
-  const json* base = nullptr;
+double baseline_error(const Scene& sweep, const RunRecord& run, const std::vector<RunRecord>& runs) {
+  const RunRecord* base = baseline_run(sweep, run.run, runs);
+  if (!base || !base->ok()) return std::nan("");
   double scale = 1.0;
-  if (sweep.baseline == "first-nu") {
-    base = find([&](const json& r) {
-      return same_place(r, run) && r["variant"] == run["variant"] && r["nu"].get<double>() == sweep.nu.front();
-    });
-  } else if (sweep.baseline == "cg") {
-    base = find([&](const json& r) {
-      return same_place(r, run) && r["formulation"] == "cg" && r["nu"] == run["nu"];
-    });
-  } else if (sweep.baseline == "first-mesh") {
-    base = find([&](const json& r) {
-      return r["mesh"] == sweep.meshes.front().label && r["level"] == run["level"] &&
-             r["realization"] == run["realization"] && r["problem"] == run["problem"] &&
-             r["variant"] == run["variant"] && r["nu"] == run["nu"];
-    });
-  } else if (sweep.baseline == "coarsest-level") {
-    base = find([&](const json& r) {
-      return r["mesh"] == run["mesh"] && r["level"] == 0 && r["realization"] == run["realization"] &&
-             r["problem"] == run["problem"] && r["variant"] == run["variant"] && r["nu"] == run["nu"];
-    });
-    if (base && ok(*base) && ok(run))
-      scale = std::pow(number(run, "h_avg") / number(*base, "h_avg"), sweep.expected_rate);
-  }
-  if (!base || !ok(*base)) return nan;
-  return scale * number(*base, "l2_error");
+  if (sweep.baseline == "coarsest-level" && run.ok())
+    scale = std::pow(run.metrics->h_avg / base->metrics->h_avg, sweep.expected_rate);
+  return scale * base->metrics->l2_error;
+}
+
+int allowed_iterations(const Scene& sweep, const StudyRun& run) {
+  return run.formulation < static_cast<int>(sweep.formulations.size())
+             ? sweep.formulations[run.formulation].settings.dg.max_iterations
+             : DgOptions{}.max_iterations;
 }
 
 }  // namespace
 
-double axis_value(const Scene& sweep, const json& run) {
+double axis_value(const Scene& sweep, const RunRecord& record) {
+  const StudyRun& run = record.run;
   const auto mesh = std::find_if(sweep.meshes.begin(), sweep.meshes.end(),
-                                 [&](const SceneMesh& m) { return m.label == run["mesh"]; });
-  if (sweep.axis == "nu") return run["nu"];
-  if (sweep.axis == "kp") return run["kp"];
+                                 [&](const SceneMesh& m) { return m.label == run.mesh_label; });
+  if (sweep.axis == "nu") return run.nu;
+  if (sweep.axis == "kp") return run.kp.value_or(std::nan(""));
   if (sweep.axis == "aspect") return sweep.domain.width() / sweep.domain.height();
   if (sweep.axis == "perturbation" && mesh != sweep.meshes.end()) return mesh->perturbation;
   if (sweep.axis == "regularization" && mesh != sweep.meshes.end()) return mesh->regularization;
-  if (sweep.axis == "h" && std::isfinite(number(run, "h_avg"))) return number(run, "h_avg");
-  if (sweep.axis == "h" && mesh != sweep.meshes.end()) return mesh->sizes[run["level"].get<int>()];
+  if (sweep.axis == "h" && record.metrics && std::isfinite(record.metrics->h_avg)) return record.metrics->h_avg;
+  if (sweep.axis == "h") return run.size;
   return std::nan("");
 }
 
-Verdict judge_run(const Scene& sweep, const json& run, const std::vector<json>& runs) {
-  if (!ok(run)) return {"broken", "breakdown: " + run.value("error", std::string("failed"))};
-  const double e = number(run, "l2_error");
+Verdict judge_run(const Scene& sweep, const RunRecord& run, const std::vector<RunRecord>& runs) {
+  if (!run.ok()) return {"broken", "breakdown: " + run.error};
+  const RunMetrics& m = *run.metrics;
+  const double e = m.l2_error;
   if (!std::isfinite(e)) return {"broken", "non-finite error"};
-  const std::string stop = run.value("stop_reason", "direct");
+  const std::string stop = m.stop_reason();
   if (stop != "direct" && stop != "converged")
-    return {"broken", "DG iteration " + stop + " after " + std::to_string(run.value("iterations", 0)) + " steps"};
+    return {"broken", "DG iteration " + stop + " after " + std::to_string(m.iterations()) + " steps"};
   if (e >= 1.0) return {"broken", "relative L2 error " + fmt(e, 3) + " >= 1"};
   const double base = baseline_error(sweep, run, runs);
   // Errors at round-off level (a patch test) are exact, whatever their ratio to the baseline.
@@ -104,64 +102,21 @@ Verdict judge_run(const Scene& sweep, const json& run, const std::vector<json>& 
     return {"broken", "error " + fmt(ratio, 3) + "x the baseline (" + sweep.baseline + ")"};
   if (std::isfinite(ratio) && ratio > sweep.degraded_factor)
     return {"degraded", "error " + fmt(ratio, 3) + "x the baseline (" + sweep.baseline + ")"};
-  const double rcond = run.contains("rcond") ? number(run, "rcond") : 1.0;
-  if (!(rcond >= kMinRcond)) return {"degraded", "near-singular factor (rcond " + fmt(rcond, 3) + ")"};
-  int max_iterations = DgOptions{}.max_iterations;
-  for (const SceneFormulation& f : sweep.formulations)
-    if (f.label == family_of(run)) max_iterations = f.settings.dg.max_iterations;
-  if (stop == "converged" && run.value("iterations", 0) > max_iterations / 2)
-    return {"degraded", "slow DG iteration (" + std::to_string(run.value("iterations", 0)) + " steps)"};
+  if (!(m.rcond >= kMinRcond)) return {"degraded", "near-singular factor (rcond " + fmt(m.rcond, 3) + ")"};
+  if (stop == "converged" && m.iterations() > allowed_iterations(sweep, run.run) / 2)
+    return {"degraded", "slow DG iteration (" + std::to_string(m.iterations()) + " steps)"};
   return {"ok", ""};
 }
 
-int write_extremes_report(const Scene& scene, const std::vector<std::vector<json>>& results,
-                          const std::filesystem::path& out) {
-  static const std::map<std::string, int> rank = {{"ok", 0}, {"degraded", 1}, {"broken", 2}};
-  std::ostringstream csv, md;
-  csv << "sweep,axis,value,formulation,variant,mesh,level,realization,nu,kp,h_avg,l2_error,rcond,"
-         "iterations,stop_reason,verdict,reason\n";
-  json cases = json::array();
-  // (axis, formulation) -> value -> the worst verdict there.
-  std::map<std::pair<std::string, std::string>, std::map<double, Verdict>> worst;
-  int broken = 0;
-  for (std::size_t s = 0; s < scene.sweeps.size(); ++s) {
-    const Scene& sweep = *scene.sweeps[s];
-    for (const json& r : results[s]) {
-      const Verdict v = judge_run(sweep, r, results[s]);
-      const double value = axis_value(sweep, r);
-      broken += v.level == "broken";
-      std::string reason = v.reason;
-      std::replace(reason.begin(), reason.end(), ',', ';');
-      std::replace(reason.begin(), reason.end(), '"', '\'');
-      csv << sweep.name << "," << sweep.axis << "," << fmt(value, 12) << "," << family_of(r) << ","
-          << r.value("variant", "") << "," << r.value("mesh", "") << "," << r.value("level", 0) << ","
-          << r.value("realization", 0) << "," << fmt(r.value("nu", 0.0), 12) << ","
-          << fmt(r.value("kp", 0.0), 6) << "," << fmt(r.value("h_avg", 0.0), 6) << ","
-          << fmt(number(r, "l2_error"), 6) << "," << fmt(number(r, "rcond"), 3)
-          << "," << r.value("iterations", 0) << "," << r.value("stop_reason", "") << "," << v.level
-          << ",\"" << reason << "\"\n";
-      cases.push_back({{"sweep", sweep.name}, {"axis", sweep.axis}, {"value", value},
-                       {"id", r["id"]}, {"l2_error", r.contains("l2_error") ? r["l2_error"] : json()},
-                       {"rcond", r.contains("rcond") ? r["rcond"] : json()}, {"iterations", r.value("iterations", 0)},
-                       {"stop_reason", r.value("stop_reason", "")}, {"verdict", v.level},
-                       {"reason", v.reason}});
-      Verdict& w = worst[{sweep.axis, family_of(r)}][value];
-      if (w.level.empty() || rank.at(v.level) > rank.at(w.level)) w = v;
-    }
-  }
-  md << "# " << scene.name << ": numerical extremes\n\n" << scene.description << "\n\n"
-     << "Each run gets a verdict: **ok**, **degraded** (error above the sweep's degraded factor times "
-        "its baseline, a factor condition estimate below 1e-12, or a slow DG iteration) or "
-        "**broken** (a breakdown, a non-finite or >= 100% error, a DG iteration that did not converge, "
-        "or an error above the broken factor times the baseline). The table gives, per axis and "
-        "formulation, the values where every run was ok and the nearest values on either side "
-        "where one was not.\n\n"
-     << "| axis | formulation | trusted (every run ok) | nearest failure below | nearest failure above |\n"
+namespace {
+
+using Worst = std::map<std::pair<std::string, std::string>, std::map<double, Verdict>>;
+
+std::string trust_table(const Worst& worst, json& trust) {
+  std::ostringstream md;
+  md << "| axis | formulation | trusted (every run ok) | nearest failure below | nearest failure above |\n"
      << "|---|---|---|---|---|\n";
-  json trust = json::array();
-  auto describe = [](double value, const Verdict& v) {
-    return fmt(value, 8) + ": " + v.level + ", " + v.reason;
-  };
+  auto describe = [](double value, const Verdict& v) { return fmt(value, 8) + ": " + v.level + ", " + v.reason; };
   for (const auto& [key, by_value] : worst) {
     std::vector<double> trusted;
     for (const auto& [value, v] : by_value)
@@ -182,13 +137,67 @@ int write_extremes_report(const Scene& scene, const std::vector<std::vector<json
     trust.push_back({{"axis", key.first}, {"formulation", key.second}, {"trusted", trusted},
                      {"nearest_failure_below", below}, {"nearest_failure_above", above}});
   }
-  md << "\nEvery run with its verdict and reason: extremes.csv. Each sweep's own convergence report is "
-        "in its subfolder.\n\n![extremes.png](extremes.png)\n";
+  return md.str();
+}
+
+std::string csv_field(std::string s) {
+  std::replace(s.begin(), s.end(), ',', ';');
+  std::replace(s.begin(), s.end(), '"', '\'');
+  return s;
+}
+
+}  // namespace
+
+int write_extremes_report(const Scene& scene, const std::vector<std::vector<RunRecord>>& results,
+                          const std::filesystem::path& out, std::string& markdown) {
+  static const std::map<std::string, int> rank = {{"ok", 0}, {"degraded", 1}, {"broken", 2}};
+  std::ostringstream csv;
+  csv << "sweep,axis,value,formulation,variant,mesh,level,realization,nu,kp,h_avg,l2_error,rcond,"
+         "iterations,stop_reason,verdict,reason\n";
+  json cases = json::array();
+  Worst worst;  // (axis, formulation) -> value -> the worst verdict there
+  int broken = 0;
+  for (std::size_t s = 0; s < scene.sweeps.size(); ++s) {
+    const Scene& sweep = *scene.sweeps[s];
+    for (const RunRecord& r : results[s]) {
+      const Verdict v = judge_run(sweep, r, results[s]);
+      const double value = axis_value(sweep, r);
+      const StudyRun& run = r.run;
+      const auto& m = r.metrics;
+      broken += v.level == "broken";
+      csv << sweep.name << "," << sweep.axis << "," << fmt(value, 12) << "," << run.formulation_label
+          << "," << run.variant << "," << run.mesh_label << "," << run.level << "," << run.realization
+          << "," << fmt(run.nu, 12) << "," << fmt(run.kp.value_or(0.0), 6) << ","
+          << fmt(m ? m->h_avg : 0.0, 6) << "," << fmt(l2_error(r), 6) << ","
+          << fmt(m ? m->rcond : std::nan(""), 3) << "," << (m ? m->iterations() : 0) << ","
+          << (m ? m->stop_reason() : "") << "," << v.level << ",\"" << csv_field(v.reason) << "\"\n";
+      cases.push_back({{"sweep", sweep.name}, {"axis", sweep.axis}, {"value", value}, {"id", run.id},
+                       {"l2_error", m ? json(m->l2_error) : json()}, {"rcond", m ? json(m->rcond) : json()},
+                       {"iterations", m ? m->iterations() : 0}, {"stop_reason", m ? m->stop_reason() : ""},
+                       {"verdict", v.level}, {"reason", v.reason}});
+      if (!std::isfinite(value)) continue;  // no place on the axis (cg on the k_p axis)
+      Verdict& w = worst[{sweep.axis, run.formulation_label}][value];
+      if (w.level.empty() || rank.at(v.level) > rank.at(w.level)) w = v;
+    }
+  }
+  json trust = json::array();
+  const std::string table = trust_table(worst, trust);
+  std::ostringstream md;
+  md << "# " << scene.name << ": numerical extremes\n\n" << scene.description << "\n\n"
+     << "Each run gets a verdict: **ok**, **degraded** (error above the sweep's degraded factor times "
+        "its baseline, a factor condition estimate below 1e-12, or a slow DG iteration) or "
+        "**broken** (a breakdown, a non-finite or >= 100% error, a DG iteration that did not converge, "
+        "or an error above the broken factor times the baseline). The table gives, per axis and "
+        "formulation, the values where every run was ok and the nearest values on either side "
+        "where one was not.\n\n"
+     << table
+     << "\nEvery run with its verdict and reason: extremes.csv. Each sweep's own convergence report is "
+        "in its subfolder.\n\n";
   const json summary = {{"scene", scene.name}, {"trust", trust}, {"cases", cases}};
   write_file_atomically(out / "extremes.csv", csv.str());
   write_file_atomically(out / "extremes.json", summary.dump(1) + "\n");
-  write_file_atomically(out / "report.md", md.str());
-  std::cout << "\n" << md.str().substr(md.str().find("| axis"));
+  markdown = md.str();
+  std::cout << "\n" << table;
   return broken;
 }
 

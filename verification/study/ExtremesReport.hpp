@@ -12,10 +12,10 @@
 // the first nu, the cg formulation, the sweep's first mesh, or the coarsest level scaled by
 // (h / h_0)^expected_rate.
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "verification/model/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
@@ -26,14 +26,15 @@ struct Verdict {
 };
 
 /// The verdict of one run of a sweep, given the sweep's other runs (for the baseline).
-Verdict judge_run(const Scene& sweep, const nlohmann::json& run, const std::vector<nlohmann::json>& runs);
+Verdict judge_run(const Scene& sweep, const RunRecord& run, const std::vector<RunRecord>& runs);
 
 /// The value of the sweep's axis for a run (nu, k_p, L/D, r, regularization threshold, h_avg).
-double axis_value(const Scene& sweep, const nlohmann::json& run);
+double axis_value(const Scene& sweep, const RunRecord& run);
 
-/// Writes extremes.csv, extremes.json (deterministic) and report.md into `out`, and prints the
-/// trust table. `results[i]` are the runs of `scene.sweeps[i]`. Returns the number of broken runs.
-int write_extremes_report(const Scene& scene, const std::vector<std::vector<nlohmann::json>>& results,
-                          const std::filesystem::path& out);
+/// Writes extremes.csv and extremes.json (deterministic) into `out`, and prints the
+/// trust table. `results[i]` are the runs of `scene.sweeps[i]`. Returns the number of broken
+/// runs; `markdown` receives report.md's text (its picture is linked once drawn).
+int write_extremes_report(const Scene& scene, const std::vector<std::vector<RunRecord>>& results,
+                          const std::filesystem::path& out, std::string& markdown);
 
 }  // namespace vorodg

@@ -1,8 +1,9 @@
 #pragma once
-// A scene names one study (DESIGN.md "Studies, scenes and reports"): the problems, the material,
-// the mesh families with their levels and realizations, the formulations with their knobs. Every
-// key is documented in docs/scenes.md and validated: an unknown key or a wrong type is an error
-// naming the file and the key (with the nearest valid key suggested).
+// A scene names one study (docs/design.md, "Studies, scenes and reports"): the problems, the
+// material, the mesh families with their levels and realizations, the formulations with their
+// knobs. Every key is documented in docs/scenes.md and validated through the settings schema
+// (verification/model/SettingsSchema.hpp): an unknown key or a wrong type is an error naming the
+// file and the key (with the nearest valid key suggested).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "core/geometry/Rectangle.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "verification/SolveRun.hpp"
+#include "verification/model/Choices.hpp"
 
 namespace vorodg {
 
@@ -21,22 +23,25 @@ struct SceneMesh {
   MeshFamily family = MeshFamily::rcp;
   std::vector<double> sizes;     // d (rcp, tri) or h (hex, perturbed-hex, quad), coarse to fine
   int realizations = 1;
-  std::uint64_t seed = 1;
-  double perturbation = 0.3;
-  double regularization = 0.1;
+  std::uint64_t seed = MeshSpec{}.seed;
+  double perturbation = MeshSpec{}.perturbation;
+  double regularization = MeshSpec{}.regularization;
 };
 
 struct SceneFormulation {
   std::string label;  // default: the name, plus the knobs that differ from the defaults
-  SolveSettings settings;  // formulation name, element options, DG options, mean dilation
+  // Formulation name, element and DG options, mean dilation; and the scene's material (E, the
+  // first nu, plane, load) and outputs, so that a run needs only its problem, nu and k_p.
+  SolveSettings settings;
   std::vector<double> kp;  // DG: one run per value (empty for CG)
+  bool is_dg() const { return !kp.empty(); }
 };
 
 struct Scene {
   std::filesystem::path path;
   std::string name;
   std::string description;
-  std::string study = "convergence";  // convergence | penalty-sweep | patch-suite | trade-off | extremes
+  std::string study = "convergence";  // one of study_choices()
   std::vector<std::string> problems;
   Rectangle domain;
   double E = 1.0;

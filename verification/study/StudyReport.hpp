@@ -1,29 +1,32 @@
 #pragma once
-// From a study's results to what a researcher reads: statistics per (mesh, problem, material,
-// variant) and level over the realizations (mean, standard deviation, min, max, the values
-// themselves for CDFs), least-squares convergence rates with 95% intervals and the spread of the
-// per-realization rates between consecutive levels; then the console table (as deal.II's
-// ConvergenceTable), results.csv, summary.json (deterministic: no wall times), timings.json and
-// report.md with each rate beside the published one.
+// From a study's records to what a researcher reads: results.csv (one row per run),
+// summary.json (the statistics of StudySummary), timings.json, convergence.csv and the
+// convergence tables (ConvergenceTable: console text and Markdown from the same data), the
+// patch-suite verdicts, the rate-against-k_p trend and each rate beside the published one.
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
+#include "verification/model/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
 
-/// The deterministic summary of a study (the same results give the same bytes).
-nlohmann::json summarize_study(const Scene& scene, const std::vector<nlohmann::json>& results,
-                               const nlohmann::json& published);
+struct StudyReport {
+  std::string markdown;  // report.md without its pictures (they are drawn afterwards)
+  int unexpected = 0;    // patch-suite outcomes that differ from the expected ones
+};
 
-/// Writes results.csv, summary.json, timings.json and report.md into `out` (atomically) and
-/// prints the convergence tables. Returns the number of patch-suite runs whose outcome was not
-/// the expected one (0 for other studies).
-int write_study_report(const Scene& scene, const std::vector<nlohmann::json>& results,
-                       const std::filesystem::path& out);
+/// Writes results.csv, summary.json, timings.json and convergence.csv into `out` (atomically),
+/// prints the tables and returns the report's text.
+StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>& records,
+                               const std::filesystem::path& out);
 
-/// Least-squares slope of log(e) against log(h) and its 95% confidence half-width.
-std::pair<double, double> fit_rate(const std::vector<double>& h, const std::vector<double>& e);
+/// Appends a link to each of `pictures` that exists in `out`, then writes `out`/report.md.
+void finish_report_markdown(std::string markdown, const std::filesystem::path& out,
+                            const std::vector<std::string>& pictures);
+
+/// The pictures the plots of a study kind may draw, in the order report.md shows them.
+std::vector<std::string> study_pictures();
 
 }  // namespace vorodg

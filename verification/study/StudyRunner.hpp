@@ -4,27 +4,18 @@
 // thread, so results do not depend on the thread count. Each finished run is appended at once to
 // results.jsonl; a run already there is skipped, so an interrupted study resumes.
 #include <filesystem>
-#include <nlohmann/json.hpp>
-#include <string>
 #include <vector>
 
+#include "verification/model/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
 
-struct StudyRun {
-  std::string id;  // unique and stable: mesh/level/realization/problem/nu/variant
-  int mesh = 0, level = 0, realization = 0;
-  std::uint64_t seed = 0;
-  std::string problem;
-  double nu = 0.3;
-  int formulation = 0;
-  double kp = 0.0;      // 0 for CG
-  std::string variant;  // formulation label (+ k_p)
-};
-
-/// Every run the scene asks for, in a fixed order.
+/// Every run the scene asks for, in a fixed order. Throws InputError if two runs share an id.
 std::vector<StudyRun> expand_runs(const Scene& scene);
+
+/// The settings of one run: the formulation's, with the run's problem, material and k_p.
+SolveSettings run_settings(const Scene& scene, const StudyRun& run);
 
 struct StudyOptions {
   std::filesystem::path out;
@@ -32,8 +23,8 @@ struct StudyOptions {
   bool progress = true;
 };
 
-/// Runs what results.jsonl in `out` does not hold yet and returns every result (old and new),
-/// sorted by run id.
-std::vector<nlohmann::json> run_study(const Scene& scene, const StudyOptions& options);
+/// Runs what results.jsonl in `out` does not hold yet and returns every record (old and new),
+/// in the order of expand_runs.
+std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options);
 
 }  // namespace vorodg

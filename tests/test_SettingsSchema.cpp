@@ -1,0 +1,109 @@
+// The settings schema (verification/model/SettingsSchema): one name, default, range and doc per
+// setting; the one validation; and the documents that must agree with it (docs/scenes.md and
+// `vorodg solve --help`).
+#include "verification/model/SettingsSchema.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+#include <map>
+#include <cmath>
+
+#include "support/RunVorodg.hpp"
+
+namespace vorodg {
+namespace {
+
+const std::filesystem::path kRepo = std::filesystem::path(VORODG_TEST_DATA).parent_path().parent_path();
+
+
+TEST(SettingsSchema, KeysAndFlagsAreUnique) {
+  std::set<std::string> keys, flags;
+  for (const SettingSpec& spec : setting_specs()) {
+    EXPECT_TRUE(keys.insert(spec.key).second) << spec.key;
+    if (!spec.flag.empty()) {
+      EXPECT_TRUE(flags.insert(spec.flag).second) << spec.flag;
+    }
+    EXPECT_FALSE(spec.doc.empty()) << spec.key;
+  }
+}
+
+TEST(SettingsSchema, DefaultsAreTheDefaultSettingsAndValid) {
+  EXPECT_FALSE(check_settings(SolveSettings{}).has_value());
+  EXPECT_EQ(default_text(setting_spec("nu")), "0.3");
+  EXPECT_EQ(default_text(setting_spec("kp")), "1000");
+  EXPECT_EQ(default_text(setting_spec("correction")), "true");
+  EXPECT_EQ(default_text(setting_spec("name")), "cg");
+  EXPECT_EQ(default_text(setting_spec("plane")), "stress");
+}
+
+TEST(SettingsSchema, EachRangeNamesWhatItExpects) {
+  EXPECT_EQ(requirement_text(setting_spec("nu")), "-1 < nu < 0.5");
+  EXPECT_EQ(requirement_text(setting_spec("kp")), "k_p > 0");
+  EXPECT_EQ(requirement_text(setting_spec("rule")), "1, 3 or 6");
+  EXPECT_EQ(requirement_text(setting_spec("max_iterations")), "max_iterations >= 1");
+  EXPECT_EQ(requirement_text(setting_spec("refinement")), "0 <= refinement <= 4");
+  EXPECT_EQ(requirement_text(setting_spec("plane")), "stress or strain");
+}
+
+TEST(SettingsSchema, TheFirstBadSettingIsNamedWithItsValue) {
+  SolveSettings s;
+  s.nu = 0.5;
+  auto error = check_settings(s);
+  ASSERT_TRUE(error.has_value());
+  EXPECT_EQ(error->spec->key, "nu");
+  EXPECT_EQ(error->message.rfind("0.5: expected -1 < nu < 0.5", 0), 0u) << error->message;
+  s = SolveSettings{};
+  s.element.rule_points = 2;
+  error = check_settings(s);
+  ASSERT_TRUE(error.has_value());
+  EXPECT_EQ(error->spec->flag, "--rule");
+  s = SolveSettings{};
+  s.problem = "plate";
+  error = check_settings(s);
+  ASSERT_TRUE(error.has_value());
+  EXPECT_EQ(error->message, "'plate': expected beam, patch, patch-mixed, patch-traction or mms");
+  for (double bad : {0.0, -1.0, std::nan("")}) EXPECT_TRUE(check_value(setting_spec("kp"), bad)) << bad;
+}
+
+TEST(SettingsSchema, ScenesDocListsEveryKeyWithItsDefault) {
+  const std::string doc = testing::slurp(kRepo / "docs" / "scenes.md");
+  const std::map<SettingScope, std::string> prefix = {{SettingScope::material, "material."},
+                                                      {SettingScope::formulation, "formulations[]."},
+                                                      {SettingScope::outputs, "outputs."}};
+  for (const SettingSpec& spec : setting_specs()) {
+    if (!prefix.count(spec.scope)) continue;
+    const std::string key = "`" + prefix.at(spec.scope) + spec.key + "`";
+    const auto at = doc.find("| " + key + " |");
+    ASSERT_NE(at, std::string::npos) << key << " is not a row of docs/scenes.md";
+    const std::string row = doc.substr(at, doc.find('\n', at) - at);
+    const std::string d = default_text(spec);
+    EXPECT_TRUE(row.find("| " + d + " |") != std::string::npos ||
+                row.find("| `" + d + "` |") != std::string::npos)
+        << key << ": default " << d << " not in the row: " << row;
+    if (spec.choices) {
+      for (const NamedChoice& c : *spec.choices)
+        EXPECT_NE(row.find("`" + c.name + "`"), std::string::npos) << key << ": " << c.name;
+    }
+  }
+}
+
+TEST(SettingsSchema, SolveHelpListsEveryFlagWithItsDoc) {
+  const auto scratch = std::filesystem::temp_directory_path() / ("schema_help_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(scratch);
+  const auto r = testing::run_program(VORODG_EXE, {"solve", "--help"}, scratch);
+  std::filesystem::remove_all(scratch);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const SettingSpec& spec : setting_specs()) {
+    if (spec.flag.empty()) continue;
+    EXPECT_NE(r.out.find(spec.flag), std::string::npos) << spec.flag;
+    EXPECT_NE(r.out.find(spec.doc.substr(0, 20)), std::string::npos) << spec.doc;
+  }
+}
+
+}  // namespace
+}  // namespace vorodg

@@ -1,0 +1,51 @@
+#include "verification/cli/SettingOptions.hpp"
+
+#include "core/util/Errors.hpp"
+#include "verification/cli/CliSupport.hpp"
+#include "verification/model/SettingsSchema.hpp"
+
+namespace vorodg {
+
+void add_setting_options(CLI::App& cmd, SettingOptions& o) {
+  for (const SettingSpec& spec : setting_specs()) {
+    if (spec.flag.empty()) continue;
+    const SettingSpec* p = &spec;  // the schema is static: its address outlives the command
+    switch (spec.kind) {
+      case SettingKind::flag:
+        cmd.add_flag_callback(spec.flag, [p, &o] { p->set(o.settings, p->flag_negates ? 0.0 : 1.0); },
+                              spec.doc);
+        break;
+      case SettingKind::number:
+        cmd.add_option_function<double>(spec.flag, [p, &o](const double& v) { p->set(o.settings, v); },
+                                        spec.doc)
+            ->default_str(default_text(spec))
+            ->check(finite_number());
+        break;
+      case SettingKind::integer:
+        cmd.add_option_function<int>(spec.flag, [p, &o](const int& v) { p->set(o.settings, v); },
+                                     spec.doc + " (" + requirement_text(spec) + ")")
+            ->default_str(default_text(spec));
+        break;
+      case SettingKind::choice:
+        cmd.add_option_function<std::string>(
+               spec.flag, [p, &o](const std::string& v) { o.choice_texts[p->key] = v; },
+               spec.doc + ": " + choice_alternatives(*spec.choices))
+            ->default_str(default_text(spec));
+        break;
+    }
+  }
+}
+
+SolveSettings checked_settings(const SettingOptions& o) {
+  SolveSettings settings = o.settings;
+  for (const auto& [key, text] : o.choice_texts) {
+    const SettingSpec& spec = setting_spec(key);
+    if (const auto message = check_text(spec, text)) throw InputError(spec.flag + " " + *message);
+    spec.set_text(settings, text);
+  }
+  if (const auto error = check_settings(settings))
+    throw InputError(error->spec->flag + " " + error->message);
+  return settings;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,172 @@
+#include "verification/model/Choices.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string_view>
+
+#include "core/meshgen/MeshFamily.hpp"
+
+namespace vorodg {
+
+namespace {
+
+/// A table of choices, one per line: the name, at least two spaces, its doc.
+Choices table(std::string_view text) {
+  Choices out;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string_view line = text.substr(at, end - at);
+    at = end + 1;
+    const std::size_t gap = line.find("  ");
+    if (line.empty() || gap == std::string_view::npos) continue;
+    const std::size_t doc = line.find_first_not_of(' ', gap);
+    out.push_back({std::string(line.substr(0, gap)), std::string(line.substr(doc))});
+  }
+  return out;
+}
+
+}  // namespace
+
+const Choices& problem_choices() {
+  static const Choices choices = table(R"(
+beam            Timoshenko's cantilever on [0, L] x [-D/2, D/2], end load P
+patch           an affine field, Dirichlet data on every side
+patch-mixed     an affine field, Dirichlet on the left and bottom, tractions elsewhere
+patch-traction  an affine field with tractions on every side (singular: refused)
+mms             a smooth manufactured field with its body force
+)");
+  return choices;
+}
+
+const Choices& formulation_choices() {
+  static const Choices choices = table(R"(
+cg          continuous Galerkin on the vertex DOFs
+dg-penalty  DG, interior penalty only (inconsistent: fails the patch test)
+dg-al       DG, augmented Lagrangian: multipliers updated after each solve
+dg-nitsche  DG, iterative Nitsche with each cell's mean stress
+dg-sipg     DG, symmetric interior penalty (one solve)
+)");
+  return choices;
+}
+
+const Choices& generated_family_choices() {
+  // The names are core's (family_name); the docs say which size each family takes.
+  static const Choices choices = [] {
+    const std::pair<MeshFamily, const char*> docs[] = {
+        {MeshFamily::rcp, "randomly close-packed Voronoi (size d)"},
+        {MeshFamily::hex, "regular hexagons (size h)"},
+        {MeshFamily::perturbed_hex, "hexagons perturbed by r (size h)"},
+        {MeshFamily::tri, "Delaunay triangles (size d)"},
+        {MeshFamily::quad, "squares (size h)"}};
+    Choices out;
+    for (const auto& [family, doc] : docs) out.push_back({std::string(family_name(family)), doc});
+    return out;
+  }();
+  return choices;
+}
+
+const Choices& ordering_choices() {
+  static const Choices choices = table(R"(
+node-metis  METIS nested dissection on the node graph
+node-amd    approximate minimum degree on the node graph
+amd         approximate minimum degree on the DOF graph
+cholmod     CHOLMOD's own choice
+)");
+  return choices;
+}
+
+const Choices& plane_choices() {
+  static const Choices choices = table(R"(
+stress  plane stress
+strain  plane strain
+)");
+  return choices;
+}
+
+const Choices& study_choices() {
+  static const Choices choices = table(R"(
+convergence    errors and rates over levels and realizations
+penalty-sweep  the same, over a list of k_p per DG formulation
+patch-suite    every formulation on affine fields: pass or fail against the expected
+trade-off      error against wall time over the knobs; Pareto front
+extremes       sweeps to the numerical extremes, a verdict per run
+)");
+  return choices;
+}
+
+const Choices& sweep_axis_choices() {
+  static const Choices choices = table(R"(
+nu              Poisson's ratio
+kp              the DG penalty k_p
+aspect          L/D of the domain
+perturbation    r of the perturbed hexagons
+regularization  the rcp edge-collapse threshold
+h               h_avg
+)");
+  return choices;
+}
+
+const Choices& baseline_choices() {
+  static const Choices choices = table(R"(
+first-nu        the same variant at the first nu
+cg              the cg run on the same mesh
+first-mesh      the same variant and level on the sweep's first mesh
+coarsest-level  level 0 scaled by (h / h_0)^expected_rate
+none            no baseline
+)");
+  return choices;
+}
+
+bool is_choice(const Choices& choices, const std::string& name) {
+  for (const NamedChoice& c : choices)
+    if (c.name == name) return true;
+  return false;
+}
+
+std::string choice_list(const Choices& choices) {
+  std::string out;
+  for (std::size_t i = 0; i < choices.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].name;
+  return out;
+}
+
+std::string choice_alternatives(const Choices& choices) {
+  std::string out;
+  for (std::size_t i = 0; i < choices.size(); ++i) out += (i ? " | " : "") + choices[i].name;
+  return out;
+}
+
+namespace {
+
+constexpr FillOrdering kOrderings[] = {FillOrdering::node_metis, FillOrdering::node_amd,
+                                       FillOrdering::amd, FillOrdering::cholmod_default};
+constexpr PlaneModel kPlanes[] = {PlaneModel::stress, PlaneModel::strain};
+
+/// The enum value of a name: `values` lists the enum values in the order of `choices`.
+template <class Enum, std::size_t N>
+Enum parse_enum(const Choices& choices, const Enum (&values)[N], const std::string& name) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (choices.at(i).name == name) return values[i];
+  throw std::invalid_argument("'" + name + "': expected " + choice_list(choices));
+}
+
+template <class Enum, std::size_t N>
+std::string enum_name(const Choices& choices, const Enum (&values)[N], Enum value) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (values[i] == value) return choices.at(i).name;
+  return "?";
+}
+
+}  // namespace
+
+FillOrdering parse_ordering(const std::string& name) {
+  return parse_enum(ordering_choices(), kOrderings, name);
+}
+std::string ordering_name(FillOrdering ordering) {
+  return enum_name(ordering_choices(), kOrderings, ordering);
+}
+PlaneModel parse_plane(const std::string& name) { return parse_enum(plane_choices(), kPlanes, name); }
+std::string plane_name(PlaneModel plane) { return enum_name(plane_choices(), kPlanes, plane); }
+
+}  // namespace vorodg

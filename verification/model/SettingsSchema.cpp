@@ -1,0 +1,189 @@
+#include "verification/model/SettingsSchema.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/element/WeightFunctions.hpp"
+#include "core/quadrature/TriangleRule.hpp"
+
+namespace vorodg {
+namespace {
+
+using S = SolveSettings;
+
+SettingSpec number(std::string key, std::string flag, std::string symbol, std::string doc,
+                   SettingScope scope, SettingRange range, double& (*field)(S&)) {
+  SettingSpec spec{key, flag, symbol, doc, SettingKind::number, scope, range};
+  spec.get = [field](const S& s) { return field(const_cast<S&>(s)); };
+  spec.set = [field](S& s, double v) { field(s) = v; };
+  return spec;
+}
+
+SettingSpec integer(std::string key, std::string flag, std::string symbol, std::string doc,
+                    SettingScope scope, SettingRange range, int& (*field)(S&)) {
+  SettingSpec spec{key, flag, symbol, doc, SettingKind::integer, scope, range};
+  spec.get = [field](const S& s) { return field(const_cast<S&>(s)); };
+  spec.set = [field](S& s, double v) { field(s) = static_cast<int>(v); };
+  return spec;
+}
+
+SettingSpec flag(std::string key, std::string flag, std::string doc, SettingScope scope,
+                 bool& (*field)(S&), bool negates = false) {
+  SettingSpec spec{key, flag, key, doc, SettingKind::flag, scope, {}};
+  spec.flag_negates = negates;
+  spec.get = [field](const S& s) { return field(const_cast<S&>(s)) ? 1.0 : 0.0; };
+  spec.set = [field](S& s, double v) { field(s) = v != 0.0; };
+  return spec;
+}
+
+SettingSpec choice(std::string key, std::string flag, std::string doc, SettingScope scope,
+                   const Choices& choices, std::function<std::string(const S&)> get,
+                   std::function<void(S&, const std::string&)> set) {
+  SettingSpec spec{key, flag, key, doc, SettingKind::choice, scope, {}};
+  spec.choices = &choices;
+  spec.get_text = std::move(get);
+  spec.set_text = std::move(set);
+  return spec;
+}
+
+SettingRange above(double lower) { return {lower, std::nullopt, true, true, {}}; }
+SettingRange at_least(double lower) { return {lower, std::nullopt, false, true, {}}; }
+SettingRange one_of(std::vector<int> allowed) { return {std::nullopt, std::nullopt, true, true, allowed}; }
+
+std::vector<SettingSpec> make_specs() {
+  using Scope = SettingScope;
+  const std::vector<int> rules(kFanRulePoints.begin(), kFanRulePoints.end());
+  const std::vector<int> degrees(kWeightDegrees.begin(), kWeightDegrees.end());
+  return {
+      choice("problem", "--problem", "the boundary value problem", Scope::top, problem_choices(),
+             [](const S& s) { return s.problem; }, [](S& s, const std::string& v) { s.problem = v; }),
+      choice("name", "--formulation", "the formulation", Scope::formulation, formulation_choices(),
+             [](const S& s) { return s.formulation; },
+             [](S& s, const std::string& v) { s.formulation = v; }),
+      choice("plane", "--plane", "plane stress or plane strain", Scope::material, plane_choices(),
+             [](const S& s) { return plane_name(s.plane); },
+             [](S& s, const std::string& v) { s.plane = parse_plane(v); }),
+      number("E", "--E", "E", "Young's modulus", Scope::material, above(0),
+             [](S& s) -> double& { return s.E; }),
+      number("nu", "--nu", "nu", "Poisson's ratio", Scope::material, {-1.0, 0.5, true, true, {}},
+             [](S& s) -> double& { return s.nu; }),
+      number("load", "--load", "P", "beam: end load P", Scope::material, {},
+             [](S& s) -> double& { return s.load; }),
+      flag("mean_dilation", "--mean-dilation", "mean-dilation (B-bar) strain operator",
+           Scope::formulation, [](S& s) -> bool& { return s.mean_dilation; }),
+      flag("correction", "--no-correction", "divergence-consistency correction (the flag skips it)",
+           Scope::formulation, [](S& s) -> bool& { return s.element.divergence_correction; }, true),
+      integer("rule", "--rule", "rule", "quadrature points per fan triangle", Scope::formulation,
+              one_of(rules), [](S& s) -> int& { return s.element.rule_points; }),
+      integer("refinement", "--refinement", "refinement",
+              "weight functions: fan triangles cut into 4^refinement", Scope::formulation,
+              {0.0, static_cast<double>(kMaxWeightRefinement), false, false, {}},
+              [](S& s) -> int& { return s.element.weights.refinement; }),
+      integer("degree", "--degree", "degree", "weight functions: P1 or P2 on the sub-triangles",
+              Scope::formulation, one_of(degrees),
+              [](S& s) -> int& { return s.element.weights.degree; }),
+      number("kp", "--kp", "k_p", "DG penalty relative to E: eps = k_p E / h", Scope::formulation,
+             above(0), [](S& s) -> double& { return s.dg.kp; }),
+      flag("local_h", "--local-h", "DG: h per interface instead of h_avg", Scope::formulation,
+           [](S& s) -> bool& { return s.dg.local_h; }),
+      number("tolerance", "--tol", "tolerance", "DG iterations: relative change to stop at",
+             Scope::formulation, above(0), [](S& s) -> double& { return s.dg.tolerance; }),
+      integer("max_iterations", "--max-iter", "max_iterations", "DG iterations: at most this many",
+              Scope::formulation, at_least(1), [](S& s) -> int& { return s.dg.max_iterations; }),
+      flag("al_update_kp", "--al-update-kp",
+           "dg-al: update lambda with k_p E [u] (the report's Eq. 26) instead of eps [u]",
+           Scope::formulation, [](S& s) -> bool& { return s.dg.al_update_kp; }),
+      flag("sipg_mean_stress", "--sipg-mean-stress",
+           "dg-sipg: each cell's mean stress instead of its own stress on the edge",
+           Scope::formulation, [](S& s) -> bool& { return s.dg.sipg_mean_stress; }),
+      integer("sipg_sign", "--sipg-sign", "sipg_sign", "dg-sipg: -1 symmetric, +1 non-symmetric",
+              Scope::formulation, one_of({-1, 1}), [](S& s) -> int& { return s.dg.sipg_sign; }),
+      flag("energy_error", "", "compute the energy norm of the error too", Scope::outputs,
+           [](S& s) -> bool& { return s.energy_error; }),
+      integer("threads", "--threads", "threads", "threads for setup, assembly and errors",
+              Scope::command_line, at_least(1), [](S& s) -> int& { return s.element.threads; }),
+      choice("ordering", "--ordering", "fill-reducing ordering of the sparse factor",
+             Scope::command_line, ordering_choices(),
+             [](const S& s) { return ordering_name(s.ordering); },
+             [](S& s, const std::string& v) { s.ordering = parse_ordering(v); }),
+  };
+}
+
+std::string bound_text(double x) { return exact_text(x); }
+
+}  // namespace
+
+const std::vector<SettingSpec>& setting_specs() {
+  static const std::vector<SettingSpec> specs = make_specs();
+  return specs;
+}
+
+const SettingSpec& setting_spec(const std::string& key) {
+  for (const SettingSpec& spec : setting_specs())
+    if (spec.key == key) return spec;
+  throw std::out_of_range("no setting '" + key + "'");
+}
+
+std::string exact_text(double x) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, end);
+}
+
+std::string value_text(const SettingSpec& spec, const SolveSettings& settings) {
+  switch (spec.kind) {
+    case SettingKind::choice: return spec.get_text(settings);
+    case SettingKind::flag: return spec.get(settings) != 0.0 ? "true" : "false";
+    default: return exact_text(spec.get(settings));
+  }
+}
+
+std::string default_text(const SettingSpec& spec) { return value_text(spec, SolveSettings{}); }
+
+std::string requirement_text(const SettingSpec& spec) {
+  if (spec.kind == SettingKind::choice) return choice_list(*spec.choices);
+  if (spec.kind == SettingKind::flag) return "true or false";
+  const SettingRange& r = spec.range;
+  if (!r.allowed.empty()) {
+    std::string out;
+    for (std::size_t i = 0; i < r.allowed.size(); ++i)
+      out += (i == 0 ? "" : i + 1 == r.allowed.size() ? " or " : ", ") + std::to_string(r.allowed[i]);
+    return out;
+  }
+  const std::string lo = r.lower ? bound_text(*r.lower) + (r.lower_open ? " < " : " <= ") : "";
+  const std::string hi = r.upper ? (r.upper_open ? " < " : " <= ") + bound_text(*r.upper) : "";
+  if (r.lower && !r.upper) return spec.symbol + (r.lower_open ? " > " : " >= ") + bound_text(*r.lower);
+  if (!r.lower && !r.upper) return "a finite " + spec.symbol;
+  return lo + spec.symbol + hi;
+}
+
+std::optional<std::string> check_value(const SettingSpec& spec, double value) {
+  const SettingRange& r = spec.range;
+  bool ok = std::isfinite(value);
+  if (ok && !r.allowed.empty()) {
+    ok = false;
+    for (int allowed : r.allowed) ok = ok || value == allowed;
+  }
+  if (ok && r.lower) ok = r.lower_open ? value > *r.lower : value >= *r.lower;
+  if (ok && r.upper) ok = r.upper_open ? value < *r.upper : value <= *r.upper;
+  if (ok) return std::nullopt;
+  return exact_text(value) + ": expected " + requirement_text(spec) + " (" + spec.doc + ")";
+}
+
+std::optional<std::string> check_text(const SettingSpec& spec, const std::string& text) {
+  if (is_choice(*spec.choices, text)) return std::nullopt;
+  return "'" + text + "': expected " + requirement_text(spec);
+}
+
+std::optional<SettingError> check_settings(const SolveSettings& settings) {
+  for (const SettingSpec& spec : setting_specs()) {
+    const auto message = spec.kind == SettingKind::choice ? check_text(spec, spec.get_text(settings))
+                         : spec.kind == SettingKind::flag ? std::nullopt
+                                                          : check_value(spec, spec.get(settings));
+    if (message) return SettingError{&spec, *message};
+  }
+  return std::nullopt;
+}
+
+}  // namespace vorodg

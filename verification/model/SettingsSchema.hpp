@@ -1,0 +1,70 @@
+#pragma once
+// One schema of every setting of a solve: its scene key, command-line flag, type, default, range
+// and one-line doc. Defaults are read from a default-constructed SolveSettings (the one place
+// they are written); ranges are stated here once. The command line (verification/cli) and the
+// scene reader (verification/study) are thin adapters over it, check_settings() is the one
+// validation, and `--help` and docs/scenes.md are generated from or tested against it.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "verification/SolveRun.hpp"
+#include "verification/model/Choices.hpp"
+
+namespace vorodg {
+
+enum class SettingKind { number, integer, flag, choice };
+/// Where a setting lives in a scene: the top level, `material`, `formulations[i]`, `outputs`;
+/// `command_line` settings exist only as `vorodg solve` options.
+enum class SettingScope { top, material, formulation, outputs, command_line };
+
+struct SettingRange {
+  std::optional<double> lower, upper;  // numbers and integers
+  bool lower_open = true, upper_open = true;
+  std::vector<int> allowed;  // integers: the only values allowed (empty: any in the range)
+};
+
+struct SettingSpec {
+  std::string key;     // scene key within its scope's object
+  std::string flag;    // `vorodg solve` option; empty: none
+  std::string symbol;  // the quantity's name in messages ("k_p", "nu")
+  std::string doc;
+  SettingKind kind = SettingKind::number;
+  SettingScope scope = SettingScope::formulation;
+  SettingRange range;
+  const Choices* choices = nullptr;  // choice settings
+  bool flag_negates = false;         // the flag sets the value to false (--no-correction)
+  // Numbers, integers and flags (0 or 1) travel as double; choices as their name.
+  std::function<double(const SolveSettings&)> get;
+  std::function<void(SolveSettings&, double)> set;
+  std::function<std::string(const SolveSettings&)> get_text;
+  std::function<void(SolveSettings&, const std::string&)> set_text;
+};
+
+/// Every setting, in the order `--help` and docs/scenes.md list them.
+const std::vector<SettingSpec>& setting_specs();
+/// The spec of a scene key; throws std::out_of_range for an unknown one.
+const SettingSpec& setting_spec(const std::string& key);
+
+/// The shortest text that reads back to the value (0.7, not 0.69999999999999996).
+std::string exact_text(double x);
+/// The setting's value in `settings` as text: numbers exact, flags true/false, choices by name.
+std::string value_text(const SettingSpec& spec, const SolveSettings& settings);
+/// The default, as text.
+std::string default_text(const SettingSpec& spec);
+/// What the range requires, for messages and docs: "-1 < nu < 0.5", "1, 3 or 6", "stress or strain".
+std::string requirement_text(const SettingSpec& spec);
+
+/// A value outside its range: "0.5: expected -1 < nu < 0.5"; none if it is valid.
+std::optional<std::string> check_value(const SettingSpec& spec, double value);
+std::optional<std::string> check_text(const SettingSpec& spec, const std::string& text);
+
+struct SettingError {
+  const SettingSpec* spec;
+  std::string message;  // without the setting's name: adapters add the flag or the scene key
+};
+/// The one validation of a solve's settings: the first setting out of its range, if any.
+std::optional<SettingError> check_settings(const SolveSettings& settings);
+
+}  // namespace vorodg

@@ -1,0 +1,19 @@
+#pragma once
+// The patch-suite verdicts: every run passes when both its errors are at most the scene's
+// patch tolerance; each verdict is compared with what the formulation is expected to do.
+#include <sstream>
+#include <vector>
+
+#include "verification/model/RunRecord.hpp"
+#include "verification/study/Scene.hpp"
+
+namespace vorodg {
+
+/// Whether a run of the patch suite is expected to pass: every formulation but dg-penalty (which
+/// is inconsistent); without the divergence correction, only on triangles and squares.
+bool expected_to_pass(const Scene& scene, const StudyRun& run);
+
+/// Prints the verdicts, appends their table to `md` and returns the number of unexpected ones.
+int write_patch_suite(const Scene& scene, const std::vector<RunRecord>& records, std::ostringstream& md);
+
+}  // namespace vorodg

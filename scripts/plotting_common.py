@@ -1,4 +1,5 @@
 """Helpers shared by the plotting scripts (Debian's numpy and matplotlib only)."""
+import math
 import os
 import tempfile
 
@@ -6,6 +7,11 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
+
+
+class InputError(Exception):
+    """A missing or malformed input file: one line on stderr, no traceback."""
 
 
 def save_atomically(fig, path, dpi):
@@ -28,3 +34,25 @@ def save_atomically(fig, path, dpi):
     finally:
         plt.close(fig)
     print(path)
+
+
+def light_grid(ax):
+    """Major and minor grid lines, faint enough not to compete with the data."""
+    ax.grid(which="major", alpha=0.35)
+    ax.grid(which="minor", alpha=0.12)
+
+
+def label_minor_ticks(axis, lo, hi):
+    """Plain numbers on the ticks of a log axis spanning [lo, hi]: on the powers of ten and, for
+    a span of a decade or two (a refinement study), on the 2x, 3x and 5x minor ticks too."""
+    span = math.log10(hi / lo) if lo > 0 and hi > lo else 0.0
+    mantissas = (2, 3, 5) if span <= 1.5 else (2, 5) if span <= 3.0 else ()
+
+    def minor(x, _pos):
+        mantissa = x / 10.0 ** math.floor(math.log10(x) + 1e-9)
+        m = round(mantissa)
+        return f"{x:g}" if m in mantissas and abs(mantissa - m) < 1e-6 else ""
+
+    axis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda x, _pos: f"{x:g}"))
+    axis.set_minor_formatter(matplotlib.ticker.FuncFormatter(minor))
+    axis.set_tick_params(which="both", labelsize=9)

@@ -18,7 +18,7 @@ test: build
 	cd build && ctest --output-on-failure -j $(JOBS)
 
 format:
-	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
+	clang-format-14 -i $$(git ls-files '*.cpp' '*.hpp')
 
 clean:
 	rm -rf build

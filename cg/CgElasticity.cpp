@@ -11,8 +11,7 @@
 namespace vorodg {
 
 CgElasticity::CgElasticity(const ElementTable& table, const ElasticityIntegrator& integrator,
-                           const BoundaryValueProblem& problem, int threads,
-                           FillOrdering ordering)
+                           const BoundaryValueProblem& problem, int threads, FillOrdering ordering)
     : table_(table),
       integrator_(integrator),
       problem_(problem),
@@ -28,8 +27,8 @@ void CgElasticity::run() {
 void CgElasticity::setup_system() {
   Stopwatch clock;
   const PolygonMesh& mesh = table_.mesh();
-  constraints_.emplace(mesh, problem_, [&](int c, int k) { return 2 * mesh.cell_vertices(c)[k]; },
-                       num_dofs());
+  constraints_.emplace(
+      mesh, problem_, [&](int c, int k) { return 2 * mesh.cell_vertices(c)[k]; }, num_dofs());
   seconds_["setup"] = clock.seconds();
 }
 
@@ -77,7 +76,8 @@ void CgElasticity::assemble_system() {
         assembler.add(local_nodes, cells.block(c, 2 * mesh.cell_size(c)), node_begin, node_end);
       }
     }
-    for (int c = first; c < last; ++c) add_lifting(c, cells.block(c, 2 * mesh.cell_size(c)), lifted);
+    for (int c = first; c < last; ++c)
+      add_lifting(c, cells.block(c, 2 * mesh.cell_size(c)), lifted);
   }
   K_ = assembler.release();
   rhs_ = constraints_->restrict(f - lifted);

@@ -41,7 +41,8 @@ class CgElasticity {
   const StageTimes& seconds() const { return seconds_; }
 
  private:
-  void add_lifting(int c, const Eigen::Ref<const Eigen::MatrixXd>& Kc, Eigen::VectorXd& lifted) const;
+  void add_lifting(int c, const Eigen::Ref<const Eigen::MatrixXd>& Kc,
+                   Eigen::VectorXd& lifted) const;
 
   const ElementTable& table_;
   const ElasticityIntegrator& integrator_;
@@ -50,8 +51,8 @@ class CgElasticity {
   FillOrdering ordering_;
 
   std::optional<DirichletConstraints> constraints_;
-  Eigen::SparseMatrix<double> K_;   // lower triangle of the free-free block
-  Eigen::VectorXd rhs_;             // free DOFs
+  Eigen::SparseMatrix<double> K_;  // lower triangle of the free-free block
+  Eigen::VectorXd rhs_;            // free DOFs
   Eigen::Matrix2Xd displacement_;
   FactorizationReport factorization_;
   StageTimes seconds_;

@@ -30,7 +30,8 @@ DgElasticity::DgElasticity(const ElementTable& table, const ElasticityIntegrator
       space_(table.mesh()),
       ops_(space_, integrator, table) {
   if (!(options.kp > 0.0) || !std::isfinite(options.kp))
-    throw InputError("penalty k_p = " + std::to_string(options.kp) + ": expected k_p > 0 (relative to E)");
+    throw InputError("penalty k_p = " + std::to_string(options.kp) +
+                     ": expected k_p > 0 (relative to E)");
   if (!(options.tolerance > 0.0)) throw InputError("DG tolerance: expected > 0");
   if (options.max_iterations < 1) throw InputError("DG maximum iterations: expected >= 1");
   if (options.sipg_sign != -1 && options.sipg_sign != 1)
@@ -52,8 +53,9 @@ double DgElasticity::penalty(const Interface& f) const {
 void DgElasticity::setup_system() {
   Stopwatch clock;
   // Every cell's copy of a vertex on a Dirichlet side carries the prescribed displacement.
-  constraints_.emplace(table_.mesh(), problem_,
-                       [&](int c, int k) { return space_.cell_offset(c) + 2 * k; }, num_dofs());
+  constraints_.emplace(
+      table_.mesh(), problem_, [&](int c, int k) { return space_.cell_offset(c) + 2 * k; },
+      num_dofs());
   seconds_["setup"] = clock.seconds();
 }
 
@@ -102,8 +104,10 @@ void DgElasticity::assemble_system() {
     for (Eigen::SparseMatrix<double>::InnerIterator it(full, col); it; ++it) {
       const int fi = constraints_->free_index(it.row()), fj = constraints_->free_index(col);
       if (fi < 0) continue;
-      if (fj >= 0) ff.emplace_back(fi, fj, it.value());
-      else fp.emplace_back(fi, col, it.value());
+      if (fj >= 0)
+        ff.emplace_back(fi, fj, it.value());
+      else
+        fp.emplace_back(fi, col, it.value());
     }
   A_.resize(num_free_dofs(), num_free_dofs());
   A_.setFromTriplets(ff.begin(), ff.end());
@@ -132,7 +136,8 @@ Eigen::VectorXd DgElasticity::interface_load(const Eigen::VectorXd& u) {
     Eigen::VectorXd local = Eigen::VectorXd::Zero(dofs.size());
     if (options_.method == DgMethod::augmented_lagrangian) {
       for (int q = 0; q < 2; ++q)
-        local -= rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() * lambda_[2 * i + q];
+        local -=
+            rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() * lambda_[2 * i + q];
     } else {
       Eigen::VectorXd uf(dofs.size());
       for (std::size_t k = 0; k < dofs.size(); ++k) uf[k] = u[dofs[k]];
@@ -153,15 +158,16 @@ void DgElasticity::solve() {
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   if (symmetric) {
     try {
-      factorization_ = cholesky.factorize(A_.triangularView<Eigen::Lower>(), {.ordering = options_.ordering});
+      factorization_ =
+          cholesky.factorize(A_.triangularView<Eigen::Lower>(), {.ordering = options_.ordering});
     } catch (const NumericalError&) {
       if (options_.method != DgMethod::sipg) throw;
       // Symmetric interior penalty is coercive only above a penalty threshold, which the large
       // one-sided gradients of RK shape functions at short edges push up.
-      throw NumericalError("dg-sipg: the matrix is not positive definite at k_p = " +
-                           fmt(options_.kp) +
-                           " E: the penalty is below the coercivity threshold of the interface "
-                           "terms on this mesh (raise --kp, or use --sipg-mean-stress)");
+      throw NumericalError(
+          "dg-sipg: the matrix is not positive definite at k_p = " + fmt(options_.kp) +
+          " E: the penalty is below the coercivity threshold of the interface "
+          "terms on this mesh (raise --kp, or use --sipg-mean-stress)");
     }
     seconds_["analysis"] = factorization_.seconds_analyze;
     seconds_["factorization"] = factorization_.seconds_factorize;
@@ -177,16 +183,19 @@ void DgElasticity::solve() {
     if (!x.allFinite()) throw NumericalError("the sparse solve produced non-finite values");
     return x;
   };
-  auto expand = [&](const Eigen::VectorXd& free_values) { return constraints_->expand(free_values); };
+  auto expand = [&](const Eigen::VectorXd& free_values) {
+    return constraints_->expand(free_values);
+  };
 
   clock.restart();
   u_ = expand(back_solve(load_));  // penalty / sipg: the answer; al, nitsche: the first iterate
   report_.iterations = 1;
   report_.stop_reason = "direct";
-  const bool iterative = options_.method == DgMethod::augmented_lagrangian ||
-                         options_.method == DgMethod::nitsche;
+  const bool iterative =
+      options_.method == DgMethod::augmented_lagrangian || options_.method == DgMethod::nitsche;
   double smallest_change = INFINITY;
-  if (iterative && report_.iterations >= options_.max_iterations) report_.stop_reason = "max-iterations";
+  if (iterative && report_.iterations >= options_.max_iterations)
+    report_.stop_reason = "max-iterations";
   while (iterative && report_.iterations < options_.max_iterations) {
     if (options_.method == DgMethod::augmented_lagrangian) {  // lambda <- lambda + eps [u]
       const SegmentRule& rule = gauss2_segment();
@@ -195,9 +204,10 @@ void DgElasticity::solve() {
         const std::vector<int> dofs = ops_.dofs(faces[i]);
         Eigen::VectorXd uf(dofs.size());
         for (std::size_t k = 0; k < dofs.size(); ++k) uf[k] = u_[dofs[k]];
-        const double step = options_.al_update_kp ? options_.kp * integrator_.material().E()
-                                                  : penalty(faces[i]);
-        for (int q = 0; q < 2; ++q) lambda_[2 * i + q] += step * (ops_.jump(faces[i], rule.t[q]) * uf);
+        const double step =
+            options_.al_update_kp ? options_.kp * integrator_.material().E() : penalty(faces[i]);
+        for (int q = 0; q < 2; ++q)
+          lambda_[2 * i + q] += step * (ops_.jump(faces[i], rule.t[q]) * uf);
       }
     }
     const Eigen::VectorXd next = expand(back_solve(load_ + interface_load(u_)));
@@ -242,8 +252,10 @@ std::vector<double> DgElasticity::edge_gaps() const {
   std::vector<double> gaps(table_.mesh().num_edges(), 0.0);
   for (const Interface& f : space_.interfaces())
     for (double t : {0.0, 1.0}) {
-      const Eigen::Vector2d u0 = (1 - t) * u_.segment<2>(f.dof_v0[0]) + t * u_.segment<2>(f.dof_v1[0]);
-      const Eigen::Vector2d u1 = (1 - t) * u_.segment<2>(f.dof_v0[1]) + t * u_.segment<2>(f.dof_v1[1]);
+      const Eigen::Vector2d u0 =
+          (1 - t) * u_.segment<2>(f.dof_v0[0]) + t * u_.segment<2>(f.dof_v1[0]);
+      const Eigen::Vector2d u1 =
+          (1 - t) * u_.segment<2>(f.dof_v0[1]) + t * u_.segment<2>(f.dof_v1[1]);
       gaps[f.edge] = std::max(gaps[f.edge], (u0 - u1).norm());
     }
   return gaps;

@@ -32,23 +32,23 @@ DgMethod parse_dg_method(const std::string& formulation);
 
 struct DgOptions {
   DgMethod method = DgMethod::nitsche;
-  double kp = 1e3;               // penalty relative to E: eps = kp * E / h
-  bool local_h = false;          // h per interface, (area_1 + area_2) / (2 length), not h_avg
-  double tolerance = 1e-10;      // relative change of u between iterations
+  double kp = 1e3;           // penalty relative to E: eps = kp * E / h
+  bool local_h = false;      // h per interface, (area_1 + area_2) / (2 length), not h_avg
+  double tolerance = 1e-10;  // relative change of u between iterations
   int max_iterations = 500;
-  bool al_update_kp = false;     // the report's Eq. 26: lambda <- lambda + kp E [u] (no 1/h)
-  bool sipg_mean_stress = false; // sipg with each cell's mean stress instead of its own
-  int sipg_sign = -1;            // -1 symmetric, +1 non-symmetric
+  bool al_update_kp = false;      // the report's Eq. 26: lambda <- lambda + kp E [u] (no 1/h)
+  bool sipg_mean_stress = false;  // sipg with each cell's mean stress instead of its own
+  int sipg_sign = -1;             // -1 symmetric, +1 non-symmetric
   FillOrdering ordering = FillOrdering::node_metis;  // of the sparse Cholesky factor
 };
 
 struct DgReport {
   int iterations = 0;
-  std::string stop_reason;   // direct, converged, max-iterations, diverged
-  double last_change = 0.0;  // relative change of the last iteration
-  double gap_norm = 0.0;     // (int_interfaces |[u]|^2)^1/2
-  double relative_gap = 0.0; // gap_norm / (int_interfaces |{u}|^2)^1/2
-  double penalty = 0.0;      // eps on an interface of size h_avg
+  std::string stop_reason;    // direct, converged, max-iterations, diverged
+  double last_change = 0.0;   // relative change of the last iteration
+  double gap_norm = 0.0;      // (int_interfaces |[u]|^2)^1/2
+  double relative_gap = 0.0;  // gap_norm / (int_interfaces |{u}|^2)^1/2
+  double penalty = 0.0;       // eps on an interface of size h_avg
   double seconds_per_iteration = 0.0;
 };
 
@@ -90,9 +90,9 @@ class DgElasticity {
 
   std::optional<DirichletConstraints> constraints_;
   Eigen::VectorXd load_, u_;
-  Eigen::SparseMatrix<double> A_;          // free-free block (full)
-  Eigen::SparseMatrix<double> A_fixed_;    // free rows, prescribed columns
-  std::vector<Eigen::Vector2d> lambda_;    // al: multiplier per interface quadrature point
+  Eigen::SparseMatrix<double> A_;        // free-free block (full)
+  Eigen::SparseMatrix<double> A_fixed_;  // free rows, prescribed columns
+  std::vector<Eigen::Vector2d> lambda_;  // al: multiplier per interface quadrature point
   FactorizationReport factorization_;
   DgReport report_;
   StageTimes seconds_;

@@ -13,10 +13,10 @@ namespace vorodg {
 
 struct Interface {
   int edge;
-  int cell[2];     // cell 1 (edge.cell0) and cell 2
-  int dof_v0[2];   // first DOF (x) of vertex v0's copy in each cell
-  int dof_v1[2];   // first DOF (x) of vertex v1's copy in each cell
-  Eigen::Vector2d a, b;  // end points v0 and v1
+  int cell[2];             // cell 1 (edge.cell0) and cell 2
+  int dof_v0[2];           // first DOF (x) of vertex v0's copy in each cell
+  int dof_v1[2];           // first DOF (x) of vertex v1's copy in each cell
+  Eigen::Vector2d a, b;    // end points v0 and v1
   Eigen::Vector2d normal;  // outward from cell 1
   double length;
   double h_local;  // (area of cell 1 + area of cell 2) / (2 length)

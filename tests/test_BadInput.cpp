@@ -64,9 +64,10 @@ std::vector<BadCase> load_cases() {
 }
 
 std::string substitute(std::string arg, const fs::path& out) {
-  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{data}", kData.string()},
-                                   {"{out}", out.string()}})
-    for (std::size_t at; (at = arg.find(key)) != std::string::npos;) arg.replace(at, key.size(), value);
+  for (const auto& [key, value] :
+       {std::pair<std::string, std::string>{"{data}", kData.string()}, {"{out}", out.string()}})
+    for (std::size_t at; (at = arg.find(key)) != std::string::npos;)
+      arg.replace(at, key.size(), value);
   return arg;
 }
 
@@ -80,7 +81,9 @@ std::vector<std::string> files_under(const fs::path& folder) {
 /// current folder would land in `folder` and be seen.
 class WorkingFolder {
  public:
-  explicit WorkingFolder(const fs::path& folder) : saved_(fs::current_path()) { fs::current_path(folder); }
+  explicit WorkingFolder(const fs::path& folder) : saved_(fs::current_path()) {
+    fs::current_path(folder);
+  }
   ~WorkingFolder() { fs::current_path(saved_); }
 
  private:
@@ -107,14 +110,16 @@ TEST_P(BadInput, IsRefusedCleanly) {
   std::string command = "vorodg";
   for (const auto& a : args) command += " " + quote(a);
   SCOPED_TRACE(command + "\n  exit " + std::to_string(r.exit_code) + ", signal " +
-               std::to_string(r.signal) + "\n  stderr: " + r.err + "  stdout: " + r.out.substr(0, 600));
+               std::to_string(r.signal) + "\n  stderr: " + r.err +
+               "  stdout: " + r.out.substr(0, 600));
 
   EXPECT_EQ(r.signal, 0) << "killed by a signal";
   EXPECT_EQ(r.exit_code, c.exit_code);
   EXPECT_EQ(r.err_lines(), 1) << "expected exactly one line on stderr";
   const std::string prefix = c.exit_code == 3 ? "vorodg: numerical breakdown: " : "vorodg: error: ";
   EXPECT_TRUE(r.err.starts_with(prefix)) << "expected the line to start with '" << prefix << "'";
-  EXPECT_NE(r.err.find(c.mention), std::string::npos) << "expected stderr to mention '" << c.mention << "'";
+  EXPECT_NE(r.err.find(c.mention), std::string::npos)
+      << "expected stderr to mention '" << c.mention << "'";
   EXPECT_EQ(r.err.find("terminate called"), std::string::npos);
 
   for (const auto& folder : {out, cwd})
@@ -130,7 +135,9 @@ TEST_P(BadInput, IsRefusedCleanly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(load_cases()),
-                         [](const ::testing::TestParamInfo<BadCase>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<BadCase>& info) {
+                           return info.param.name;
+                         });
 
 // The table itself: readable, names usable as test names and unique, exit codes 2 or 3, every
 // placeholder known, and every input made for it (bad/scenes, bad/meshes) used by some row.
@@ -144,9 +151,9 @@ TEST(BadInputTable, IsWellFormedAndCoversEveryFile) {
   for (const BadCase& c : cases) {
     EXPECT_TRUE(names.insert(c.name).second) << "duplicate case " << c.name;
     EXPECT_FALSE(c.name.empty());
-    EXPECT_TRUE(std::all_of(c.name.begin(), c.name.end(),
-                            [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; }))
-        << c.name;
+    EXPECT_TRUE(std::all_of(c.name.begin(), c.name.end(), [](char ch) {
+      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+    })) << c.name;
     EXPECT_TRUE(c.exit_code == 2 || c.exit_code == 3) << c.name;
     EXPECT_FALSE(c.mention.empty()) << c.name;
     for (const auto& a : c.args) {

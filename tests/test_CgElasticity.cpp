@@ -45,8 +45,8 @@ namespace {
 
 using testing::Family;
 using testing::kFamilies;
-using testing::table_of;
 using testing::make_mesh;
+using testing::table_of;
 using testing::test_name;
 
 constexpr double kBeamL = 4.618802153517006;  // L/D = 8/sqrt(3)
@@ -105,8 +105,8 @@ TEST_P(PatchTest, PassesWithTheCorrection) {
   const AffineField field(material, p.supports);
   const ElementTable& table = table_of(family_named(p.family), 3, true);
   const CgRun r = solve_cg(table, field);
-  std::cout << p.family << " " << field.name() << " corrected: L2 " << r.errors.l2_error << ", energy "
-            << r.errors.energy_error << ", nodal " << r.nodal_error << "\n";
+  std::cout << p.family << " " << field.name() << " corrected: L2 " << r.errors.l2_error
+            << ", energy " << r.errors.energy_error << ", nodal " << r.nodal_error << "\n";
   EXPECT_LT(r.errors.l2_error, 1e-10);
   EXPECT_LT(r.errors.energy_error, 1e-10);
   EXPECT_LT(r.nodal_error, 1e-10);
@@ -149,13 +149,16 @@ TEST_P(PatchTest, WithoutTheCorrection) {
 std::vector<PatchCase> patch_cases() {
   std::vector<PatchCase> cases;
   for (const char* f : {"rcp", "hex", "perturbed-hex-0.3", "perturbed-hex-0.4", "tri", "quad"})
-    for (auto s : {AffineField::Supports::dirichlet, AffineField::Supports::mixed}) cases.push_back({f, s});
+    for (auto s : {AffineField::Supports::dirichlet, AffineField::Supports::mixed})
+      cases.push_back({f, s});
   return cases;
 }
 
-INSTANTIATE_TEST_SUITE_P(Families, PatchTest, ::testing::ValuesIn(patch_cases()), [](const auto& info) {
-  return test_name(std::string(info.param.family) + "_" + supports_name(info.param.supports));
-});
+INSTANTIATE_TEST_SUITE_P(Families, PatchTest, ::testing::ValuesIn(patch_cases()),
+                         [](const auto& info) {
+                           return test_name(std::string(info.param.family) + "_" +
+                                            supports_name(info.param.supports));
+                         });
 
 TEST(CgElasticity, RefusesAProblemWithoutDirichletData) {
   const IsotropicElasticity material(1.0, 0.3, PlaneModel::stress);
@@ -181,11 +184,16 @@ Eigen::Matrix2Xd p1_solution(const PolygonMesh& mesh, const ExactSolution& probl
   const Eigen::Matrix3d& D = problem.material().D();
   auto on_side = [&](const Point& p, Side s) {
     switch (s) {
-      case Side::left: return std::abs(p.x() - dom.x0()) < tol;
-      case Side::right: return std::abs(p.x() - dom.x1()) < tol;
-      case Side::bottom: return std::abs(p.y() - dom.y0()) < tol;
-      case Side::top: return std::abs(p.y() - dom.y1()) < tol;
-      default: return false;
+      case Side::left:
+        return std::abs(p.x() - dom.x0()) < tol;
+      case Side::right:
+        return std::abs(p.x() - dom.x1()) < tol;
+      case Side::bottom:
+        return std::abs(p.y() - dom.y0()) < tol;
+      case Side::top:
+        return std::abs(p.y() - dom.y1()) < tol;
+      default:
+        return false;
     }
   };
   const Side sides[] = {Side::left, Side::right, Side::bottom, Side::top};
@@ -208,13 +216,15 @@ Eigen::Matrix2Xd p1_solution(const PolygonMesh& mesh, const ExactSolution& probl
     const auto t = mesh.cell_vertices(c);
     EXPECT_EQ(t.size(), 3u) << "cell " << c << " is not a triangle";
     const Point p[3] = {mesh.vertex(t[0]), mesh.vertex(t[1]), mesh.vertex(t[2])};
-    const double area2 = (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+    const double area2 =
+        (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
     EXPECT_GT(area2, 0.0) << "cell " << c;
     Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
     for (int i = 0; i < 3; ++i) {
       const Point& pj = p[(i + 1) % 3];
       const Point& pk = p[(i + 2) % 3];
-      const double b = (pj.y() - pk.y()) / area2, cc = (pk.x() - pj.x()) / area2;  // d lambda_i / dx, dy
+      const double b = (pj.y() - pk.y()) / area2,
+                   cc = (pk.x() - pj.x()) / area2;  // d lambda_i / dx, dy
       B(0, 2 * i) = b;
       B(1, 2 * i + 1) = cc;
       B(2, 2 * i) = cc;
@@ -222,7 +232,8 @@ Eigen::Matrix2Xd p1_solution(const PolygonMesh& mesh, const ExactSolution& probl
     }
     const Eigen::Matrix<double, 6, 6> Ke = 0.5 * area2 * B.transpose() * D * B;
     for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) triplets.emplace_back(2 * t[i / 2] + i % 2, 2 * t[j / 2] + j % 2, Ke(i, j));
+      for (int j = 0; j < 6; ++j)
+        triplets.emplace_back(2 * t[i / 2] + i % 2, 2 * t[j / 2] + j % 2, Ke(i, j));
     // Body force: zero for the problems compared here (up to rounding in -div sigma).
     const Point centroid = (p[0] + p[1] + p[2]) / 3;
     EXPECT_LT(problem.body_force(centroid).norm(), 1e-12 * (1 + problem.stress(centroid).norm()));
@@ -268,7 +279,8 @@ Eigen::Matrix2Xd p1_solution(const PolygonMesh& mesh, const ExactSolution& probl
   std::vector<Eigen::Triplet<double>> ff;
   for (int k = 0; k < K.outerSize(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(K, k); it; ++it)
-      if (index[it.row()] >= 0 && index[it.col()] >= 0) ff.emplace_back(index[it.row()], index[it.col()], it.value());
+      if (index[it.row()] >= 0 && index[it.col()] >= 0)
+        ff.emplace_back(index[it.row()], index[it.col()], it.value());
   const int nf = static_cast<int>(free.size());
   Eigen::SparseMatrix<double> Kff(nf, nf);
   Kff.setFromTriplets(ff.begin(), ff.end());
@@ -288,7 +300,8 @@ double relative_max_difference(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd
 class TriangleEquivalence : public ::testing::Test {
  protected:
   static const PolygonMesh& mesh() {
-    static const PolygonMesh m = make_mesh(MeshFamily::tri, Rectangle(0.0, -0.5, 4.0, 0.5), 0.1, 11);
+    static const PolygonMesh m =
+        make_mesh(MeshFamily::tri, Rectangle(0.0, -0.5, 4.0, 0.5), 0.1, 11);
     return m;
   }
   void compare(const ExactSolution& problem, const ElementOptions& options) {
@@ -363,8 +376,9 @@ TEST(CgElasticity, BeamConvergence) {
   settings.nu = 0.3;
   settings.load = 1.0;
   Stopwatch clock;
-  for (const auto& [family, name] : {std::pair{MeshFamily::hex, std::string("hex")},
-                                     std::pair{MeshFamily::perturbed_hex, std::string("perturbed-hex")}}) {
+  for (const auto& [family, name] :
+       {std::pair{MeshFamily::hex, std::string("hex")},
+        std::pair{MeshFamily::perturbed_hex, std::string("perturbed-hex")}}) {
     for (double h : levels) {
       const PolygonMesh mesh = make_mesh(family, domain, h, /*seed=*/2024, /*r=*/0.3);
       for (bool correction : {true, false}) {
@@ -385,15 +399,20 @@ TEST(CgElasticity, BeamConvergence) {
     const double rate_l2 = least_squares_slope(s.h, s.l2);
     const double rate_energy = least_squares_slope(s.h, s.energy);
     rates[key] = {rate_l2, rate_energy};
-    std::cout << "  " << key.first << (key.second ? ", corrected" : ", UNCORRECTED")
-              << ": L2 rate " << std::setprecision(4) << rate_l2 << ", energy rate " << rate_energy << "\n";
+    std::cout << "  " << key.first << (key.second ? ", corrected" : ", UNCORRECTED") << ": L2 rate "
+              << std::setprecision(4) << rate_l2 << ", energy rate " << rate_energy << "\n";
     for (std::size_t i = 0; i < s.h.size(); ++i)
-      std::cout << "    cells " << std::setw(6) << s.cells[i] << "  h_avg " << std::setw(10) << s.h[i]
-                << "  L2 " << std::setw(11) << s.l2[i] << "  energy " << std::setw(11) << s.energy[i]
-                << (i > 0 ? "  (pairwise L2 rate " : "")
-                << (i > 0 ? std::to_string(std::log(s.l2[i - 1] / s.l2[i]) / std::log(s.h[i - 1] / s.h[i])) : "")
+      std::cout << "    cells " << std::setw(6) << s.cells[i] << "  h_avg " << std::setw(10)
+                << s.h[i] << "  L2 " << std::setw(11) << s.l2[i] << "  energy " << std::setw(11)
+                << s.energy[i] << (i > 0 ? "  (pairwise L2 rate " : "")
+                << (i > 0 ? std::to_string(std::log(s.l2[i - 1] / s.l2[i]) /
+                                           std::log(s.h[i - 1] / s.h[i]))
+                          : "")
                 << (i > 0 ? ", energy " : "")
-                << (i > 0 ? std::to_string(std::log(s.energy[i - 1] / s.energy[i]) / std::log(s.h[i - 1] / s.h[i])) + ")" : "")
+                << (i > 0 ? std::to_string(std::log(s.energy[i - 1] / s.energy[i]) /
+                                           std::log(s.h[i - 1] / s.h[i])) +
+                                ")"
+                          : "")
                 << "\n";
     std::cout << std::setprecision(6);
   }
@@ -402,10 +421,13 @@ TEST(CgElasticity, BeamConvergence) {
     EXPECT_GE(corrected.first, 1.8) << name << " corrected L2 rate";
     EXPECT_GE(corrected.second, 0.9) << name << " corrected energy rate";
   }
-  const double uncorrected_finest = series[std::make_pair(std::string("perturbed-hex"), false)].energy.back();
-  const double corrected_finest = series[std::make_pair(std::string("perturbed-hex"), true)].energy.back();
+  const double uncorrected_finest =
+      series[std::make_pair(std::string("perturbed-hex"), false)].energy.back();
+  const double corrected_finest =
+      series[std::make_pair(std::string("perturbed-hex"), true)].energy.back();
   EXPECT_GT(uncorrected_finest, corrected_finest)
-      << "perturbed-hex: the uncorrected energy error at the finest level should exceed the corrected one";
+      << "perturbed-hex: the uncorrected energy error at the finest level should exceed the "
+         "corrected one";
 }
 
 // ------------------------------------------------------------------------------------------
@@ -414,7 +436,8 @@ TEST(CgElasticity, BeamConvergence) {
 
 TEST(CgElasticity, MeanDilationRemovesLocking) {
   const Rectangle domain(0.0, -0.5, kBeamL, 0.5);
-  const PolygonMesh mesh = make_mesh(MeshFamily::perturbed_hex, domain, 0.05, /*seed=*/2024, /*r=*/0.2);
+  const PolygonMesh mesh =
+      make_mesh(MeshFamily::perturbed_hex, domain, 0.05, /*seed=*/2024, /*r=*/0.2);
   SolveSettings s;
   s.problem = "beam";
   s.plane = PlaneModel::strain;
@@ -425,7 +448,8 @@ TEST(CgElasticity, MeanDilationRemovesLocking) {
       s.mean_dilation = md;
       r[{nu, md}] = run_solve(mesh, s);
     }
-  std::cout << "plane strain beam, perturbed-hex r = 0.2, h = 0.05 (" << mesh.num_cells() << " cells):\n";
+  std::cout << "plane strain beam, perturbed-hex r = 0.2, h = 0.05 (" << mesh.num_cells()
+            << " cells):\n";
   for (const auto& [key, res] : r)
     std::cout << "  nu " << key.first << (key.second ? ", mean dilation   " : ", standard B      ")
               << ": L2 " << res.l2_error << ", energy " << res.energy_error << "\n";
@@ -446,7 +470,8 @@ TEST(CgElasticity, ThreadCountDoesNotChangeTheSolution) {
   const IsotropicElasticity material(1.0, 0.3, PlaneModel::stress);
   const ManufacturedSolution mms(material, table.mesh().domain());
   const AffineField mixed(material, AffineField::Supports::mixed);
-  for (const ExactSolution* problem : {static_cast<const ExactSolution*>(&mms), static_cast<const ExactSolution*>(&mixed)})
+  for (const ExactSolution* problem :
+       {static_cast<const ExactSolution*>(&mms), static_cast<const ExactSolution*>(&mixed)})
     for (bool md : {false, true}) {
       const ElasticityIntegrator integrator(table, material, md);
       CgElasticity one(table, integrator, *problem, 1), two(table, integrator, *problem, 2);
@@ -463,8 +488,8 @@ TEST(CgElasticity, ThreadCountDoesNotChangeTheSolution) {
 // is large enough for METIS: about 1e4 unknowns) and the error integration, for CG and DG, with
 // and without mean dilation: the same bits for 1 and 2 threads.
 TEST(CgElasticity, WholePipelineIsThreadIndependent) {
-  const PolygonMesh mesh =
-      make_mesh(MeshFamily::perturbed_hex, Rectangle(0.0, -0.5, kBeamL, 0.5), 0.05, /*seed=*/3, 0.3);
+  const PolygonMesh mesh = make_mesh(MeshFamily::perturbed_hex, Rectangle(0.0, -0.5, kBeamL, 0.5),
+                                     0.05, /*seed=*/3, 0.3);
   for (const char* formulation : {"cg", "dg-nitsche"})
     for (bool md : {false, true}) {
       SolveSettings s;
@@ -503,7 +528,8 @@ TEST(CgElasticity, DirichletValuesAreImposedExactly) {
   int on_left_geometrically = 0;
   for (int v = 0; v < mesh.num_vertices(); ++v) on_left_geometrically += mesh.vertex(v).x() == 0.0;
   EXPECT_EQ(static_cast<int>(left.size()), on_left_geometrically);
-  for (int v : left) EXPECT_EQ(cg.vertex_displacement().col(v), beam.displacement(mesh.vertex(v))) << "vertex " << v;
+  for (int v : left)
+    EXPECT_EQ(cg.vertex_displacement().col(v), beam.displacement(mesh.vertex(v))) << "vertex " << v;
   EXPECT_EQ(cg.num_dofs(), 2 * mesh.num_vertices());
   EXPECT_EQ(cg.num_free_dofs(), 2 * (mesh.num_vertices() - static_cast<int>(left.size())));
   // cell_dofs gathers the vertex values in loop order.
@@ -511,7 +537,8 @@ TEST(CgElasticity, DirichletValuesAreImposedExactly) {
     const Eigen::VectorXd u = cg.cell_dofs(c);
     const auto loop = mesh.cell_vertices(c);
     ASSERT_EQ(u.size(), 2 * static_cast<Eigen::Index>(loop.size()));
-    for (std::size_t k = 0; k < loop.size(); ++k) EXPECT_EQ(u.segment<2>(2 * k), cg.vertex_displacement().col(loop[k]));
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      EXPECT_EQ(u.segment<2>(2 * k), cg.vertex_displacement().col(loop[k]));
   }
   // Stage times.
   for (const char* stage : {"setup", "assembly", "factorization", "solve"}) {
@@ -542,9 +569,9 @@ TEST(CgElasticity, ManufacturedSolutionConverges) {
       energy.push_back(r.energy_error);
     }
     const double rate_l2 = least_squares_slope(h, l2), rate_energy = least_squares_slope(h, energy);
-    std::cout << "mms on " << family_name(family) << ": L2 " << l2[0] << " " << l2[1] << " " << l2[2]
-              << " (rate " << rate_l2 << "), energy " << energy[0] << " " << energy[1] << " " << energy[2]
-              << " (rate " << rate_energy << ")\n";
+    std::cout << "mms on " << family_name(family) << ": L2 " << l2[0] << " " << l2[1] << " "
+              << l2[2] << " (rate " << rate_l2 << "), energy " << energy[0] << " " << energy[1]
+              << " " << energy[2] << " (rate " << rate_energy << ")\n";
     EXPECT_GE(rate_l2, 1.8) << family_name(family);
     EXPECT_GE(rate_energy, 0.9) << family_name(family);
   }

@@ -32,10 +32,10 @@ class DgCommand : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("vorodg_test_DgCommand_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    io_ = fs::temp_directory_path() /
-          ("vorodg_test_DgCommand_io_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() / ("vorodg_test_DgCommand_" + std::string(info->name()) + "_" +
+                                        std::to_string(::getpid()));
+    io_ = fs::temp_directory_path() / ("vorodg_test_DgCommand_io_" + std::string(info->name()) +
+                                       "_" + std::to_string(::getpid()));
     for (const auto& d : {dir_, io_}) {
       fs::remove_all(d);
       fs::create_directories(d);
@@ -46,7 +46,9 @@ class DgCommand : public ::testing::Test {
     fs::remove_all(io_);
   }
 
-  RunResult run(const std::vector<std::string>& args) const { return testing::run_program(VORODG_EXE, args, io_); }
+  RunResult run(const std::vector<std::string>& args) const {
+    return testing::run_program(VORODG_EXE, args, io_);
+  }
 
   static std::string describe(const std::vector<std::string>& args, const RunResult& r) {
     std::string s = "vorodg";
@@ -70,15 +72,16 @@ class DgCommand : public ::testing::Test {
   fs::path dir_, io_;
 };
 
-const std::vector<std::string> kBeamArgs = {"solve", "--family", "rcp", "--d", "0.2", "--seed", "3",
-                                            "--problem", "beam"};
+const std::vector<std::string> kBeamArgs = {"solve",  "--family", "rcp",       "--d", "0.2",
+                                            "--seed", "3",        "--problem", "beam"};
 
 TEST_F(DgCommand, NitscheBeamWritesMetricsAndExplodedResult) {
   const fs::path out = dir_ / "result.vtu", metrics = dir_ / "metrics.json";
   std::vector<std::string> args = kBeamArgs;
   // ASCII, so the text checks below can read the values.
-  args.insert(args.end(), {"--formulation", "dg-nitsche", "--kp", "1e3", "--tol", "1e-10", "--max-iter", "500",
-                           "-o", out.string(), "--metrics", metrics.string(), "--ascii"});
+  args.insert(args.end(),
+              {"--formulation", "dg-nitsche", "--kp", "1e3", "--tol", "1e-10", "--max-iter", "500",
+               "-o", out.string(), "--metrics", metrics.string(), "--ascii"});
   const RunResult r = run(args);
   ASSERT_EQ(r.exit_code, 0) << describe(args, r);
   EXPECT_TRUE(r.err.empty()) << describe(args, r);
@@ -86,8 +89,9 @@ TEST_F(DgCommand, NitscheBeamWritesMetricsAndExplodedResult) {
   json m;
   ASSERT_NO_THROW(m = json::parse(testing::slurp(metrics)));
   EXPECT_EQ(m.value("formulation", ""), "dg-nitsche");
-  for (const char* key : {"kp", "penalty", "iterations", "last_change", "gap_norm", "relative_gap",
-                          "seconds_per_iteration", "l2_error", "energy_error", "h_avg", "dofs", "cells"}) {
+  for (const char* key :
+       {"kp", "penalty", "iterations", "last_change", "gap_norm", "relative_gap",
+        "seconds_per_iteration", "l2_error", "energy_error", "h_avg", "dofs", "cells"}) {
     ASSERT_TRUE(m.contains(key)) << "missing " << key << " in " << m.dump(2);
     ASSERT_TRUE(m[key].is_number()) << key << " in " << m.dump(2);
     EXPECT_TRUE(std::isfinite(m[key].get<double>())) << key;
@@ -96,7 +100,8 @@ TEST_F(DgCommand, NitscheBeamWritesMetricsAndExplodedResult) {
   ASSERT_TRUE(m.contains("stop_reason") && m["stop_reason"].is_string()) << m.dump(2);
   EXPECT_EQ(m["stop_reason"].get<std::string>(), "converged");
   EXPECT_EQ(m["kp"].get<double>(), 1e3);
-  EXPECT_NEAR(m["penalty"].get<double>(), 1e3 / m["h_avg"].get<double>(), 1e-9 * m["penalty"].get<double>());
+  EXPECT_NEAR(m["penalty"].get<double>(), 1e3 / m["h_avg"].get<double>(),
+              1e-9 * m["penalty"].get<double>());
   EXPECT_GT(m["iterations"].get<int>(), 1);
   EXPECT_LT(m["last_change"].get<double>(), 1e-10);
   EXPECT_LT(m["l2_error"].get<double>(), 0.05);
@@ -105,7 +110,8 @@ TEST_F(DgCommand, NitscheBeamWritesMetricsAndExplodedResult) {
   EXPECT_NE(vtu.find("Name=\"max_interface_gap\""), std::string::npos);
   EXPECT_NE(vtu.find("Name=\"displacement\""), std::string::npos);
   std::string lower = vtu;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   EXPECT_EQ(lower.find("nan"), std::string::npos);
   EXPECT_EQ(lower.find("inf"), std::string::npos);
   const VtuCells cells = parse_vtu(vtu, out.string());
@@ -124,7 +130,8 @@ TEST_F(DgCommand, NitscheBeamWritesMetricsAndExplodedResult) {
   spec.seed = 3;
   const PolygonMesh mesh = generate_mesh(spec).mesh;
   if (mesh.num_cells() == cell_count) {
-    EXPECT_EQ(static_cast<int>(cells.points.size()), static_cast<int>(mesh.cell_vertex_list().size()));
+    EXPECT_EQ(static_cast<int>(cells.points.size()),
+              static_cast<int>(mesh.cell_vertex_list().size()));
   }
 }
 

@@ -71,10 +71,14 @@ const Family& family_named(const std::string& name) {
 
 const char* method_name(DgMethod m) {
   switch (m) {
-    case DgMethod::penalty: return "dg-penalty";
-    case DgMethod::augmented_lagrangian: return "dg-al";
-    case DgMethod::nitsche: return "dg-nitsche";
-    case DgMethod::sipg: return "dg-sipg";
+    case DgMethod::penalty:
+      return "dg-penalty";
+    case DgMethod::augmented_lagrangian:
+      return "dg-al";
+    case DgMethod::nitsche:
+      return "dg-nitsche";
+    case DgMethod::sipg:
+      return "dg-sipg";
   }
   return "?";
 }
@@ -120,9 +124,10 @@ DgRun solve_dg(const ElementTable& table, const ExactSolution& problem, const Dg
 
 std::string describe(const DgRun& r) {
   std::ostringstream os;
-  os << "L2 " << r.errors.l2_error << ", energy " << r.errors.energy_error << ", nodal " << r.nodal_error
-     << "; " << r.report.stop_reason << " after " << r.report.iterations << " iterations (last change "
-     << r.report.last_change << ", relative gap " << r.report.relative_gap << ")";
+  os << "L2 " << r.errors.l2_error << ", energy " << r.errors.energy_error << ", nodal "
+     << r.nodal_error << "; " << r.report.stop_reason << " after " << r.report.iterations
+     << " iterations (last change " << r.report.last_change << ", relative gap "
+     << r.report.relative_gap << ")";
   return os.str();
 }
 
@@ -144,8 +149,8 @@ class DgPatchTest : public ::testing::TestWithParam<PatchCase> {
 
   DgRun run(const DgOptions& o, const std::string& label) {
     const DgRun r = solve_dg(table_, field_, o);
-    std::cout << GetParam().family << " " << field_.name() << " " << label << " k_p " << o.kp << ": "
-              << describe(r) << "\n";
+    std::cout << GetParam().family << " " << field_.name() << " " << label << " k_p " << o.kp
+              << ": " << describe(r) << "\n";
     return r;
   }
 
@@ -201,7 +206,8 @@ TEST_P(DgPatchTest, PenaltyFailsAndImprovesWithKp) {
   std::cout << GetParam().family << " " << field_.name() << " dg-penalty L2 error vs k_p:";
   for (std::size_t i = 0; i < kps.size(); ++i) std::cout << "  " << kps[i] << ": " << l2[i];
   std::cout << "\n";
-  for (std::size_t i = 0; i < kps.size(); ++i) EXPECT_GT(l2[i], 1e-8) << "k_p " << kps[i] << ": passes";
+  for (std::size_t i = 0; i < kps.size(); ++i)
+    EXPECT_GT(l2[i], 1e-8) << "k_p " << kps[i] << ": passes";
   for (std::size_t i = 1; i < kps.size(); ++i)
     EXPECT_LT(l2[i], l2[i - 1]) << "k_p " << kps[i - 1] << " -> " << kps[i];
 }
@@ -209,14 +215,18 @@ TEST_P(DgPatchTest, PenaltyFailsAndImprovesWithKp) {
 std::vector<PatchCase> patch_cases() {
   std::vector<PatchCase> cases;
   for (const char* f : {"rcp", "perturbed-hex-0.3", "perturbed-hex-0.4"})
-    for (auto s : {AffineField::Supports::dirichlet, AffineField::Supports::mixed}) cases.push_back({f, s});
+    for (auto s : {AffineField::Supports::dirichlet, AffineField::Supports::mixed})
+      cases.push_back({f, s});
   return cases;
 }
 
-INSTANTIATE_TEST_SUITE_P(Families, DgPatchTest, ::testing::ValuesIn(patch_cases()), [](const auto& info) {
-  return test_name(std::string(info.param.family) + "_" +
-                   (info.param.supports == AffineField::Supports::dirichlet ? "patch" : "patch_mixed"));
-});
+INSTANTIATE_TEST_SUITE_P(Families, DgPatchTest, ::testing::ValuesIn(patch_cases()),
+                         [](const auto& info) {
+                           return test_name(std::string(info.param.family) + "_" +
+                                            (info.param.supports == AffineField::Supports::dirichlet
+                                                 ? "patch"
+                                                 : "patch_mixed"));
+                         });
 
 // ------------------------------------------------------------------------------------------
 // 2.-5. The beam on a small rcp mesh
@@ -280,7 +290,8 @@ TEST(DgElasticity, ApproachesCgAsKpGrows) {
       } catch (const std::exception& e) {
         diff[m].push_back(std::numeric_limits<double>::quiet_NaN());
         std::cout << std::setw(14) << "THROWS";
-        failures.push_back(std::string(method_name(m)) + " at k_p " + std::to_string(kp) + " threw: " + e.what());
+        failures.push_back(std::string(method_name(m)) + " at k_p " + std::to_string(kp) +
+                           " threw: " + e.what());
         continue;
       }
       double d = 0.0;
@@ -288,7 +299,8 @@ TEST(DgElasticity, ApproachesCgAsKpGrows) {
       diff[m].push_back(std::sqrt(d) / cg_norm);
       std::cout << std::setw(14) << diff[m].back();
       if (m == DgMethod::augmented_lagrangian || m == DgMethod::nitsche) {
-        EXPECT_EQ(r.report.stop_reason, "converged") << method_name(m) << " k_p " << kp << ": " << describe(r);
+        EXPECT_EQ(r.report.stop_reason, "converged")
+            << method_name(m) << " k_p " << kp << ": " << describe(r);
       }
     }
     std::cout << "\n";
@@ -303,13 +315,15 @@ TEST(DgElasticity, ApproachesCgAsKpGrows) {
   // observed 4e-4, 4e-6, 2e-7; the last is near the conditioning floor of eps ~ 6e6 E).
   for (DgMethod m : {DgMethod::penalty, DgMethod::nitsche, DgMethod::sipg})
     for (std::size_t i = 1; i < kps.size(); ++i)
-      EXPECT_LT(diff[m][i], diff[m][i - 1]) << method_name(m) << ": k_p " << kps[i - 1] << " -> " << kps[i];
+      EXPECT_LT(diff[m][i], diff[m][i - 1])
+          << method_name(m) << ": k_p " << kps[i - 1] << " -> " << kps[i];
   for (DgMethod m : methods) EXPECT_LT(diff[m].back(), 1e-3) << method_name(m) << " at k_p 1e6";
 }
 
 bool report_is_finite(const DgReport& r) {
-  return std::isfinite(r.last_change) && std::isfinite(r.gap_norm) && std::isfinite(r.relative_gap) &&
-         std::isfinite(r.penalty) && std::isfinite(r.seconds_per_iteration);
+  return std::isfinite(r.last_change) && std::isfinite(r.gap_norm) &&
+         std::isfinite(r.relative_gap) && std::isfinite(r.penalty) &&
+         std::isfinite(r.seconds_per_iteration);
 }
 
 TEST(DgElasticity, NitscheWithATinyPenaltyReportsItsOutcome) {
@@ -319,9 +333,9 @@ TEST(DgElasticity, NitscheWithATinyPenaltyReportsItsOutcome) {
     DgElasticity dg(*b.table, integrator, *b.problem, options(DgMethod::nitsche, kp, 1e-10, 200));
     ASSERT_NO_THROW(dg.run()) << "k_p " << kp;
     const DgReport& r = dg.report();
-    std::cout << "dg-nitsche k_p " << kp << ", max 200 iterations: " << r.stop_reason << " after " << r.iterations
-              << " iterations, last change " << r.last_change << ", gap " << r.gap_norm << ", relative gap "
-              << r.relative_gap << "\n";
+    std::cout << "dg-nitsche k_p " << kp << ", max 200 iterations: " << r.stop_reason << " after "
+              << r.iterations << " iterations, last change " << r.last_change << ", gap "
+              << r.gap_norm << ", relative gap " << r.relative_gap << "\n";
     if (r.stop_reason == "converged") std::cout << "  NOTE: converged even at k_p = " << kp << "\n";
     const std::set<std::string> reasons = {"converged", "diverged", "max-iterations"};
     EXPECT_TRUE(reasons.count(r.stop_reason)) << "stop reason '" << r.stop_reason << "'";
@@ -333,9 +347,9 @@ TEST(DgElasticity, NitscheWithATinyPenaltyReportsItsOutcome) {
     if (r.stop_reason == "converged") {
       EXPECT_LT(r.last_change, 1e-10);
     }
-    EXPECT_TRUE(report_is_finite(r)) << "k_p " << kp << ": last change " << r.last_change << ", gap "
-                                     << r.gap_norm << ", relative gap " << r.relative_gap << ", penalty "
-                                     << r.penalty;
+    EXPECT_TRUE(report_is_finite(r))
+        << "k_p " << kp << ": last change " << r.last_change << ", gap " << r.gap_norm
+        << ", relative gap " << r.relative_gap << ", penalty " << r.penalty;
     bool finite = true;
     for (int c = 0; c < b.mesh.num_cells(); ++c) finite = finite && dg.cell_dofs(c).allFinite();
     EXPECT_TRUE(finite) << "k_p " << kp << ": the returned displacement holds NaN or infinity";
@@ -363,7 +377,8 @@ TEST(DgElasticity, NeverExceedsTheIterationLimit) {
   const Beam& b = beam();
   const ElasticityIntegrator integrator(*b.table, b.material, false);
   for (int limit : {1, 2}) {
-    DgElasticity dg(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, 1e-30, limit));
+    DgElasticity dg(*b.table, integrator, *b.problem,
+                    options(DgMethod::nitsche, 1e3, 1e-30, limit));
     ASSERT_NO_THROW(dg.run()) << "limit " << limit;
     EXPECT_EQ(dg.report().stop_reason, "max-iterations") << "limit " << limit;
     EXPECT_EQ(dg.report().iterations, limit) << "limit " << limit;
@@ -404,10 +419,12 @@ TEST(DgElasticity, DirichletCopiesCarryTheExactValue) {
         const int k = static_cast<int>(std::find(loop.begin(), loop.end(), v) - loop.begin());
         ASSERT_LT(k, static_cast<int>(loop.size()));
         const Eigen::Vector2d u = dg.cell_dofs(c).segment<2>(2 * k);
-        EXPECT_EQ(u, b.problem->displacement(mesh.vertex(v))) << label << ": vertex " << v << " in cell " << c;
+        EXPECT_EQ(u, b.problem->displacement(mesh.vertex(v)))
+            << label << ": vertex " << v << " in cell " << c;
         ++copies;
       }
-    EXPECT_GT(copies, static_cast<int>(left.size())) << "interior left vertices have several copies";
+    EXPECT_GT(copies, static_cast<int>(left.size()))
+        << "interior left vertices have several copies";
     EXPECT_EQ(dg.num_free_dofs(), dg.num_dofs() - 2 * copies) << label;
     EXPECT_EQ(dg.num_dofs(), 2 * static_cast<int>(mesh.cell_vertex_list().size()));
   }
@@ -454,8 +471,8 @@ TEST(DgElasticity, OwnStressSipgNeedsALargePenaltyAtShortEdges) {
     }
   }
   std::cout << "largest |traction operator| h_avg / E: point " << point << " (edge " << worst_edge
-            << ", length " << b.mesh.edge_length(worst_edge) / b.mesh.h_avg()
-            << " h_avg), mean " << mean << "\n";
+            << ", length " << b.mesh.edge_length(worst_edge) / b.mesh.h_avg() << " h_avg), mean "
+            << mean << "\n";
   DgElasticity low(*b.table, integrator, *b.problem, options(DgMethod::sipg, 1e3));
   try {
     low.run();
@@ -498,10 +515,10 @@ TEST(DgElasticity, ReportAndGaps) {
   for (const Interface& f : dg.space().interfaces()) {
     double expected = 0.0;
     for (int end = 0; end < 2; ++end) {
-      const Eigen::Vector2d u1 = dg.cell_dofs(f.cell[0]).segment<2>((end ? f.dof_v1[0] : f.dof_v0[0]) -
-                                                                     dg.space().cell_offset(f.cell[0]));
-      const Eigen::Vector2d u2 = dg.cell_dofs(f.cell[1]).segment<2>((end ? f.dof_v1[1] : f.dof_v0[1]) -
-                                                                     dg.space().cell_offset(f.cell[1]));
+      const Eigen::Vector2d u1 = dg.cell_dofs(f.cell[0]).segment<2>(
+          (end ? f.dof_v1[0] : f.dof_v0[0]) - dg.space().cell_offset(f.cell[0]));
+      const Eigen::Vector2d u2 = dg.cell_dofs(f.cell[1]).segment<2>(
+          (end ? f.dof_v1[1] : f.dof_v0[1]) - dg.space().cell_offset(f.cell[1]));
       expected = std::max(expected, (u1 - u2).norm());
     }
     EXPECT_DOUBLE_EQ(gaps[f.edge], expected) << "edge " << f.edge;
@@ -519,13 +536,20 @@ TEST(DgElasticity, ReportAndGaps) {
 TEST(DgElasticity, RefusesBadOptions) {
   const Beam& b = beam();
   const ElasticityIntegrator integrator(*b.table, b.material, false);
-  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN(),
+               inf = std::numeric_limits<double>::infinity();
   for (double kp : {0.0, -1.0, nan, inf})
-    EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, kp)), InputError)
+    EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, kp)),
+                 InputError)
         << "k_p " << kp;
-  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, 0.0)), InputError);
-  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, -1e-10)), InputError);
-  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, 1e-10, 0)), InputError);
+  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, 0.0)),
+               InputError);
+  EXPECT_THROW(
+      DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, -1e-10)),
+      InputError);
+  EXPECT_THROW(
+      DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, 1e-10, 0)),
+      InputError);
 }
 
 TEST(DgElasticity, ParsesTheFourMethods) {

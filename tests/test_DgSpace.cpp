@@ -25,8 +25,8 @@ namespace {
 
 using testing::Family;
 using testing::kFamilies;
-using testing::test_name;
 using testing::mesh_of;
+using testing::test_name;
 
 int local_index(const PolygonMesh& mesh, int c, int v) {
   const auto loop = mesh.cell_vertices(c);
@@ -103,7 +103,8 @@ TEST_P(DgSpaceFamilies, NormalIsOutwardFromCellOne) {
     EXPECT_NEAR(f.normal.dot(t), 0.0, 1e-14 * t.norm()) << "edge " << f.edge;
     EXPECT_GT(f.normal.dot(mid - c1), 0.0) << "edge " << f.edge << ": n points into cell 1";
     EXPECT_LT(f.normal.dot(mid - c2), 0.0) << "edge " << f.edge << ": n points out of cell 2";
-    EXPECT_GT(f.normal.dot(c2 - c1), 0.0) << "edge " << f.edge << ": n does not point towards cell 2";
+    EXPECT_GT(f.normal.dot(c2 - c1), 0.0)
+        << "edge " << f.edge << ": n does not point towards cell 2";
     // Cell 1 runs the edge v0 -> v1 counter-clockwise (so (t_y, -t_x) is its outward normal).
     const auto loop = mesh.cell_vertices(f.cell[0]);
     const int n = static_cast<int>(loop.size());
@@ -182,8 +183,9 @@ TEST(DgSpace, UnequalCellsLocalSize) {
     EXPECT_NEAR(f.h_local, expected, 1e-15);
     const Eigen::Vector2d d = mesh.cell_centroid(f.cell[1]) - mesh.cell_centroid(f.cell[0]);
     // Axis-aligned: the normal is the unit vector along the centroid offset's dominant axis.
-    const Eigen::Vector2d axis = std::abs(d.x()) > std::abs(d.y()) ? Eigen::Vector2d(d.x() > 0 ? 1 : -1, 0)
-                                                                   : Eigen::Vector2d(0, d.y() > 0 ? 1 : -1);
+    const Eigen::Vector2d axis = std::abs(d.x()) > std::abs(d.y())
+                                     ? Eigen::Vector2d(d.x() > 0 ? 1 : -1, 0)
+                                     : Eigen::Vector2d(0, d.y() > 0 ? 1 : -1);
     EXPECT_NEAR((f.normal - axis).norm(), 0.0, 1e-15);
   }
   // The middle-bottom / middle-top pair: areas 0.25 and 0.75 over length 1.

@@ -81,7 +81,8 @@ ZeroModeCount analyse(const PolygonMesh& mesh, int c, const Eigen::MatrixXd& K) 
   out.min_ratio = eig.eigenvalues().minCoeff() / largest;
   const Eigen::MatrixXd R = rigid_modes(mesh, c);
   for (int j = 0; j < 3; ++j)
-    out.rigid_residual = std::max(out.rigid_residual, (K * R.col(j)).norm() / (largest * R.col(j).norm()));
+    out.rigid_residual =
+        std::max(out.rigid_residual, (K * R.col(j)).norm() / (largest * R.col(j).norm()));
   return out;
 }
 
@@ -96,11 +97,12 @@ TEST(ElasticityIntegrator, ExactlyThreeRigidModesWithThreeAndSixPointRules) {
         const ElementTable& t = table_of(f, rule, correction);
         const PolygonMesh& mesh = t.mesh();
         for (const Config& cfg : kConfigs) {
-          const ElasticityIntegrator integ(t, IsotropicElasticity(1.0, 0.3, cfg.model), cfg.mean_dilation);
+          const ElasticityIntegrator integ(t, IsotropicElasticity(1.0, 0.3, cfg.model),
+                                           cfg.mean_dilation);
           EXPECT_EQ(integ.mean_dilation(), cfg.mean_dilation);
           const std::string what = std::string(f.name) + ", " + std::to_string(rule) +
-                                   "-point rule, correction " + (correction ? "on" : "off") +
-                                   ", " + cfg.name();
+                                   "-point rule, correction " + (correction ? "on" : "off") + ", " +
+                                   cfg.name();
           int bad = 0;
           Eigen::MatrixXd K;
           for (int c = 0; c < mesh.num_cells(); ++c) {
@@ -126,7 +128,8 @@ TEST(ElasticityIntegrator, OnePointRuleSpuriousZeroEnergyModes) {
     const ElementTable& t = table_of(f, 1, true);
     const PolygonMesh& mesh = t.mesh();
     for (const Config& cfg : kConfigs) {
-      const ElasticityIntegrator integ(t, IsotropicElasticity(1.0, 0.3, cfg.model), cfg.mean_dilation);
+      const ElasticityIntegrator integ(t, IsotropicElasticity(1.0, 0.3, cfg.model),
+                                       cfg.mean_dilation);
       int spurious = 0, extra_modes = 0;
       Eigen::MatrixXd K;
       for (int c = 0; c < mesh.num_cells(); ++c) {
@@ -141,7 +144,8 @@ TEST(ElasticityIntegrator, OnePointRuleSpuriousZeroEnergyModes) {
                 << spurious << " of " << mesh.num_cells()
                 << " cells have spurious zero-energy modes (" << extra_modes << " modes)\n";
       ::testing::Test::RecordProperty(
-          std::string("one_point_spurious_") + f.name + (cfg.model == PlaneModel::stress ? "_stress" : "_strain") +
+          std::string("one_point_spurious_") + f.name +
+              (cfg.model == PlaneModel::stress ? "_stress" : "_strain") +
               (cfg.mean_dilation ? "_bbar" : ""),
           spurious);
     }
@@ -176,8 +180,8 @@ TEST(ElasticityIntegrator, LinearFieldsGiveExactStrainStressAndBoundaryForces) {
         const ElasticityIntegrator integ(t, mat, cfg.mean_dilation);
         const Eigen::Vector3d eps = field.strain();
         const Eigen::Vector3d sigma = mat.D() * eps;
-        const std::string what = std::string(f.name) + ", " + std::to_string(rule) +
-                                 "-point rule, " + cfg.name();
+        const std::string what =
+            std::string(f.name) + ", " + std::to_string(rule) + "-point rule, " + cfg.name();
         double worst_strain = 0, worst_stress = 0, worst_force = 0;
         StrainOperator B;
         Eigen::MatrixXd K;
@@ -188,10 +192,12 @@ TEST(ElasticityIntegrator, LinearFieldsGiveExactStrainStressAndBoundaryForces) {
             integ.strain_operator(c, q, B);
             ASSERT_EQ(B.rows(), 3);
             ASSERT_EQ(B.cols(), 2 * n);
-            worst_strain = std::max(worst_strain, (B * u - eps).cwiseAbs().maxCoeff() / eps.cwiseAbs().maxCoeff());
+            worst_strain = std::max(
+                worst_strain, (B * u - eps).cwiseAbs().maxCoeff() / eps.cwiseAbs().maxCoeff());
           }
-          worst_stress = std::max(worst_stress, (integ.mean_stress(c, u) - sigma).cwiseAbs().maxCoeff() /
-                                                    sigma.cwiseAbs().maxCoeff());
+          worst_stress =
+              std::max(worst_stress, (integ.mean_stress(c, u) - sigma).cwiseAbs().maxCoeff() /
+                                         sigma.cwiseAbs().maxCoeff());
           // K u = nodal forces of the constant stress: node k gets sigma . b_k with b_k the
           // boundary integral of psi_k n.
           integ.cell_matrix(c, K);
@@ -205,7 +211,8 @@ TEST(ElasticityIntegrator, LinearFieldsGiveExactStrainStressAndBoundaryForces) {
             f_ext(2 * k) = sigma[0] * b.x() + sigma[2] * b.y();
             f_ext(2 * k + 1) = sigma[2] * b.x() + sigma[1] * b.y();
           }
-          worst_force = std::max(worst_force, (f_int - f_ext).cwiseAbs().maxCoeff() / f_ext.cwiseAbs().maxCoeff());
+          worst_force = std::max(
+              worst_force, (f_int - f_ext).cwiseAbs().maxCoeff() / f_ext.cwiseAbs().maxCoeff());
         }
         EXPECT_LT(worst_strain, 1e-12) << what << ": strain of a linear field";
         EXPECT_LT(worst_stress, 1e-12) << what << ": mean stress of a linear field";
@@ -242,7 +249,8 @@ TEST(ElasticityIntegrator, MeanDilationKeepsTheAverageVolumetricOperator) {
         const double h = std::sqrt(mesh.cell_area(c));
         worst = std::max(worst, (avg_b - avg).cwiseAbs().maxCoeff() * h / area);
       }
-      EXPECT_LT(worst, 1e-12) << f.name << (model == PlaneModel::stress ? " plane stress" : " plane strain");
+      EXPECT_LT(worst, 1e-12) << f.name
+                              << (model == PlaneModel::stress ? " plane stress" : " plane strain");
     }
 }
 
@@ -277,7 +285,8 @@ TEST(ElasticityIntegrator, MeanDilationVolumetricStrainIsTheCellMeanAtEveryPoint
           if (d > worst) worst = d, worst_cell = c;
         }
       }
-      EXPECT_LT(worst, 1e-12) << f.name << (model == PlaneModel::stress ? " plane stress" : " plane strain")
+      EXPECT_LT(worst, 1e-12) << f.name
+                              << (model == PlaneModel::stress ? " plane stress" : " plane strain")
                               << ": B-bar volumetric row differs from the cell mean by " << worst
                               << " (x h) in cell " << worst_cell;
     }
@@ -306,7 +315,8 @@ TEST(ElasticityIntegrator, MeanDilationLeavesOneVolumetricModeNearIncompressibil
       }
       std::cout << "[ locking ] " << f.name << ", plane strain nu = 0.5 - 1e-8, mean dilation "
                 << (mean_dilation ? "on" : "off") << ": " << cells_not_one << " of "
-                << mesh.num_cells() << " cells have != 1 lambda-sized eigenvalue (max " << max_stiff << ")\n";
+                << mesh.num_cells() << " cells have != 1 lambda-sized eigenvalue (max " << max_stiff
+                << ")\n";
       if (mean_dilation) {
         EXPECT_EQ(cells_not_one, 0) << f.name << ": B-bar should leave one volumetric mode";
       }

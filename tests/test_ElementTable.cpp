@@ -107,7 +107,8 @@ TEST(ElementTable, LayoutAndPositions) {
           ++per_fan[fp.fan];
           EXPECT_NE(std::find(r.bary.begin(), r.bary.end(), fp.bary), r.bary.end())
               << f.name << " cell " << c << " point " << q << " is not a point of the rule";
-          EXPECT_LT((t.position(c, fp) - t.point(c, q)).norm(), 1e-14 * (1 + h)) << f.name << " cell " << c;
+          EXPECT_LT((t.position(c, fp) - t.point(c, q)).norm(), 1e-14 * (1 + h))
+              << f.name << " cell " << c;
           EXPECT_GT(t.weight(c, q), 0.0) << f.name << " cell " << c << " point " << q;
         }
         for (int k = 0; k < n; ++k) EXPECT_EQ(per_fan[k], rule) << f.name << " cell " << c;
@@ -131,8 +132,8 @@ TEST(ElementTable, FanQuadratureWeightsSumToCellAreaAndIntegrateLinearsExactly) 
         }
         const double area = mesh.cell_area(c);
         worst_area = std::max(worst_area, std::abs(sum - area) / area);
-        worst_moment = std::max(worst_moment, (moment / area - mesh.cell_centroid(c)).norm() /
-                                                  mesh.domain().scale());
+        worst_moment = std::max(
+            worst_moment, (moment / area - mesh.cell_centroid(c)).norm() / mesh.domain().scale());
       }
       EXPECT_LT(worst_area, 1e-13) << f.name << " " << rule << "-point rule";
       EXPECT_LT(worst_moment, 1e-13) << f.name << " " << rule << "-point rule";
@@ -196,9 +197,11 @@ TEST(ElementTable, UncorrectedDefectIsReportedAndNonzeroOnGeneralPolygons) {
       if (rel > largest) largest = rel, largest_cell = c;
       largest_measured = std::max(largest_measured, measured);
     }
-    std::cout << "[ defect ] " << f.name << ": largest divergence defect without correction = "
-              << largest << " (relative to sqrt(cell area)), cell " << largest_cell << "\n";
-    ::testing::Test::RecordProperty(std::string("largest_defect_") + f.name, std::to_string(largest));
+    std::cout << "[ defect ] " << f.name
+              << ": largest divergence defect without correction = " << largest
+              << " (relative to sqrt(cell area)), cell " << largest_cell << "\n";
+    ::testing::Test::RecordProperty(std::string("largest_defect_") + f.name,
+                                    std::to_string(largest));
     const std::string name = f.name;
     if (name == "rcp" || name.starts_with("perturbed-hex")) {
       EXPECT_GT(largest, 1e-6) << f.name;
@@ -228,7 +231,8 @@ TEST(ElementTable, RegularInteriorHexagonsHaveNoDefect) {
     ++checked;
     worst = std::max(worst, t.divergence_defect(c) / cell_scale(mesh, c));
   }
-  std::cout << "[ defect ] hex: " << checked << " fully interior cells, largest defect " << worst << "\n";
+  std::cout << "[ defect ] hex: " << checked << " fully interior cells, largest defect " << worst
+            << "\n";
   EXPECT_GT(checked, 10);
   EXPECT_LT(worst, 1e-10);
 }
@@ -238,7 +242,8 @@ TEST(ElementTable, MomentMatricesAreWellConditioned) {
     for (int rule : {1, 3, 6}) {
       const ElementTable& t = table_of(f, rule, true);
       double smallest = INFINITY;
-      for (int c = 0; c < t.mesh().num_cells(); ++c) smallest = std::min(smallest, t.min_moment_rcond(c));
+      for (int c = 0; c < t.mesh().num_cells(); ++c)
+        smallest = std::min(smallest, t.min_moment_rcond(c));
       std::cout << "[ rcond ] " << f.name << " " << rule << "-point rule: smallest reciprocal "
                 << "condition of the moment matrix = " << smallest << "\n";
       EXPECT_GT(smallest, 1e-6) << f.name << " " << rule << "-point rule";

@@ -28,16 +28,18 @@ namespace {
 
 using testing::Family;
 using testing::kFamilies;
-using testing::mesh_of;
 using testing::make_mesh;
+using testing::mesh_of;
 using testing::table_of;
 
 // Nodal interpolant of `exact` as the cell DOF vector (u_x, u_y per vertex, loop order).
-std::function<Eigen::VectorXd(int)> nodal_values(const PolygonMesh& mesh, const ExactSolution& exact) {
+std::function<Eigen::VectorXd(int)> nodal_values(const PolygonMesh& mesh,
+                                                 const ExactSolution& exact) {
   return [&mesh, &exact](int c) {
     const auto loop = mesh.cell_vertices(c);
     Eigen::VectorXd u(2 * loop.size());
-    for (std::size_t k = 0; k < loop.size(); ++k) u.segment<2>(2 * k) = exact.displacement(mesh.vertex(loop[k]));
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      u.segment<2>(2 * k) = exact.displacement(mesh.vertex(loop[k]));
     return u;
   };
 }
@@ -51,8 +53,9 @@ struct IndependentErrors {
 IndependentErrors p1_interpolation_errors(const PolygonMesh& mesh, const ExactSolution& exact) {
   static const std::array<double, 5> x = {-0.9061798459386640, -0.5384693101056831, 0.0,
                                           0.5384693101056831, 0.9061798459386640};
-  static const std::array<double, 5> w = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                          0.4786286704993665, 0.2369268850561891};
+  static const std::array<double, 5> w = {0.2369268850561891, 0.4786286704993665,
+                                          0.5688888888888889, 0.4786286704993665,
+                                          0.2369268850561891};
   const Eigen::Matrix3d& D = exact.material().D();
   IndependentErrors e;
   for (int c = 0; c < mesh.num_cells(); ++c) {
@@ -95,10 +98,11 @@ TEST(ErrorNorms, InterpolantOnTrianglesMatchesIndependentP1Errors) {
   const TimoshenkoBeam beam(material, 4.0, 1.0, 1.0);
   const ErrorReport r = compute_errors(table, beam, nodal_values(mesh, beam));
   const IndependentErrors ref = p1_interpolation_errors(mesh, beam);
-  const double l2_ref = std::sqrt(ref.l2 / ref.l2_exact), energy_ref = std::sqrt(ref.energy / ref.energy_exact);
+  const double l2_ref = std::sqrt(ref.l2 / ref.l2_exact),
+               energy_ref = std::sqrt(ref.energy / ref.energy_exact);
   std::cout << "beam interpolant on tri (" << mesh.num_cells() << " cells, h_avg " << mesh.h_avg()
-            << "): L2 " << r.l2_error << " (independent " << l2_ref << "), energy " << r.energy_error
-            << " (independent " << energy_ref << ")\n";
+            << "): L2 " << r.l2_error << " (independent " << l2_ref << "), energy "
+            << r.energy_error << " (independent " << energy_ref << ")\n";
   // Small but nonzero.
   EXPECT_GT(r.l2_error, 1e-6);
   EXPECT_LT(r.l2_error, 1e-2);

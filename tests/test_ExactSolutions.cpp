@@ -30,7 +30,8 @@ std::vector<Point> sample_points(const Rectangle& r, int nx = 9, int ny = 7) {
   std::vector<Point> points;
   for (int i = 0; i < nx; ++i)
     for (int j = 0; j < ny; ++j)
-      points.emplace_back(r.x0() + r.width() * (i + 0.37) / nx, r.y0() + r.height() * (j + 0.21) / ny);
+      points.emplace_back(r.x0() + r.width() * (i + 0.37) / nx,
+                          r.y0() + r.height() * (j + 0.21) / ny);
   // Corners and side points too.
   for (double x : {r.x0(), r.x1()})
     for (double y : {r.y0(), 0.5 * (r.y0() + r.y1()), r.y1()}) points.emplace_back(x, y);
@@ -117,7 +118,8 @@ TEST_P(BeamTest, DisplacementAndStressMatchTheDesignFormulas) {
     const double x = p.x(), y = p.y();
     const double ux = -P * y / (6 * E * I) * ((6 * L - 3 * x) * x + (2 + nu) * (y * y - D * D / 4));
     const double uy =
-        P / (6 * E * I) * (3 * nu * y * y * (L - x) + (4 + 5 * nu) * D * D * x / 4 + (3 * L - x) * x * x);
+        P / (6 * E * I) *
+        (3 * nu * y * y * (L - x) + (4 + 5 * nu) * D * D * x / 4 + (3 * L - x) * x * x);
     const Eigen::Vector2d u = beam.displacement(p);
     const double uscale = P * L * L * L / (E * I);
     EXPECT_NEAR(u.x(), ux, 1e-13 * uscale) << "at " << p.transpose();
@@ -167,8 +169,10 @@ TEST_P(BeamTest, EndTractionCarriesTheLoad) {
   // The reaction at x = 0 balances it: int t_y over the root (outward normal -x) is -int t_y at
   // the end, and the root moment is P L.
   const Eigen::Vector2d n0(-1, 0);
-  const double Fy0 = integrate([&](double y) { return beam.traction(Point(0, y), n0).y(); }, -kD / 2, kD / 2, 400);
-  const double M0 = integrate([&](double y) { return y * beam.traction(Point(0, y), n0).x(); }, -kD / 2, kD / 2, 400);
+  const double Fy0 =
+      integrate([&](double y) { return beam.traction(Point(0, y), n0).y(); }, -kD / 2, kD / 2, 400);
+  const double M0 = integrate([&](double y) { return y * beam.traction(Point(0, y), n0).x(); },
+                              -kD / 2, kD / 2, 400);
   EXPECT_NEAR(Fy0, -Fy, 1e-12 * kP);
   EXPECT_NEAR(std::abs(M0), kP * kL, 1e-12 * kP * kL);
 }
@@ -184,12 +188,15 @@ TEST_P(BeamTest, DerivativesMatchFiniteDifferences) {
   }
   for (const Point& p : sample_points(beam.domain())) {
     const Eigen::Matrix2d G = beam.gradient(p), Gfd = fd_gradient(beam, p, h);
-    EXPECT_LT((G - Gfd).cwiseAbs().maxCoeff(), 1e-7 * gscale)
-        << "at " << p.transpose() << "\nG =\n" << G << "\nfd =\n" << Gfd;
+    EXPECT_LT((G - Gfd).cwiseAbs().maxCoeff(), 1e-7 * gscale) << "at " << p.transpose() << "\nG =\n"
+                                                              << G << "\nfd =\n"
+                                                              << Gfd;
     const auto H = beam.hessian(p), Hfd = fd_hessian(beam, p, h);
     for (int i = 0; i < 2; ++i) {
       EXPECT_LT((H[i] - Hfd[i]).cwiseAbs().maxCoeff(), 1e-7 * hscale)
-          << "component " << i << " at " << p.transpose() << "\nH =\n" << H[i] << "\nfd =\n" << Hfd[i];
+          << "component " << i << " at " << p.transpose() << "\nH =\n"
+          << H[i] << "\nfd =\n"
+          << Hfd[i];
       EXPECT_LT((H[i] - H[i].transpose()).cwiseAbs().maxCoeff(), 1e-14 * hscale);
     }
   }
@@ -203,9 +210,11 @@ TEST_P(BeamTest, BodyForceMatchesFiniteDifferencesOfTheStress) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Planes, BeamTest, ::testing::Values(PlaneModel::stress, PlaneModel::strain),
+INSTANTIATE_TEST_SUITE_P(Planes, BeamTest,
+                         ::testing::Values(PlaneModel::stress, PlaneModel::strain),
                          [](const auto& info) {
-                           return std::string(info.param == PlaneModel::stress ? "stress" : "strain");
+                           return std::string(info.param == PlaneModel::stress ? "stress"
+                                                                               : "strain");
                          });
 
 TEST(Beam, RejectsNonPositiveSizes) {
@@ -254,7 +263,9 @@ TEST_P(MmsTest, DerivativesAndBodyForceMatchFiniteDifferences) {
     const auto H = mms.hessian(p), Hfd = fd_hessian(mms, p, h);
     for (int i = 0; i < 2; ++i)
       EXPECT_LT((H[i] - Hfd[i]).cwiseAbs().maxCoeff(), 1e-7 * hscale)
-          << "component " << i << " at " << p.transpose() << "\nH =\n" << H[i] << "\nfd =\n" << Hfd[i];
+          << "component " << i << " at " << p.transpose() << "\nH =\n"
+          << H[i] << "\nfd =\n"
+          << Hfd[i];
     const Eigen::Vector2d f = mms.body_force(p), ffd = fd_body_force(mms, p, h);
     EXPECT_LT((f - ffd).norm(), 1e-7 * bscale)
         << "at " << p.transpose() << ": body force " << f.transpose() << ", fd " << ffd.transpose();
@@ -265,7 +276,8 @@ TEST_P(MmsTest, DerivativesAndBodyForceMatchFiniteDifferences) {
 
 INSTANTIATE_TEST_SUITE_P(Planes, MmsTest, ::testing::Values(PlaneModel::stress, PlaneModel::strain),
                          [](const auto& info) {
-                           return std::string(info.param == PlaneModel::stress ? "stress" : "strain");
+                           return std::string(info.param == PlaneModel::stress ? "stress"
+                                                                               : "strain");
                          });
 
 // ------------------------------------------------------------------------------------------

@@ -123,7 +123,8 @@ TEST(ExtremesScene, TheShippedSceneCoversEveryAxisAndItsExtremes) {
 
   std::set<std::string> axes;
   for (const auto& s : scene.sweeps) axes.insert(s->axis);
-  EXPECT_EQ(axes, (std::set<std::string>{"nu", "kp", "aspect", "perturbation", "regularization", "h"}));
+  EXPECT_EQ(axes,
+            (std::set<std::string>{"nu", "kp", "aspect", "perturbation", "regularization", "h"}));
 
   // nu up to 0.4999999 in plane strain, with cg both with and without mean dilation.
   bool nu_extreme = false;
@@ -137,7 +138,8 @@ TEST(ExtremesScene, TheShippedSceneCoversEveryAxisAndItsExtremes) {
     }
     if (reaches && s->plane == PlaneModel::strain && with && without) nu_extreme = true;
   }
-  EXPECT_TRUE(nu_extreme) << "no nu sweep reaches 0.4999999 in plane strain with cg +- mean_dilation";
+  EXPECT_TRUE(nu_extreme)
+      << "no nu sweep reaches 0.4999999 in plane strain with cg +- mean_dilation";
 
   // k_p from 1e-3 to 1e12 for every DG formulation.
   for (const char* dg : {"dg-penalty", "dg-al", "dg-nitsche", "dg-sipg"}) {
@@ -197,13 +199,13 @@ Scene hand_sweep(const std::string& baseline) {
 }
 
 /// A result row as StudyRunner writes it.
-json row(const std::string& formulation, double l2, const std::string& mesh = "first", int level = 0,
-         double nu = 0.3, int realization = 0, double h_avg = 0.5) {
+json row(const std::string& formulation, double l2, const std::string& mesh = "first",
+         int level = 0, double nu = 0.3, int realization = 0, double h_avg = 0.5) {
   const bool dg = formulation != "cg";
   const double kp = dg ? 1e3 : 0.0;
   const std::string variant = dg ? formulation + " kp=1000" : formulation;
-  return {{"id", mesh + "/L" + std::to_string(level) + "/R" + std::to_string(realization) + "/beam/nu=" +
-                     std::to_string(nu) + "/" + variant},
+  return {{"id", mesh + "/L" + std::to_string(level) + "/R" + std::to_string(realization) +
+                     "/beam/nu=" + std::to_string(nu) + "/" + variant},
           {"mesh", mesh},
           {"level", level},
           {"realization", realization},
@@ -220,7 +222,8 @@ json row(const std::string& formulation, double l2, const std::string& mesh = "f
           {"stop_reason", dg ? "converged" : "direct"}};
 }
 
-json failed_row(const std::string& formulation, const std::string& error, const std::string& mesh = "first") {
+json failed_row(const std::string& formulation, const std::string& error,
+                const std::string& mesh = "first") {
   json r = row(formulation, 0.0, mesh);
   for (const char* key : {"h_avg", "l2_error", "rcond", "iterations", "stop_reason"}) r.erase(key);
   r["status"] = "failed";
@@ -249,7 +252,9 @@ RunRecord record(const json& r) {
     return out;
   }
   RunMetrics m;
-  auto number = [&](const char* key) { return r[key].is_number() ? r[key].get<double>() : std::nan(""); };
+  auto number = [&](const char* key) {
+    return r[key].is_number() ? r[key].get<double>() : std::nan("");
+  };
   m.h_avg = number("h_avg");
   m.l2_error = number("l2_error");
   m.rcond = number("rcond");
@@ -269,7 +274,9 @@ Verdict judge(const Scene& sweep, const json& run, const std::vector<json>& runs
   return judge_run(sweep, record(run), records);
 }
 
-double axis(const Scene& sweep, const json& run) { return axis_value(sweep, record(run)); }
+double axis(const Scene& sweep, const json& run) {
+  return axis_value(sweep, record(run));
+}
 
 // Exactly representable errors, so that ratios at the factors are exact.
 constexpr double kBase = 1.0 / 1024;
@@ -279,7 +286,9 @@ TEST(ExtremesVerdict, AFailedRunIsBrokenWithItsError) {
   const json r = failed_row("dg-sipg", "the matrix is not positive definite at k_p = 0.001 E");
   const Verdict v = judge(s, r, {r});
   EXPECT_EQ(v.level, "broken");
-  EXPECT_NE(v.reason.find("the matrix is not positive definite at k_p = 0.001 E"), std::string::npos) << v.reason;
+  EXPECT_NE(v.reason.find("the matrix is not positive definite at k_p = 0.001 E"),
+            std::string::npos)
+      << v.reason;
 }
 
 TEST(ExtremesVerdict, ANonConvergedDgIterationIsBroken) {
@@ -513,14 +522,17 @@ const char* kTinyExtremes = R"({
 class ExtremesRun : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("vorodg_test_extremes_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() /
+           ("vorodg_test_extremes_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     std::ofstream(dir_ / "tiny.json") << kTinyExtremes;
   }
   void TearDown() override { fs::remove_all(dir_); }
-  RunResult run(const std::vector<std::string>& args) const { return run_program(kExe, args, dir_); }
+  RunResult run(const std::vector<std::string>& args) const {
+    return run_program(kExe, args, dir_);
+  }
   fs::path dir_;
 };
 
@@ -533,8 +545,8 @@ int count_lines(const fs::path& file) {
 
 TEST_F(ExtremesRun, VerdictsFollowThePhysicsAndARerunResumes) {
   const fs::path out = dir_ / "out";
-  const std::vector<std::string> args = {"run", (dir_ / "tiny.json").string(), "-o", out.string(), "--quiet",
-                                         "--no-plots"};
+  const std::vector<std::string> args = {
+      "run", (dir_ / "tiny.json").string(), "-o", out.string(), "--quiet", "--no-plots"};
   const RunResult r = run(args);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;  // broken runs are findings, not a failure
   for (const char* f : {"report.md", "extremes.csv", "extremes.json"})
@@ -580,7 +592,8 @@ TEST_F(ExtremesRun, VerdictsFollowThePhysicsAndARerunResumes) {
   EXPECT_EQ(verdict("nu", "nu=0.3/cg mean-dilation")["verdict"], "ok");
   const json locked = verdict("nu", "nu=0.4999999/cg");
   EXPECT_TRUE(locked["verdict"] == "degraded" || locked["verdict"] == "broken") << locked.dump();
-  EXPECT_NE(locked["reason"].get<std::string>().find("first-nu"), std::string::npos) << locked["reason"];
+  EXPECT_NE(locked["reason"].get<std::string>().find("first-nu"), std::string::npos)
+      << locked["reason"];
   EXPECT_DOUBLE_EQ(locked["value"].get<double>(), 0.4999999);
   const json md = verdict("nu", "nu=0.4999999/cg mean-dilation");
   EXPECT_EQ(md["verdict"], "ok") << md["reason"];

@@ -136,7 +136,8 @@ TEST_P(InterfaceOperatorsFamilies, JumpOfAOneSidedFieldIsTheField) {
     const InterfaceOperator J = ops_.jump(f, 0.3);
     const int m1 = space_.cell_dof_count(f.cell[0]);
     const int o1 = space_.cell_offset(f.cell[0]), o2 = space_.cell_offset(f.cell[1]);
-    const int nonzero_columns[] = {f.dof_v0[0] - o1, f.dof_v0[0] - o1 + 1, f.dof_v1[0] - o1, f.dof_v1[0] - o1 + 1,
+    const int nonzero_columns[] = {f.dof_v0[0] - o1,      f.dof_v0[0] - o1 + 1,
+                                   f.dof_v1[0] - o1,      f.dof_v1[0] - o1 + 1,
                                    m1 + f.dof_v0[1] - o2, m1 + f.dof_v0[1] - o2 + 1,
                                    m1 + f.dof_v1[1] - o2, m1 + f.dof_v1[1] - o2 + 1};
     InterfaceOperator rest = J;
@@ -157,7 +158,8 @@ TEST_P(InterfaceOperatorsFamilies, MeanTractionOfAnAffineFieldIsSigmaN) {
     const Eigen::Vector2d expected = traction_map(f.normal) * sigma;
     worst = std::max(worst, (ops_.mean_traction(f) * u - expected).norm() / sigma.norm());
   }
-  std::cout << GetParam().name << ": mean traction of the affine field, worst relative error " << worst << "\n";
+  std::cout << GetParam().name << ": mean traction of the affine field, worst relative error "
+            << worst << "\n";
   EXPECT_LT(worst, 1e-10);
 }
 
@@ -173,7 +175,8 @@ TEST_P(InterfaceOperatorsFamilies, PointTractionOfAnAffineFieldIsSigmaN) {
     for (double t : kInterior)
       worst = std::max(worst, (ops_.point_traction(f, t) * u - expected).norm() / sigma.norm());
   }
-  std::cout << GetParam().name << ": point traction of the affine field, worst relative error " << worst << "\n";
+  std::cout << GetParam().name << ": point traction of the affine field, worst relative error "
+            << worst << "\n";
   // The one-sided gradients at an edge point are the exact edge limit of the RK functions and
   // are less well conditioned than at interior points (observed: a 3e-17 change of the
   // barycentric coordinates moves them by ~3e-11, and the affine error reaches ~8e-11), hence
@@ -192,9 +195,11 @@ TEST_P(InterfaceOperatorsFamilies, MeanTractionAgreesWithTheIntegratorsMeanStres
   EXPECT_LT(worst, 1e-12 * size) << "mean_stress_operator vs ElasticityIntegrator::mean_stress";
   worst = 0.0;
   for (const Interface& f : space_.interfaces()) {
-    const Eigen::VectorXd u1 = broken_values(mesh_, f.cell[0]), u2 = broken_values(mesh_, f.cell[1]);
+    const Eigen::VectorXd u1 = broken_values(mesh_, f.cell[0]),
+                          u2 = broken_values(mesh_, f.cell[1]);
     const Eigen::Vector2d expected =
-        0.5 * traction_map(f.normal) * (integrator_.mean_stress(f.cell[0], u1) + integrator_.mean_stress(f.cell[1], u2));
+        0.5 * traction_map(f.normal) *
+        (integrator_.mean_stress(f.cell[0], u1) + integrator_.mean_stress(f.cell[1], u2));
     worst = std::max(worst, (ops_.mean_traction(f) * stack(u1, u2) - expected).norm());
   }
   EXPECT_LT(worst, 1e-12 * size);
@@ -203,8 +208,8 @@ TEST_P(InterfaceOperatorsFamilies, MeanTractionAgreesWithTheIntegratorsMeanStres
 /// Cell c's own stress (uncorrected shape-function gradients) at the point a + t (b - a) of the
 /// interface's edge, found independently: the fan triangle (centroid, v_k, v_k+1) whose outer
 /// side is the edge, with barycentric coordinates of the point.
-Eigen::Vector3d own_stress_at(const ElementTable& table, const Eigen::Matrix3d& D, const Interface& f,
-                              int c, double t, const Eigen::VectorXd& u) {
+Eigen::Vector3d own_stress_at(const ElementTable& table, const Eigen::Matrix3d& D,
+                              const Interface& f, int c, double t, const Eigen::VectorXd& u) {
   const PolygonMesh& mesh = table.mesh();
   const MeshEdge& e = mesh.edge(f.edge);
   const auto loop = mesh.cell_vertices(c);
@@ -235,7 +240,8 @@ TEST_P(InterfaceOperatorsFamilies, PointTractionAveragesTheOneSidedStressesAtThe
   double worst = 0.0, size = 0.0;
   const Eigen::Matrix3d& D = material_.D();
   for (const Interface& f : space_.interfaces()) {
-    const Eigen::VectorXd u1 = broken_values(mesh_, f.cell[0]), u2 = broken_values(mesh_, f.cell[1]);
+    const Eigen::VectorXd u1 = broken_values(mesh_, f.cell[0]),
+                          u2 = broken_values(mesh_, f.cell[1]);
     for (double t : kInterior) {
       const Eigen::Vector3d s1 = own_stress_at(table_, D, f, f.cell[0], t, u1);
       const Eigen::Vector3d s2 = own_stress_at(table_, D, f, f.cell[1], t, u2);
@@ -244,8 +250,8 @@ TEST_P(InterfaceOperatorsFamilies, PointTractionAveragesTheOneSidedStressesAtThe
       size = std::max(size, expected.norm());
     }
   }
-  std::cout << GetParam().name << ": point traction vs independent one-sided stresses, worst " << worst
-            << " (size " << size << ")\n";
+  std::cout << GetParam().name << ": point traction vs independent one-sided stresses, worst "
+            << worst << " (size " << size << ")\n";
   EXPECT_LT(worst, 1e-9 * size);  // the conditioning of the edge gradients, see above
 }
 

@@ -44,8 +44,8 @@ class MeshCommand : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("vorodg_test_MeshCommand_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() / ("vorodg_test_MeshCommand_" + std::string(info->name()) +
+                                        "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -82,9 +82,9 @@ class MeshCommand : public ::testing::Test {
 };
 
 void expect_common_stats(const json& s, const PolygonMesh& m) {
-  for (const char* key : {"cells", "vertices", "edges", "boundary_edges", "h_avg", "min_edge",
-                          "min_edge_over_h_avg", "min_interior_angle_deg", "area_error",
-                          "side_counts_after"})
+  for (const char* key :
+       {"cells", "vertices", "edges", "boundary_edges", "h_avg", "min_edge", "min_edge_over_h_avg",
+        "min_interior_angle_deg", "area_error", "side_counts_after"})
     EXPECT_TRUE(s.contains(key)) << "missing key " << key << " in " << s.dump();
   EXPECT_EQ(s.value("cells", -1), m.num_cells());
   EXPECT_EQ(s.value("vertices", -1), m.num_vertices());
@@ -96,7 +96,8 @@ void expect_common_stats(const json& s, const PolygonMesh& m) {
     min_edge = std::min(min_edge, m.edge_length(e));
   }
   EXPECT_EQ(s.value("boundary_edges", -1), boundary);
-  EXPECT_NEAR(s.value("h_avg", 0.0), std::sqrt(m.domain().area() / m.num_cells()), 1e-12 * m.h_avg());
+  EXPECT_NEAR(s.value("h_avg", 0.0), std::sqrt(m.domain().area() / m.num_cells()),
+              1e-12 * m.h_avg());
   EXPECT_NEAR(s.value("min_edge", 0.0), min_edge, 1e-12 * min_edge);
   EXPECT_NEAR(s.value("min_edge_over_h_avg", 0.0), min_edge / m.h_avg(), 1e-12);
   EXPECT_GT(s.value("min_interior_angle_deg", 0.0), 0.0);
@@ -113,9 +114,9 @@ void expect_common_stats(const json& s, const PolygonMesh& m) {
 
 TEST_F(MeshCommand, RcpGenerationWritesValidVtuAndStats) {
   const fs::path vtu = dir_ / "rcp.vtu", stats = dir_ / "rcp.json";
-  const std::vector<std::string> args{"mesh", "--family", "rcp", "--domain", "0,0,2,1", "--d",
-                                      "0.04", "--seed", "3", "-o", vtu.string(), "--stats",
-                                      stats.string()};
+  const std::vector<std::string> args{
+      "mesh",   "--family", "rcp", "--domain",   "0,0,2,1", "--d",         "0.04",
+      "--seed", "3",        "-o",  vtu.string(), "--stats", stats.string()};
   const RunResult r = run(args);
   ASSERT_EQ(r.exit_code, 0) << describe(args, r);
   ASSERT_TRUE(fs::exists(vtu));
@@ -127,8 +128,8 @@ TEST_F(MeshCommand, RcpGenerationWritesValidVtuAndStats) {
 
   const json s = json::parse(read_file(stats));
   expect_common_stats(s, m);
-  for (const char* key : {"side_counts_before", "covered_fraction", "covered_fraction_interior",
-                          "seeds", "seconds"})
+  for (const char* key :
+       {"side_counts_before", "covered_fraction", "covered_fraction_interior", "seeds", "seconds"})
     EXPECT_TRUE(s.contains(key)) << "missing rcp key " << key << " in " << s.dump();
   EXPECT_GE(s.value("seeds", 0), m.num_cells());
   EXPECT_GT(s.value("covered_fraction", 0.0), 0.45);
@@ -187,7 +188,8 @@ TEST_F(MeshCommand, CheckAcceptsGeneratedAndGoodFiles) {
        {std::vector<std::string>{"mesh", "--check", vtu.string()},
         std::vector<std::string>{"mesh", "--check", vtu.string(), "--domain", "0,0,4,1"},
         std::vector<std::string>{"mesh", "--check", (kData / "good" / "quads_2x2.vtu").string()},
-        std::vector<std::string>{"mesh", "--check", (kData / "good" / "mixed_cell_types.vtu").string()}}) {
+        std::vector<std::string>{"mesh", "--check",
+                                 (kData / "good" / "mixed_cell_types.vtu").string()}}) {
     const RunResult r = run(args);
     EXPECT_EQ(r.exit_code, 0) << describe(args, r);
   }
@@ -213,8 +215,8 @@ TEST_F(MeshCommand, CheckRejectsMalformedFilesWithOneLine) {
 
 TEST_F(MeshCommand, CheckReportsEachDefectOfAnInvalidMeshOnItsOwnLine) {
   {
-    const std::vector<std::string> args{
-        "mesh", "--check", (kData / "invalid" / "unreferenced_vertex.vtu").string()};
+    const std::vector<std::string> args{"mesh", "--check",
+                                        (kData / "invalid" / "unreferenced_vertex.vtu").string()};
     const RunResult r = run(args);
     EXPECT_EQ(r.exit_code, 2) << describe(args, r);
     EXPECT_EQ(r.err_lines(), 1) << describe(args, r);
@@ -228,9 +230,8 @@ TEST_F(MeshCommand, CheckReportsEachDefectOfAnInvalidMeshOnItsOwnLine) {
     EXPECT_GE(r.err_lines(), 1) << describe(args, r);
   }
   // A valid mesh checked against a domain it does not fill is invalid.
-  const std::vector<std::string> args{"mesh", "--check",
-                                      (kData / "good" / "quads_2x2.vtu").string(), "--domain",
-                                      "0,0,3,3"};
+  const std::vector<std::string> args{
+      "mesh", "--check", (kData / "good" / "quads_2x2.vtu").string(), "--domain", "0,0,3,3"};
   const RunResult r = run(args);
   EXPECT_EQ(r.exit_code, 2) << describe(args, r);
 }
@@ -261,7 +262,12 @@ TEST_F(MeshCommand, BadOptionsExitWithCodeTwoOneLineAndNoOutput) {
 }
 
 TEST_F(MeshCommand, UnwritableOutputIsAnInputError) {
-  const std::vector<std::string> args{"mesh", "--family", "quad", "--h", "0.5", "-o",
+  const std::vector<std::string> args{"mesh",
+                                      "--family",
+                                      "quad",
+                                      "--h",
+                                      "0.5",
+                                      "-o",
                                       (dir_ / "no" / "such" / "folder.vtu").string()};
   const RunResult r = run(args);
   EXPECT_EQ(r.exit_code, 2) << describe(args, r);
@@ -272,8 +278,8 @@ TEST_F(MeshCommand, SameSeedGivesByteIdenticalFiles) {
   std::vector<std::string> contents;
   for (const char* seed : {"11", "11", "12"}) {
     const fs::path vtu = dir_ / numbered("s", contents.size(), ".vtu");
-    const std::vector<std::string> args{"mesh", "--family", "rcp", "--d", "0.04", "--seed", seed,
-                                        "-o", vtu.string()};
+    const std::vector<std::string> args{"mesh",   "--family", "rcp", "--d",       "0.04",
+                                        "--seed", seed,       "-o",  vtu.string()};
     const RunResult r = run(args);
     ASSERT_EQ(r.exit_code, 0) << describe(args, r);
     contents.push_back(read_file(vtu));
@@ -285,8 +291,8 @@ TEST_F(MeshCommand, SameSeedGivesByteIdenticalFiles) {
   std::vector<std::string> ph;
   for (int k = 0; k < 2; ++k) {
     const fs::path vtu = dir_ / numbered("ph", k, ".vtu");
-    const RunResult r = run({"mesh", "--family", "perturbed-hex", "--h", "0.1", "--seed", "5",
-                             "-o", vtu.string()});
+    const RunResult r =
+        run({"mesh", "--family", "perturbed-hex", "--h", "0.1", "--seed", "5", "-o", vtu.string()});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     ph.push_back(read_file(vtu));
   }

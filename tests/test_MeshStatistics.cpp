@@ -36,7 +36,7 @@ TEST(MeshStatistics, QuadGrid) {
 
 TEST(MeshStatistics, MixedMeshWithHangingVertex) {
   // Quad (0,0)-(1,0)-(1,1)-(0,1) with a hanging vertex at (1,0.5), and two triangles to its right.
-  const std::vector<Point> v{Point(0, 0), Point(1, 0), Point(2, 0), Point(0, 1),
+  const std::vector<Point> v{Point(0, 0), Point(1, 0), Point(2, 0),  Point(0, 1),
                              Point(1, 1), Point(2, 1), Point(1, 0.5)};
   const PolygonMesh m(Rectangle(0, 0, 2, 1), v, {0, 5, 8, 11, 14},
                       {0, 1, 6, 4, 3, 1, 2, 6, 2, 5, 6, 6, 5, 4});

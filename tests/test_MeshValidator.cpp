@@ -16,7 +16,9 @@
 namespace vorodg {
 
 // Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) { *os << side_name(s); }
+void PrintTo(Side s, std::ostream* os) {
+  *os << side_name(s);
+}
 
 namespace {
 
@@ -136,11 +138,11 @@ TEST(MeshValidator, ValidMixedAndStarShapedNonConvexMeshesPass) {
   auto r = validate_mesh(mixed.build());
   EXPECT_TRUE(r.ok()) << describe(r);
   // A quad grid whose cells have a hanging (straight-angle) vertex: a pentagon next to a quad.
-  MeshInput hanging{Rectangle(0, 0, 2, 1),
-                    {Point(0, 0), Point(1, 0), Point(2, 0), Point(0, 1), Point(1, 1), Point(2, 1),
-                     Point(1, 0.5)},
-                    {0, 5, 10},
-                    {0, 1, 6, 4, 3, 1, 2, 5, 4, 6}};
+  MeshInput hanging{
+      Rectangle(0, 0, 2, 1),
+      {Point(0, 0), Point(1, 0), Point(2, 0), Point(0, 1), Point(1, 1), Point(2, 1), Point(1, 0.5)},
+      {0, 5, 10},
+      {0, 1, 6, 4, 3, 1, 2, 5, 4, 6}};
   r = validate_mesh(hanging.build());
   EXPECT_TRUE(r.ok()) << describe(r);
   // A big grid, far from the origin.
@@ -233,7 +235,9 @@ TEST(MeshValidator, ArrowTilingIsOtherwiseConsistent) {
   EXPECT_TRUE(m.topology_defects().empty());
   EXPECT_DOUBLE_EQ(m.total_area(), 4.0);
   for (const MeshEdge& e : m.edges())
-    if (e.on_boundary()) { EXPECT_NE(e.side, Side::none) << e.v0 << "-" << e.v1; }
+    if (e.on_boundary()) {
+      EXPECT_NE(e.side, Side::none) << e.v0 << "-" << e.v1;
+    }
 }
 
 TEST(MeshValidator, CellOutsideDomain) {
@@ -264,7 +268,8 @@ TEST(MeshValidator, InconsistentOrientation) {
   expect_defect(r, Kind::inconsistent_orientation);
   bool names_cells = false;
   for (const MeshDefect& d : r.defects)
-    if (d.kind == Kind::inconsistent_orientation && names_index(d.what, 0) && names_index(d.what, 2))
+    if (d.kind == Kind::inconsistent_orientation && names_index(d.what, 0) &&
+        names_index(d.what, 2))
       names_cells = true;
   EXPECT_TRUE(names_cells) << describe(r);
 }
@@ -342,7 +347,8 @@ TEST(MeshValidator, SummaryHasOneLinePerDefectAndTruncates) {
   EXPECT_EQ(full.defect_count, 30);
   EXPECT_EQ(full.defects.size(), 30u);
   const std::string fs = full.summary();
-  const auto lines = std::count(fs.begin(), fs.end(), '\n') + (fs.empty() || fs.back() == '\n' ? 0 : 1);
+  const auto lines =
+      std::count(fs.begin(), fs.end(), '\n') + (fs.empty() || fs.back() == '\n' ? 0 : 1);
   EXPECT_EQ(lines, 30) << fs;
 }
 

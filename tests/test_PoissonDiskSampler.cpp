@@ -66,7 +66,8 @@ PoissonDiskResult sample(const Rectangle& dom, double d, std::uint64_t seed) {
 double min_pair_distance(const Rectangle& dom, double d, const std::vector<Point>& pts) {
   const PointGrid grid(dom, d, pts);
   double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < static_cast<int>(pts.size()); ++i) best = std::min(best, grid.nearest(pts[i], i));
+  for (int i = 0; i < static_cast<int>(pts.size()); ++i)
+    best = std::min(best, grid.nearest(pts[i], i));
   return best;
 }
 
@@ -80,7 +81,8 @@ double max_probe_gap(const Rectangle& dom, double d, const std::vector<Point>& p
   double worst = 0.0;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
-      const Point p(std::min(dom.x1(), dom.x0() + i * step), std::min(dom.y1(), dom.y0() + j * step));
+      const Point p(std::min(dom.x1(), dom.x0() + i * step),
+                    std::min(dom.y1(), dom.y0() + j * step));
       worst = std::max(worst, std::min(d, grid.nearest(p)));
     }
   return worst;
@@ -103,8 +105,8 @@ TEST(PoissonDiskSampler, SamplingIsMaximalNoRoomLeft) {
     const double d = 0.025;
     const auto res = sample(dom, d, 7);
     const double gap = max_probe_gap(dom, d, res.points);
-    EXPECT_LT(gap, d * (1 + 1e-12)) << "domain " << dom.to_string() << ": a probe is " << gap / d
-                                    << " d from every sample";
+    EXPECT_LT(gap, d * (1 + 1e-12))
+        << "domain " << dom.to_string() << ": a probe is " << gap / d << " d from every sample";
   }
 }
 
@@ -162,11 +164,11 @@ TEST(PoissonDiskSampler, FixedPointsComeFirstAndAreRespected) {
   PoissonDiskOptions o;
   o.min_distance = d;
   o.seed = 5;
-  o.fixed_points = {Point(0, 0), Point(2, 0), Point(2, 1), Point(0, 1), Point(1, 0.5),
-                    Point(1, 0)};
+  o.fixed_points = {Point(0, 0), Point(2, 0), Point(2, 1), Point(0, 1), Point(1, 0.5), Point(1, 0)};
   const auto res = sample_poisson_disk(dom, o);
   ASSERT_GT(res.points.size(), o.fixed_points.size());
-  for (std::size_t i = 0; i < o.fixed_points.size(); ++i) EXPECT_EQ(res.points[i], o.fixed_points[i]);
+  for (std::size_t i = 0; i < o.fixed_points.size(); ++i)
+    EXPECT_EQ(res.points[i], o.fixed_points[i]);
   EXPECT_GE(min_pair_distance(dom, d, res.points), d * (1 - 1e-12));
   EXPECT_LT(max_probe_gap(dom, d, res.points), d * (1 + 1e-12));
 }
@@ -197,7 +199,8 @@ TEST(PoissonDiskSampler, BoundaryPointsIncludeCornersAndAreSpacedBetweenDAnd2D) 
   const double d = 0.07;
   const auto pts = sample_boundary_points(dom, d, 11);
   const double tol = 1e-12 * dom.scale();
-  for (const Point& corner : {dom.lo(), Point(dom.x1(), dom.y0()), dom.hi(), Point(dom.x0(), dom.y1())}) {
+  for (const Point& corner :
+       {dom.lo(), Point(dom.x1(), dom.y0()), dom.hi(), Point(dom.x0(), dom.y1())}) {
     const auto n = std::count(pts.begin(), pts.end(), corner);
     EXPECT_EQ(n, 1) << "corner " << corner.transpose();
   }

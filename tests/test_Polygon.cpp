@@ -13,7 +13,9 @@ namespace {
 
 using Loop = std::vector<Point>;
 
-Loop unit_square() { return {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)}; }
+Loop unit_square() {
+  return {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
+}
 
 Loop reversed(Loop loop) {
   std::reverse(loop.begin(), loop.end());
@@ -29,7 +31,7 @@ Loop translated(Loop loop, const Point& t) {
 // (x in [3,4]). Its kernel is the part of the head with x >= 3 and 0.4 <= y <= 0.6; its centroid
 // (x ~ 2.33) lies in the shaft, outside the kernel.
 Loop arrow() {
-  return {Point(0, 0.4), Point(3, 0.4), Point(3, 0), Point(4, 0.5),
+  return {Point(0, 0.4), Point(3, 0.4), Point(3, 0),  Point(4, 0.5),
           Point(3, 1),   Point(3, 0.6), Point(0, 0.6)};
 }
 
@@ -56,7 +58,8 @@ TEST(Polygon, SignedAreaIsAccurateFarFromTheOrigin) {
   // A 1e-3 square at 1e6: a naive shoelace loses ~ 1e12 * eps ~ 1e-4 relative; shifting keeps it
   // near machine precision.
   const double s = 1e-3;
-  const Loop far = translated({Point(0, 0), Point(s, 0), Point(s, s), Point(0, s)}, Point(1e6, 1e6));
+  const Loop far =
+      translated({Point(0, 0), Point(s, 0), Point(s, s), Point(0, s)}, Point(1e6, 1e6));
   const double exact = (far[1].x() - far[0].x()) * (far[2].y() - far[1].y());
   EXPECT_NEAR(polygon::signed_area(far), exact, 1e-9 * exact);
 }

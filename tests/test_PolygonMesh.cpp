@@ -18,7 +18,9 @@
 namespace vorodg {
 
 // Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) { *os << side_name(s); }
+void PrintTo(Side s, std::ostream* os) {
+  *os << side_name(s);
+}
 
 namespace {
 
@@ -37,13 +39,16 @@ PolygonMesh quads_2x2() {
 //   |   | / |
 //   0---1---2
 PolygonMesh mixed_quad_tri() {
-  std::vector<Point> v{Point(0, 0), Point(1, 0), Point(2, 0), Point(0, 1), Point(1, 1), Point(2, 1)};
+  std::vector<Point> v{Point(0, 0), Point(1, 0), Point(2, 0),
+                       Point(0, 1), Point(1, 1), Point(2, 1)};
   std::vector<int> offsets{0, 4, 7, 10};
   std::vector<int> cells{0, 1, 4, 3, 1, 2, 5, 1, 5, 4};
   return PolygonMesh(Rectangle(0, 0, 2, 1), v, offsets, cells);
 }
 
-std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+std::pair<int, int> key(int a, int b) {
+  return {std::min(a, b), std::max(a, b)};
+}
 
 // Checks every structural invariant that holds for a valid mesh.
 void expect_consistent(const PolygonMesh& m) {
@@ -82,7 +87,9 @@ void expect_consistent(const PolygonMesh& m) {
     for (int e : m.cell_edges(c)) ++uses[e];
   for (int e = 0; e < m.num_edges(); ++e) {
     EXPECT_EQ(uses[e], m.edge(e).on_boundary() ? 1 : 2) << "edge " << e;
-    if (!m.edge(e).on_boundary()) { EXPECT_NE(m.edge(e).cell0, m.edge(e).cell1); }
+    if (!m.edge(e).on_boundary()) {
+      EXPECT_NE(m.edge(e).cell0, m.edge(e).cell1);
+    }
   }
   // vertex_cells is the inverse of cell_vertices.
   for (int v = 0; v < m.num_vertices(); ++v) {
@@ -121,7 +128,7 @@ TEST(PolygonMesh, QuadGridBoundaryEdgesTaggedBySideInteriorEdgesUntagged) {
   const PolygonMesh m = quads_2x2();
   const auto edges = edge_map(m);
   const std::map<std::pair<int, int>, Side> expected{
-      {{0, 1}, Side::bottom}, {{1, 2}, Side::bottom}, {{6, 7}, Side::top},  {{7, 8}, Side::top},
+      {{0, 1}, Side::bottom}, {{1, 2}, Side::bottom}, {{6, 7}, Side::top},   {{7, 8}, Side::top},
       {{0, 3}, Side::left},   {{3, 6}, Side::left},   {{2, 5}, Side::right}, {{5, 8}, Side::right}};
   for (const auto& [k, side] : expected) {
     ASSERT_TRUE(edges.count(k)) << k.first << "," << k.second;
@@ -280,10 +287,9 @@ TEST(PolygonMesh, ConstructorRejectsIndexErrors) {
 
 TEST(PolygonMesh, RecordsNonManifoldEdge) {
   // Two unit quads sharing edge 1-4 plus a triangle (1,4,6) that also uses edge 1-4.
-  std::vector<Point> v{Point(0, 0), Point(1, 0), Point(2, 0), Point(0, 1),
+  std::vector<Point> v{Point(0, 0), Point(1, 0), Point(2, 0),    Point(0, 1),
                        Point(1, 1), Point(2, 1), Point(0.5, 0.5)};
-  const PolygonMesh m(Rectangle(0, 0, 2, 1), v, {0, 4, 8, 11},
-                      {0, 1, 4, 3, 1, 2, 5, 4, 6, 1, 4});
+  const PolygonMesh m(Rectangle(0, 0, 2, 1), v, {0, 4, 8, 11}, {0, 1, 4, 3, 1, 2, 5, 4, 6, 1, 4});
   ASSERT_FALSE(m.topology_defects().empty());
   bool found = false;
   for (const TopologyDefect& d : m.topology_defects())

@@ -23,7 +23,9 @@
 namespace vorodg {
 
 // Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) { *os << side_name(s); }
+void PrintTo(Side s, std::ostream* os) {
+  *os << side_name(s);
+}
 
 namespace {
 
@@ -96,8 +98,8 @@ TEST_F(RcpMesh, RegularizedCellsHaveFourToEightSidesSixMostCommon) {
   ASSERT_FALSE(hist.empty());
   EXPECT_GE(hist.begin()->first, 4) << histogram_text(hist);
   EXPECT_LE(hist.rbegin()->first, 8) << histogram_text(hist);
-  const auto most = std::max_element(hist.begin(), hist.end(),
-                                     [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto most = std::max_element(
+      hist.begin(), hist.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   EXPECT_EQ(most->first, 6) << histogram_text(hist);
   int total = 0;
   for (const auto& [k, n] : hist) total += n;
@@ -131,8 +133,8 @@ TEST_F(RcpMesh, BoundaryEdgesAreAllTaggedWithASide) {
       EXPECT_EQ(edge.side, Side::none);
       continue;
     }
-    ASSERT_NE(edge.side, Side::none) << "boundary edge " << e << " (" << edge.v0 << "," << edge.v1
-                                     << ") untagged";
+    ASSERT_NE(edge.side, Side::none)
+        << "boundary edge " << e << " (" << edge.v0 << "," << edge.v1 << ") untagged";
     // Its two vertices lie exactly on that side's line (snapped).
     EXPECT_EQ(m.domain().distance_to_side(m.vertex(edge.v0), edge.side), 0.0);
     EXPECT_EQ(m.domain().distance_to_side(m.vertex(edge.v1), edge.side), 0.0);
@@ -145,7 +147,8 @@ TEST_F(RcpMesh, BoundaryEdgesAreAllTaggedWithASide) {
   EXPECT_NEAR(length[Side::right], 1.0, 1e-12);
   // Corners are mesh vertices.
   const Rectangle& dom = m.domain();
-  for (const Point& corner : {dom.lo(), Point(dom.x1(), dom.y0()), dom.hi(), Point(dom.x0(), dom.y1())})
+  for (const Point& corner :
+       {dom.lo(), Point(dom.x1(), dom.y0()), dom.hi(), Point(dom.x0(), dom.y1())})
     EXPECT_NE(std::find(m.vertices().begin(), m.vertices().end(), corner), m.vertices().end())
         << corner.transpose();
 }
@@ -230,8 +233,8 @@ TEST_F(RawVoronoi, EachCellContainsTheHalfDistanceDiskAroundItsSeed) {
     const int n = static_cast<int>(cv.size());
     for (int k = 0; k < n; ++k) {
       if (m.edge(ce[k]).on_boundary()) continue;
-      const double dist = polygon::distance_to_segment((*seeds_)[c], m.vertex(cv[k]),
-                                                       m.vertex(cv[(k + 1) % n]));
+      const double dist =
+          polygon::distance_to_segment((*seeds_)[c], m.vertex(cv[k]), m.vertex(cv[(k + 1) % n]));
       if (dist < worst) {
         worst = dist;
         worst_cell = c;
@@ -248,7 +251,9 @@ TEST_F(RawVoronoi, RawTessellationIsValidAndConforming) {
   EXPECT_TRUE(report.ok()) << first_defects(report);
   EXPECT_LT(std::abs(m.total_area() - 4.0) / 4.0, 1e-12);
   for (const MeshEdge& e : m.edges())
-    if (e.on_boundary()) { ASSERT_NE(e.side, Side::none) << e.v0 << "-" << e.v1; }
+    if (e.on_boundary()) {
+      ASSERT_NE(e.side, Side::none) << e.v0 << "-" << e.v1;
+    }
   // No zero-length edges survive the merge of coincident Voronoi vertices.
   EXPECT_GT(min_edge_length(m), 0.0);
 }

@@ -14,7 +14,9 @@
 namespace vorodg {
 
 // Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) { *os << side_name(s); }
+void PrintTo(Side s, std::ostream* os) {
+  *os << side_name(s);
+}
 
 namespace {
 

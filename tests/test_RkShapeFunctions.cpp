@@ -77,7 +77,8 @@ void check_kernel_consistency(const std::vector<Eigen::Vector2d>& nodes, const R
   std::vector<Eigen::Vector2d> gw(n), gpsi(n);
   for (const Eigen::Vector2d& x : points) {
     weights(x, w.data(), gw.data());
-    const double rcond = rk_shape_functions(frame, nodes, x, w.data(), gw.data(), psi.data(), gpsi.data());
+    const double rcond =
+        rk_shape_functions(frame, nodes, x, w.data(), gw.data(), psi.data(), gpsi.data());
     EXPECT_GT(rcond, 0.0);
     EXPECT_LE(rcond, 1.0 + 1e-12);
     double sum = 0.0;
@@ -139,8 +140,8 @@ TEST(RkKernel, IndependentOfTheFrame) {
 
 TEST(RkKernel, ThreeNodesGiveTheLinearTriangleForAnyWeights) {
   const std::vector<Eigen::Vector2d> tri = {{0.2, 0.1}, {1.1, 0.3}, {0.4, 0.9}};
-  const double area2 = (tri[1] - tri[0]).x() * (tri[2] - tri[0]).y() -
-                       (tri[1] - tri[0]).y() * (tri[2] - tri[0]).x();
+  const double area2 =
+      (tri[1] - tri[0]).x() * (tri[2] - tri[0]).y() - (tri[1] - tri[0]).y() * (tri[2] - tri[0]).x();
   const Eigen::Vector2d x = 0.2 * tri[0] + 0.5 * tri[1] + 0.3 * tri[2];
   const double lambda[3] = {0.2, 0.5, 0.3};
   const double w[3] = {0.3, 2.0, 0.01};
@@ -210,12 +211,14 @@ TEST(RkShapeFunctions, KroneckerDeltaAtVertices) {
       std::vector<Eigen::Vector2d> g(n);
       for (int k = 0; k < n; ++k) {
         // Vertex k as the first vertex of fan k and as the second vertex of fan k-1.
-        for (const FanPoint& at : {FanPoint{k, {0.0, 1.0, 0.0}}, FanPoint{(k + n - 1) % n, {0.0, 0.0, 1.0}}}) {
+        for (const FanPoint& at :
+             {FanPoint{k, {0.0, 1.0, 0.0}}, FanPoint{(k + n - 1) % n, {0.0, 0.0, 1.0}}}) {
           EXPECT_LT((t.position(c, at) - mesh.vertex(mesh.cell_vertices(c)[k])).norm(), 1e-15 * 4);
           t.evaluate(c, at, psi.data(), g.data());
           for (int j = 0; j < n; ++j)
             EXPECT_NEAR(psi[j], j == k ? 1.0 : 0.0, 1e-12)
-                << f.name << " cell " << c << " vertex " << k << " (fan " << at.fan << "): psi_" << j;
+                << f.name << " cell " << c << " vertex " << k << " (fan " << at.fan << "): psi_"
+                << j;
         }
       }
     }
@@ -256,7 +259,8 @@ double edge_limit_deviation(const ElementTable& t, double eps) {
     std::vector<Eigen::Vector2d> g(n);
     for (int k = 0; k < n; ++k)
       for (double s : {0.25, 0.5, 0.75}) {
-        t.evaluate(c, FanPoint{k, {eps, (1 - eps) * (1.0 - s), (1 - eps) * s}}, psi.data(), g.data());
+        t.evaluate(c, FanPoint{k, {eps, (1 - eps) * (1.0 - s), (1 - eps) * s}}, psi.data(),
+                   g.data());
         for (int j = 0; j < n; ++j) {
           const double expected = j == k ? 1.0 - s : j == (k + 1) % n ? s : 0.0;
           worst = std::max(worst, std::abs(psi[j] - expected));
@@ -336,7 +340,7 @@ TEST(RkShapeFunctions, TriangleMeshGivesTheLinearTriangle) {
     for (int degree : {1, 2})
       for (int rule : {1, 3, 6})
         for (bool correction : {true, false}) {
-                    const ElementTable& t = table_of(kTri, rule, correction, {refinement, degree});
+          const ElementTable& t = table_of(kTri, rule, correction, {refinement, degree});
           double worst_psi = 0.0, worst_grad = 0.0;
           int worst_cell = -1;
           for (int c = 0; c < mesh.num_cells(); ++c) {
@@ -362,8 +366,9 @@ TEST(RkShapeFunctions, TriangleMeshGivesTheLinearTriangle) {
             }
             // And anywhere through evaluate() (uncorrected gradients).
             for (int fan = 0; fan < 3; ++fan)
-              for (const Eigen::Vector3d& bary : {Eigen::Vector3d(0.7, 0.2, 0.1), Eigen::Vector3d(0.05, 0.05, 0.9),
-                                                  Eigen::Vector3d(0.3, 0.35, 0.35)}) {
+              for (const Eigen::Vector3d& bary :
+                   {Eigen::Vector3d(0.7, 0.2, 0.1), Eigen::Vector3d(0.05, 0.05, 0.9),
+                    Eigen::Vector3d(0.3, 0.35, 0.35)}) {
                 double psi[3];
                 Eigen::Vector2d g[3];
                 t.evaluate(c, FanPoint{fan, bary}, psi, g);

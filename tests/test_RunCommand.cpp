@@ -31,21 +31,26 @@ const char* kScene = R"({
 class RunCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("vorodg_test_run_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() /
+           ("vorodg_test_run_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     std::ofstream(dir_ / "tiny.json") << kScene;
   }
   void TearDown() override { fs::remove_all(dir_); }
-  RunResult run(const std::vector<std::string>& args) const { return run_program(kExe, args, dir_); }
+  RunResult run(const std::vector<std::string>& args) const {
+    return run_program(kExe, args, dir_);
+  }
   fs::path dir_;
 };
 
 TEST_F(RunCommand, WritesEveryReportFile) {
-  const RunResult r = run({"run", (dir_ / "tiny.json").string(), "-o", (dir_ / "out").string(), "--quiet", "--no-plots"});
+  const RunResult r = run({"run", (dir_ / "tiny.json").string(), "-o", (dir_ / "out").string(),
+                           "--quiet", "--no-plots"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* f : {"results.jsonl", "results.csv", "summary.json", "timings.json", "report.md"})
+  for (const char* f :
+       {"results.jsonl", "results.csv", "summary.json", "timings.json", "report.md"})
     EXPECT_TRUE(fs::exists(dir_ / "out" / f)) << f;
   const auto summary = nlohmann::json::parse(slurp(dir_ / "out" / "summary.json"));
   ASSERT_EQ(summary["groups"].size(), 3u);  // cg, dg-nitsche kp=100, kp=1000
@@ -64,9 +69,11 @@ TEST_F(RunCommand, WritesEveryReportFile) {
 
 TEST_F(RunCommand, AnInterruptedStudyResumesToTheSameSummary) {
   const std::string scene = (dir_ / "tiny.json").string();
-  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "whole").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "whole").string(), "--quiet", "--no-plots"}).exit_code,
+            0);
   // A kill during a run leaves the finished lines and possibly half a line: model it exactly.
-  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "cut").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "cut").string(), "--quiet", "--no-plots"}).exit_code,
+            0);
   std::ifstream in(dir_ / "cut" / "results.jsonl");
   std::string kept, line;
   for (int i = 0; i < 5 && std::getline(in, line); ++i) kept += line + "\n";
@@ -75,20 +82,29 @@ TEST_F(RunCommand, AnInterruptedStudyResumesToTheSameSummary) {
   in.close();
   std::ofstream(dir_ / "cut" / "results.jsonl", std::ios::trunc) << kept;
   fs::remove(dir_ / "cut" / "summary.json");
-  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "cut").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "cut").string(), "--quiet", "--no-plots"}).exit_code,
+            0);
   EXPECT_EQ(slurp(dir_ / "whole" / "summary.json"), slurp(dir_ / "cut" / "summary.json"));
   // And a real kill at an arbitrary moment, then a rerun.
-  const std::string killed = "timeout -s KILL 0.7 " + quote(kExe.string()) + " run " + quote(scene) +
-                             " -o " + quote((dir_ / "killed").string()) + " --quiet --no-plots >/dev/null 2>&1";
+  const std::string killed = "timeout -s KILL 0.7 " + quote(kExe.string()) + " run " +
+                             quote(scene) + " -o " + quote((dir_ / "killed").string()) +
+                             " --quiet --no-plots >/dev/null 2>&1";
   [[maybe_unused]] const int status = std::system(killed.c_str());
-  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "killed").string(), "--quiet", "--no-plots"}).exit_code, 0);
+  ASSERT_EQ(
+      run({"run", scene, "-o", (dir_ / "killed").string(), "--quiet", "--no-plots"}).exit_code, 0);
   EXPECT_EQ(slurp(dir_ / "whole" / "summary.json"), slurp(dir_ / "killed" / "summary.json"));
 }
 
 TEST_F(RunCommand, ResultsDoNotDependOnTheThreadCount) {
   const std::string scene = (dir_ / "tiny.json").string();
-  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "one").string(), "--threads", "1", "--quiet", "--no-plots"}).exit_code, 0);
-  ASSERT_EQ(run({"run", scene, "-o", (dir_ / "two").string(), "--threads", "2", "--quiet", "--no-plots"}).exit_code, 0);
+  ASSERT_EQ(
+      run({"run", scene, "-o", (dir_ / "one").string(), "--threads", "1", "--quiet", "--no-plots"})
+          .exit_code,
+      0);
+  ASSERT_EQ(
+      run({"run", scene, "-o", (dir_ / "two").string(), "--threads", "2", "--quiet", "--no-plots"})
+          .exit_code,
+      0);
   EXPECT_EQ(slurp(dir_ / "one" / "summary.json"), slurp(dir_ / "two" / "summary.json"));
 }
 
@@ -99,15 +115,20 @@ TEST_F(RunCommand, BadScenesAreRefusedWithTheKeyNamed) {
   const Case cases[] = {
       {R"({"meshes": [{"sizes": [0.1]}], "formulatons": []})", "did you mean 'formulations'"},
       {R"({"meshes": [{"sizes": "0.1"}], "formulations": [{"name": "cg"}]})", "meshes[0].sizes"},
-      {R"({"meshes": [{"sizes": [0.1, 0.2]}], "formulations": [{"name": "cg"}]})", "coarse to fine"},
-      {R"({"meshes": [{"sizes": [0.1], "realizations": 0}], "formulations": [{"name": "cg"}]})", "realizations"},
-      {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "dg-nitsche", "kp": [0]}]})", "kp"},
-      {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "cg"}], "material": {"nu": 0.5}})", "material.nu"},
+      {R"({"meshes": [{"sizes": [0.1, 0.2]}], "formulations": [{"name": "cg"}]})",
+       "coarse to fine"},
+      {R"({"meshes": [{"sizes": [0.1], "realizations": 0}], "formulations": [{"name": "cg"}]})",
+       "realizations"},
+      {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "dg-nitsche", "kp": [0]}]})",
+       "kp"},
+      {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "cg"}], "material": {"nu": 0.5}})",
+       "material.nu"},
       {R"({"meshes": [{"sizes": [0.1]}], "formulations": [{"name": "cg"}])", "not valid JSON"},
   };
   for (const Case& c : cases) {
     std::ofstream(dir_ / "bad.json", std::ios::trunc) << c.text;
-    const RunResult r = run({"run", (dir_ / "bad.json").string(), "-o", (dir_ / "bad_out").string(), "--quiet"});
+    const RunResult r =
+        run({"run", (dir_ / "bad.json").string(), "-o", (dir_ / "bad_out").string(), "--quiet"});
     EXPECT_EQ(r.exit_code, 2) << c.text << "\n" << r.err;
     EXPECT_EQ(r.err_lines(), 1) << r.err;
     EXPECT_NE(r.err.find(c.mention), std::string::npos) << r.err;
@@ -121,15 +142,18 @@ TEST_F(RunCommand, TradeOffStudyWritesItsParetoFront) {
     "meshes": [{"family": "rcp", "sizes": [0.3, 0.15], "seed": 3}],
     "formulations": [{"name": "cg"}, {"name": "cg", "rule": 1, "label": "one point"}]
   })";
-  const RunResult r = run({"run", (dir_ / "tradeoff.json").string(), "-o", (dir_ / "t").string(), "--quiet", "--no-plots"});
+  const RunResult r = run({"run", (dir_ / "tradeoff.json").string(), "-o", (dir_ / "t").string(),
+                           "--quiet", "--no-plots"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto data = nlohmann::json::parse(slurp(dir_ / "t" / "tradeoff.json"));
   EXPECT_EQ(data["points"].size(), 4u);  // 2 configurations x 2 levels
   ASSERT_FALSE(data["pareto"].empty());
   // The front is cheapest first and strictly more accurate at every step.
   for (std::size_t i = 1; i < data["pareto"].size(); ++i) {
-    EXPECT_GE(data["pareto"][i]["seconds"].get<double>(), data["pareto"][i - 1]["seconds"].get<double>());
-    EXPECT_LT(data["pareto"][i]["l2_error"].get<double>(), data["pareto"][i - 1]["l2_error"].get<double>());
+    EXPECT_GE(data["pareto"][i]["seconds"].get<double>(),
+              data["pareto"][i - 1]["seconds"].get<double>());
+    EXPECT_LT(data["pareto"][i]["l2_error"].get<double>(),
+              data["pareto"][i - 1]["l2_error"].get<double>());
   }
   EXPECT_NE(slurp(dir_ / "t" / "report.md").find("Pareto front"), std::string::npos);
   // Wall times never reach the summary: it stays deterministic.
@@ -144,7 +168,8 @@ TEST_F(RunCommand, ListsTheShippedScenes) {
 }
 
 TEST_F(RunCommand, ThePatchSuiteMeetsItsExpectations) {
-  const RunResult r = run({"run", "patch-suite", "-o", (dir_ / "patch").string(), "--quiet", "--no-plots"});
+  const RunResult r =
+      run({"run", "patch-suite", "-o", (dir_ / "patch").string(), "--quiet", "--no-plots"});
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_EQ(r.out.find("UNEXPECTED"), std::string::npos) << r.out;
 }

@@ -5,21 +5,21 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
-#include <unistd.h>
-#include <map>
-#include <cmath>
 
 #include "support/RunVorodg.hpp"
 
 namespace vorodg {
 namespace {
 
-const std::filesystem::path kRepo = std::filesystem::path(VORODG_TEST_DATA).parent_path().parent_path();
-
+const std::filesystem::path kRepo =
+    std::filesystem::path(VORODG_TEST_DATA).parent_path().parent_path();
 
 TEST(SettingsSchema, KeysAndFlagsAreUnique) {
   std::set<std::string> keys, flags;
@@ -67,14 +67,16 @@ TEST(SettingsSchema, TheFirstBadSettingIsNamedWithItsValue) {
   error = check_settings(s);
   ASSERT_TRUE(error.has_value());
   EXPECT_EQ(error->message, "'plate': expected beam, patch, patch-mixed, patch-traction or mms");
-  for (double bad : {0.0, -1.0, std::nan("")}) EXPECT_TRUE(check_value(setting_spec("kp"), bad)) << bad;
+  for (double bad : {0.0, -1.0, std::nan("")})
+    EXPECT_TRUE(check_value(setting_spec("kp"), bad)) << bad;
 }
 
 TEST(SettingsSchema, ScenesDocListsEveryKeyWithItsDefault) {
   const std::string doc = testing::slurp(kRepo / "docs" / "scenes.md");
-  const std::map<SettingScope, std::string> prefix = {{SettingScope::material, "material."},
-                                                      {SettingScope::formulation, "formulations[]."},
-                                                      {SettingScope::outputs, "outputs."}};
+  const std::map<SettingScope, std::string> prefix = {
+      {SettingScope::material, "material."},
+      {SettingScope::formulation, "formulations[]."},
+      {SettingScope::outputs, "outputs."}};
   for (const SettingSpec& spec : setting_specs()) {
     if (!prefix.count(spec.scope)) continue;
     const std::string key = "`" + prefix.at(spec.scope) + spec.key + "`";
@@ -93,7 +95,8 @@ TEST(SettingsSchema, ScenesDocListsEveryKeyWithItsDefault) {
 }
 
 TEST(SettingsSchema, SolveHelpListsEveryFlagWithItsDoc) {
-  const auto scratch = std::filesystem::temp_directory_path() / ("schema_help_" + std::to_string(::getpid()));
+  const auto scratch =
+      std::filesystem::temp_directory_path() / ("schema_help_" + std::to_string(::getpid()));
   std::filesystem::create_directories(scratch);
   const auto r = testing::run_program(VORODG_EXE, {"solve", "--help"}, scratch);
   std::filesystem::remove_all(scratch);

@@ -17,8 +17,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -41,12 +41,12 @@ class SolveCommand : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("vorodg_test_SolveCommand_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() / ("vorodg_test_SolveCommand_" + std::string(info->name()) +
+                                        "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    io_ = fs::temp_directory_path() /
-          ("vorodg_test_SolveCommand_io_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    io_ = fs::temp_directory_path() / ("vorodg_test_SolveCommand_io_" + std::string(info->name()) +
+                                       "_" + std::to_string(::getpid()));
     fs::remove_all(io_);
     fs::create_directories(io_);
   }
@@ -55,9 +55,7 @@ class SolveCommand : public ::testing::Test {
     fs::remove_all(io_);
   }
 
-  RunResult run(const std::vector<std::string>& args) const {
-    return run_program(kExe, args, io_);
-  }
+  RunResult run(const std::vector<std::string>& args) const { return run_program(kExe, args, io_); }
 
   static std::string describe(const std::vector<std::string>& args, const RunResult& r) {
     std::string s = "vorodg";
@@ -78,7 +76,8 @@ class SolveCommand : public ::testing::Test {
     EXPECT_TRUE(r.err.starts_with("vorodg: error:")) << describe(args, r);
     if (!mention.empty()) {
       EXPECT_NE(r.err.find(mention), std::string::npos)
-          << "expected '" << mention << "' in the message\n" << describe(args, r);
+          << "expected '" << mention << "' in the message\n"
+          << describe(args, r);
     }
     EXPECT_FALSE(fs::exists(out)) << describe(args, r);
     EXPECT_FALSE(fs::exists(metrics)) << describe(args, r);
@@ -132,7 +131,8 @@ class SolveCommand : public ::testing::Test {
     ASSERT_TRUE(m.contains("seconds")) << m.dump(2);
     ASSERT_TRUE(m["seconds"].is_object()) << m.dump(2);
     for (const char* stage : {"element", "assembly", "factorization", "solve", "error", "mesh"}) {
-      ASSERT_TRUE(m["seconds"].contains(stage)) << "missing seconds." << stage << " in " << m.dump(2);
+      ASSERT_TRUE(m["seconds"].contains(stage))
+          << "missing seconds." << stage << " in " << m.dump(2);
       ASSERT_TRUE(m["seconds"][stage].is_number()) << stage;
       const double t = m["seconds"][stage].get<double>();
       EXPECT_TRUE(std::isfinite(t) && t >= 0.0) << stage << " " << t;
@@ -153,9 +153,11 @@ class SolveCommand : public ::testing::Test {
 
   static void expect_clean_vtu(const std::string& vtu) {
     for (const char* name : {"displacement", "exact_displacement", "mean_stress", "von_mises"})
-      EXPECT_NE(vtu.find("Name=\"" + std::string(name) + "\""), std::string::npos) << "no field " << name;
+      EXPECT_NE(vtu.find("Name=\"" + std::string(name) + "\""), std::string::npos)
+          << "no field " << name;
     std::string lower = vtu;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     EXPECT_EQ(lower.find("nan"), std::string::npos) << "NaN in the result file";
     EXPECT_EQ(lower.find("inf"), std::string::npos) << "infinity in the result file";
   }
@@ -185,31 +187,52 @@ TEST_F(SolveCommand, BeamWritesMetricsAndResult) {
 }
 
 TEST_F(SolveCommand, PlaneStrainMeanDilationAndOptions) {
-  const Success s = expect_success({"solve", "--family", "rcp", "--d", "0.15", "--seed", "4", "--problem",
-                                    "beam", "--plane", "strain", "--nu", "0.4999", "--mean-dilation",
-                                    "--rule", "1", "--refinement", "2", "--degree", "2", "--threads", "2",
-                                    "--domain", "0,-0.5,4.618802153517006,0.5"});
+  const Success s = expect_success({"solve",
+                                    "--family",
+                                    "rcp",
+                                    "--d",
+                                    "0.15",
+                                    "--seed",
+                                    "4",
+                                    "--problem",
+                                    "beam",
+                                    "--plane",
+                                    "strain",
+                                    "--nu",
+                                    "0.4999",
+                                    "--mean-dilation",
+                                    "--rule",
+                                    "1",
+                                    "--refinement",
+                                    "2",
+                                    "--degree",
+                                    "2",
+                                    "--threads",
+                                    "2",
+                                    "--domain",
+                                    "0,-0.5,4.618802153517006,0.5"});
   if (s.metrics.is_null()) return;
   EXPECT_LT(s.metrics["l2_error"].get<double>(), 0.1);
 }
 
 TEST_F(SolveCommand, PatchTestsPass) {
   for (const char* problem : {"patch", "patch-mixed"}) {
-    const Success s = expect_success(
-        {"solve", "--family", "perturbed-hex", "--h", "0.2", "--r", "0.4", "--problem", problem, "--domain", "0,0,2,1"});
+    const Success s = expect_success({"solve", "--family", "perturbed-hex", "--h", "0.2", "--r",
+                                      "0.4", "--problem", problem, "--domain", "0,0,2,1"});
     if (s.metrics.is_null()) continue;
     EXPECT_LT(s.metrics["l2_error"].get<double>(), 1e-10) << problem;
     EXPECT_LT(s.metrics["energy_error"].get<double>(), 1e-10) << problem;
-    const Success u = expect_success({"solve", "--family", "perturbed-hex", "--h", "0.2", "--r", "0.4",
-                                      "--problem", problem, "--domain", "0,0,2,1", "--no-correction"});
+    const Success u =
+        expect_success({"solve", "--family", "perturbed-hex", "--h", "0.2", "--r", "0.4",
+                        "--problem", problem, "--domain", "0,0,2,1", "--no-correction"});
     if (u.metrics.is_null()) continue;
     EXPECT_GT(u.metrics["l2_error"].get<double>(), 1e-6) << problem << " without the correction";
   }
 }
 
 TEST_F(SolveCommand, PatchTestOnImportedMesh) {
-  const Success s =
-      expect_success({"solve", "--mesh", (kData / "good" / "quads_2x2.vtu").string(), "--problem", "patch"});
+  const Success s = expect_success(
+      {"solve", "--mesh", (kData / "good" / "quads_2x2.vtu").string(), "--problem", "patch"});
   if (s.metrics.is_null()) return;
   EXPECT_EQ(s.metrics.value("cells", -1), 4);
   EXPECT_LT(s.metrics["l2_error"].get<double>(), 1e-10);
@@ -237,14 +260,18 @@ TEST_F(SolveCommand, RejectsBadMaterial) {
 TEST_F(SolveCommand, RejectsInvalidMesh) {
   for (const char* file : {"clockwise_cell.vtu", "hole.vtu"})
     expect_rejected({"solve", "--mesh", (kData / "invalid" / file).string(), "--problem", "patch"});
-  expect_rejected({"solve", "--mesh", (kData / "bad" / "not_xml.vtu").string(), "--problem", "patch"});
+  expect_rejected(
+      {"solve", "--mesh", (kData / "bad" / "not_xml.vtu").string(), "--problem", "patch"});
   expect_rejected({"solve", "--mesh", (dir_ / "missing.vtu").string(), "--problem", "patch"});
 }
 
 TEST_F(SolveCommand, RejectsBeamOnWrongDomain) {
-  expect_rejected({"solve", "--family", "hex", "--h", "0.2", "--problem", "beam", "--domain", "0,0,4,1"}, "beam");
-  expect_rejected({"solve", "--family", "hex", "--h", "0.2", "--problem", "beam", "--domain", "1,-0.5,4,0.5"},
-                  "beam");
+  expect_rejected(
+      {"solve", "--family", "hex", "--h", "0.2", "--problem", "beam", "--domain", "0,0,4,1"},
+      "beam");
+  expect_rejected(
+      {"solve", "--family", "hex", "--h", "0.2", "--problem", "beam", "--domain", "1,-0.5,4,0.5"},
+      "beam");
 }
 
 TEST_F(SolveCommand, RejectsOtherBadOptions) {
@@ -257,8 +284,8 @@ TEST_F(SolveCommand, RejectsOtherBadOptions) {
 }
 
 TEST_F(SolveCommand, RejectsMissingOutputFolder) {
-  const std::vector<std::string> args = {"solve", "--family", "hex", "--h", "0.2", "-o",
-                                         (dir_ / "no" / "such" / "r.vtu").string()};
+  const std::vector<std::string> args = {
+      "solve", "--family", "hex", "--h", "0.2", "-o", (dir_ / "no" / "such" / "r.vtu").string()};
   const RunResult r = run(args);
   EXPECT_EQ(r.exit_code, 2) << describe(args, r);
   EXPECT_EQ(r.err_lines(), 1) << describe(args, r);

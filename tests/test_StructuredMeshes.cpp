@@ -20,7 +20,9 @@
 namespace vorodg {
 
 // Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) { *os << side_name(s); }
+void PrintTo(Side s, std::ostream* os) {
+  *os << side_name(s);
+}
 
 namespace {
 
@@ -52,9 +54,12 @@ void expect_valid_tiling(const PolygonMesh& m) {
   EXPECT_LT(std::abs(m.total_area() - area) / area, 1e-12);
   EXPECT_DOUBLE_EQ(m.h_avg(), std::sqrt(area / m.num_cells()));
   for (const MeshEdge& e : m.edges())
-    if (e.on_boundary()) { EXPECT_NE(e.side, Side::none) << "edge " << e.v0 << "-" << e.v1; }
+    if (e.on_boundary()) {
+      EXPECT_NE(e.side, Side::none) << "edge " << e.v0 << "-" << e.v1;
+    }
   const Rectangle& dom = m.domain();
-  for (const Point& corner : {dom.lo(), Point(dom.x1(), dom.y0()), dom.hi(), Point(dom.x0(), dom.y1())})
+  for (const Point& corner :
+       {dom.lo(), Point(dom.x1(), dom.y0()), dom.hi(), Point(dom.x0(), dom.y1())})
     EXPECT_NE(std::find(m.vertices().begin(), m.vertices().end(), corner), m.vertices().end())
         << "corner " << corner.transpose() << " is not a vertex";
 }
@@ -84,8 +89,7 @@ TEST(HexMesh, ValidWithRegularInteriorHexagons) {
       if (edge_ref < 0) edge_ref = len;
       EXPECT_NEAR(len, edge_ref, 1e-12 * edge_ref) << "cell " << c << " edge " << k;
     }
-    EXPECT_NEAR(polygon::min_interior_angle(pts), 2 * std::numbers::pi / 3, 1e-12)
-        << "cell " << c;
+    EXPECT_NEAR(polygon::min_interior_angle(pts), 2 * std::numbers::pi / 3, 1e-12) << "cell " << c;
     const double a = m.cell_area(c);
     if (area_ref < 0) area_ref = a;
     EXPECT_NEAR(a, area_ref, 1e-12 * area_ref);
@@ -103,8 +107,9 @@ TEST(HexMesh, ValidWithRegularInteriorHexagons) {
 }
 
 TEST(HexMesh, OtherDomainsAndSizesAreValid) {
-  for (const auto& [dom, h] : {std::pair{Rectangle(0, 0, 4, 1), 0.1}, std::pair{Rectangle(0, 0, 1, 1), 0.23},
-                               std::pair{Rectangle(-2, 3, 1, 4.5), 0.17}}) {
+  for (const auto& [dom, h] :
+       {std::pair{Rectangle(0, 0, 4, 1), 0.1}, std::pair{Rectangle(0, 0, 1, 1), 0.23},
+        std::pair{Rectangle(-2, 3, 1, 4.5), 0.17}}) {
     SCOPED_TRACE(dom.to_string() + " h=" + std::to_string(h));
     expect_valid_tiling(generate_mesh(spec(MeshFamily::hex, dom, h)).mesh);
   }
@@ -144,7 +149,9 @@ TEST_P(PerturbedHex, ValidWithBoundaryVerticesOnTheirSidesAndCornersFixed) {
         EXPECT_EQ(dom.distance_to_side(p, static_cast<Side>(k)), 0.0)
             << "vertex " << v << " left side " << side_name(static_cast<Side>(k));
       }
-    if (nsides == 2) { EXPECT_EQ(p, p0) << "corner " << v << " moved"; }
+    if (nsides == 2) {
+      EXPECT_EQ(p, p0) << "corner " << v << " moved";
+    }
   }
   if (r == 0.0) {
     EXPECT_EQ(moved, 0);
@@ -169,8 +176,9 @@ TEST(PerturbedHexSpec, DeterministicPerSeedAndRejectsBadR) {
 }
 
 TEST(QuadMesh, ValidAllCellsFourSided) {
-  for (const auto& [dom, h] : {std::pair{Rectangle(0, 0, 4, 1), 0.1}, std::pair{Rectangle(0, 0, 1, 1), 0.3},
-                               std::pair{Rectangle(-1, -1, 2, 0.5), 0.07}}) {
+  for (const auto& [dom, h] :
+       {std::pair{Rectangle(0, 0, 4, 1), 0.1}, std::pair{Rectangle(0, 0, 1, 1), 0.3},
+        std::pair{Rectangle(-1, -1, 2, 0.5), 0.07}}) {
     SCOPED_TRACE(dom.to_string() + " h=" + std::to_string(h));
     const PolygonMesh m = generate_mesh(spec(MeshFamily::quad, dom, h)).mesh;
     expect_valid_tiling(m);
@@ -188,7 +196,8 @@ TEST(QuadMesh, ValidAllCellsFourSided) {
     }
   }
   // 4 x 1 with h = 0.1 is exactly 40 x 10.
-  EXPECT_EQ(generate_mesh(spec(MeshFamily::quad, Rectangle(0, 0, 4, 1), 0.1)).mesh.num_cells(), 400);
+  EXPECT_EQ(generate_mesh(spec(MeshFamily::quad, Rectangle(0, 0, 4, 1), 0.1)).mesh.num_cells(),
+            400);
 }
 
 TEST(TriMesh, ValidAllCellsTrianglesEveryBoundaryEdgeTagged) {
@@ -234,7 +243,8 @@ TEST(MeshFamilyNames, ParseAndPrint) {
 }
 
 TEST(StructuredSpec, RejectsNonPositiveSize) {
-  for (MeshFamily f : {MeshFamily::hex, MeshFamily::perturbed_hex, MeshFamily::quad, MeshFamily::tri})
+  for (MeshFamily f :
+       {MeshFamily::hex, MeshFamily::perturbed_hex, MeshFamily::quad, MeshFamily::tri})
     for (double h : {0.0, -0.1, std::numeric_limits<double>::infinity()}) {
       EXPECT_THROW(generate_mesh(spec(f, Rectangle(0, 0, 4, 1), h)), InputError)
           << family_name(f) << " size " << h;

@@ -23,7 +23,9 @@ double factorial(int n) {
 }
 
 /// Mean of x^a y^b over the reference triangle (0,0), (1,0), (0,1): 2 a! b! / (a + b + 2)!.
-double exact_mean(int a, int b) { return 2.0 * factorial(a) * factorial(b) / factorial(a + b + 2); }
+double exact_mean(int a, int b) {
+  return 2.0 * factorial(a) * factorial(b) / factorial(a + b + 2);
+}
 
 /// The rule's estimate of the same mean (points mapped with x = l1, y = l2).
 double rule_mean(const TriangleRule& rule, int a, int b) {

@@ -27,7 +27,9 @@
 namespace vorodg {
 
 // Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) { *os << side_name(s); }
+void PrintTo(Side s, std::ostream* os) {
+  *os << side_name(s);
+}
 
 namespace {
 
@@ -38,8 +40,8 @@ const fs::path kData = VORODG_TEST_DATA;
 // A fresh, empty folder per test.
 fs::path temp_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() /
-                 ("vorodg_test_VtuMesh_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::path dir = fs::temp_directory_path() / ("vorodg_test_VtuMesh_" + std::string(info->name()) +
+                                              "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -66,12 +68,12 @@ struct VtuParts {
        << "    <Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << n_cells << "\">\n";
     if (with_points)
       os << "      <Points>\n"
-         << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"" << points_format
-         << "\">\n          " << points << "\n        </DataArray>\n"
+         << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\""
+         << points_format << "\">\n          " << points << "\n        </DataArray>\n"
          << "      </Points>\n";
     os << "      <Cells>\n"
-       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">" << connectivity
-       << "</DataArray>\n"
+       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">"
+       << connectivity << "</DataArray>\n"
        << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" << offsets
        << "</DataArray>\n"
        << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">" << types
@@ -145,7 +147,8 @@ TEST(VtuMesh, RoundTripIsBitExact) {
 
 TEST(VtuMesh, CoordinatesUseShortestRoundTripFormatting) {
   // 0.1 is written as "0.1" (not 0.10000000000000001), 1/3 with all 17 digits it needs.
-  const std::vector<Point> v{Point(0, 0), Point(0.1, 0), Point(0.1, 1.0 / 3.0), Point(0, 1.0 / 3.0)};
+  const std::vector<Point> v{Point(0, 0), Point(0.1, 0), Point(0.1, 1.0 / 3.0),
+                             Point(0, 1.0 / 3.0)};
   const PolygonMesh m(Rectangle(0, 0, 0.1, 1.0 / 3.0), v, {0, 4}, {0, 1, 2, 3});
   const std::string text = vtu_text(m, {}, VtuEncoding::ascii);
   EXPECT_NE(text.find("0.1"), std::string::npos);
@@ -216,7 +219,8 @@ TEST(VtuMesh, WriteRejectsBadFieldsAndLeavesNoFile) {
   VtuFields non_finite;
   non_finite.cell_data = {VtuField{"e", 1, std::vector<double>(m.num_cells(), 1.0)}};
   non_finite.cell_data[0].values[3] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(write_vtu(file, m, non_finite), NumericalError);  // a NaN result is a breakdown (exit 3)
+  EXPECT_THROW(write_vtu(file, m, non_finite),
+               NumericalError);  // a NaN result is a breakdown (exit 3)
   EXPECT_FALSE(fs::exists(file));
   // Nothing else was left behind (no temporary files).
   EXPECT_TRUE(fs::is_empty(dir));
@@ -397,7 +401,9 @@ TEST(VtuMesh, ImportedMeshGetsBoundaryTagsFromItsBoundingBox) {
   const Rectangle bigger(0, -2, 5, 1);
   const PolygonMesh n = read_vtu(kData / "good" / "mixed_cell_types.vtu", &bigger);
   for (const MeshEdge& e : n.edges())
-    if (e.on_boundary()) { EXPECT_EQ(e.side, Side::none); }
+    if (e.on_boundary()) {
+      EXPECT_EQ(e.side, Side::none);
+    }
   EXPECT_FALSE(validate_mesh(n).ok());
 }
 

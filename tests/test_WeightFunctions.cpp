@@ -43,7 +43,9 @@ std::string label(const Family& f, const WeightFunctionOptions& o) {
 }
 
 /// Scale of a cell's weight functions: -lap w = 1 gives w ~ (cell size)^2.
-double weight_scale(const PolygonMesh& m, int c) { return m.cell_area(c); }
+double weight_scale(const PolygonMesh& m, int c) {
+  return m.cell_area(c);
+}
 
 // ---------------------------------------------------------------------------------------------
 // The lattice.
@@ -65,9 +67,12 @@ TEST(FanLattice, NumberingIsABijectionWithSharedSpokesAndVertices) {
       // nodes: in one.
       for (int node = 0; node < lat.node_count(); ++node) {
         int expected = 1;
-        if (node == 0) expected = n;
-        else if (lat.is_vertex(node)) expected = 2;
-        else if (node < 1 + n + n * (N - 1)) expected = 2;  // spokes
+        if (node == 0)
+          expected = n;
+        else if (lat.is_vertex(node))
+          expected = 2;
+        else if (node < 1 + n + n * (N - 1))
+          expected = 2;  // spokes
         EXPECT_EQ(hits[node], expected) << "n " << n << " N " << N << " node " << node;
       }
       for (int k = 0; k < n; ++k) {
@@ -229,9 +234,10 @@ TEST(WeightFunctions, PositiveAtEveryQuadraturePoint) {
       }
       std::ostringstream cells;
       for (int c : bad_cells) cells << ' ' << c;
-      EXPECT_EQ(failures, 0) << label(f, o) << ": cells with w <= 0 at a quadrature point:" << cells.str();
-      std::cout << "[ weights ] " << label(f, o) << ": min w / cell area at quadrature points = "
-                << worst << "\n";
+      EXPECT_EQ(failures, 0) << label(f, o)
+                             << ": cells with w <= 0 at a quadrature point:" << cells.str();
+      std::cout << "[ weights ] " << label(f, o)
+                << ": min w / cell area at quadrature points = " << worst << "\n";
     }
   }
 }
@@ -239,7 +245,8 @@ TEST(WeightFunctions, PositiveAtEveryQuadraturePoint) {
 TEST(WeightFunctions, PatchProblemIsConformingAcrossCells) {
   for (const Family& f : kFamilies) {
     const PolygonMesh& mesh = mesh_of(f);
-    for (const WeightFunctionOptions& o : {WeightFunctionOptions{1, 1}, WeightFunctionOptions{1, 2}}) {
+    for (const WeightFunctionOptions& o :
+         {WeightFunctionOptions{1, 1}, WeightFunctionOptions{1, 2}}) {
       const WeightFunctions wf(mesh, o);
       const int N = o.degree * wf.lattice_size();
       // Same value of w_v at v in every cell of its patch.
@@ -339,7 +346,8 @@ TEST(WeightFunctions, ThreadCountDoesNotChangeTheResult) {
   // exercises the dense one.
   for (const Family& f : kFamilies) {
     const PolygonMesh& mesh = mesh_of(f);
-    for (const WeightFunctionOptions& o : {WeightFunctionOptions{1, 1}, WeightFunctionOptions{2, 2}}) {
+    for (const WeightFunctionOptions& o :
+         {WeightFunctionOptions{1, 1}, WeightFunctionOptions{2, 2}}) {
       const WeightFunctions one(mesh, o, 1), two(mesh, o, 2);
       for (int c = 0; c < mesh.num_cells(); ++c) {
         EXPECT_EQ(one.centroids()[c], two.centroids()[c]);
@@ -347,7 +355,8 @@ TEST(WeightFunctions, ThreadCountDoesNotChangeTheResult) {
           const auto a = one.values(c, k), b = two.values(c, k);
           ASSERT_EQ(a.size(), b.size());
           for (std::size_t i = 0; i < a.size(); ++i)
-            ASSERT_EQ(a[i], b[i]) << label(f, o) << " cell " << c << " vertex " << k << " node " << i;
+            ASSERT_EQ(a[i], b[i]) << label(f, o) << " cell " << c << " vertex " << k << " node "
+                                  << i;
         }
       }
     }

@@ -13,7 +13,8 @@ struct CellSums {
 };
 
 CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, int c,
-                        const Eigen::VectorXd& u, bool energy, const CellDilatationMean& dilatation_mean) {
+                        const Eigen::VectorXd& u, bool energy,
+                        const CellDilatationMean& dilatation_mean) {
   const bool mean_dilation = static_cast<bool>(dilatation_mean);
   const PolygonMesh& mesh = table.mesh();
   const auto loop = mesh.cell_vertices(c);
@@ -27,8 +28,9 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
   CellSums sums;
   const double cell_dilatation = mean_dilation ? dilatation_mean(c, u) : 0.0;
   for (int k = 0; k < n; ++k) {
-    const double fan_area = 0.5 * std::abs((mesh.vertex(loop[k]) - C).x() * (mesh.vertex(loop[(k + 1) % n]) - C).y() -
-                                           (mesh.vertex(loop[k]) - C).y() * (mesh.vertex(loop[(k + 1) % n]) - C).x());
+    const double fan_area =
+        0.5 * std::abs((mesh.vertex(loop[k]) - C).x() * (mesh.vertex(loop[(k + 1) % n]) - C).y() -
+                       (mesh.vertex(loop[k]) - C).y() * (mesh.vertex(loop[(k + 1) % n]) - C).x());
     const double sub_area = fan_area / (m * m);
     for (int a = 0; a < m; ++a)
       for (int b = 0; a + b < m; ++b)
@@ -93,8 +95,8 @@ ErrorReport compute_errors(const ElementTable& table, const ExactSolution& exact
   report.l2_absolute = std::sqrt(total.l2);
   report.energy_absolute = std::sqrt(total.energy);
   report.l2_error = total.l2_exact > 0 ? std::sqrt(total.l2 / total.l2_exact) : report.l2_absolute;
-  report.energy_error =
-      total.energy_exact > 0 ? std::sqrt(total.energy / total.energy_exact) : report.energy_absolute;
+  report.energy_error = total.energy_exact > 0 ? std::sqrt(total.energy / total.energy_exact)
+                                               : report.energy_absolute;
   if (!std::isfinite(report.l2_error) || !std::isfinite(report.energy_error))
     throw NumericalError("the error norms are not finite: the solution broke down");
   return report;

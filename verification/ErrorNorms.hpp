@@ -14,8 +14,8 @@
 namespace vorodg {
 
 struct ErrorReport {
-  double l2_error = 0.0;       // ||u_h - u|| / ||u||, L2 over the domain
-  double energy_error = 0.0;   // a(u_h - u, u_h - u)^1/2 / a(u, u)^1/2
+  double l2_error = 0.0;      // ||u_h - u|| / ||u||, L2 over the domain
+  double energy_error = 0.0;  // a(u_h - u, u_h - u)^1/2 / a(u, u)^1/2
   double l2_absolute = 0.0, energy_absolute = 0.0;
   std::vector<double> cell_l2_density;      // per cell: int |u_h - u|^2 / area
   std::vector<double> cell_energy_density;  // per cell: int (eps_h - eps) D (eps_h - eps) / area

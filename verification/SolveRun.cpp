@@ -29,7 +29,8 @@ std::unique_ptr<ExactSolution> make_problem(const SolveSettings& s, const Rectan
   if (s.problem == "patch-traction")
     return std::make_unique<AffineField>(material, AffineField::Supports::traction);
   if (s.problem == "mms") return std::make_unique<ManufacturedSolution>(material, domain);
-  throw InputError("problem '" + s.problem + "': expected one of beam, patch, patch-mixed, patch-traction, mms");
+  throw InputError("problem '" + s.problem +
+                   "': expected one of beam, patch, patch-mixed, patch-traction, mms");
 }
 
 double von_mises(const Eigen::Vector3d& s, const IsotropicElasticity& material) {
@@ -73,15 +74,16 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   ElementTable table(mesh, settings.element);
   result.seconds["element"] = clock.seconds();
   for (int c = 0; c < mesh.num_cells(); ++c) {
-    result.max_divergence_defect =
-        std::max(result.max_divergence_defect, table.divergence_defect(c) / std::sqrt(mesh.cell_area(c)));
+    result.max_divergence_defect = std::max(
+        result.max_divergence_defect, table.divergence_defect(c) / std::sqrt(mesh.cell_area(c)));
     result.min_moment_rcond = c == 0 ? table.min_moment_rcond(c)
                                      : std::min(result.min_moment_rcond, table.min_moment_rcond(c));
   }
   const ElasticityIntegrator integrator(table, problem->material(), settings.mean_dilation);
   ElasticityIntegrator::MeanStrainOperators mean_strain;
   if (cg) {
-    CgElasticity formulation(table, integrator, *problem, settings.element.threads, settings.ordering);
+    CgElasticity formulation(table, integrator, *problem, settings.element.threads,
+                             settings.ordering);
     formulation.setup_system();
     formulation.assemble_system();
     // What the errors and stresses need later is kept per cell; the table's point values go

@@ -18,7 +18,7 @@
 namespace vorodg {
 
 struct SolveSettings {
-  std::string problem = "beam";  // beam | patch | patch-mixed | patch-traction | mms
+  std::string problem = "beam";    // beam | patch | patch-mixed | patch-traction | mms
   std::string formulation = "cg";  // cg | dg-penalty | dg-al | dg-nitsche | dg-sipg
   PlaneModel plane = PlaneModel::stress;
   double E = 1.0;
@@ -37,7 +37,7 @@ struct SolveResult {
   double l2_error = 0.0;
   double energy_error = 0.0;
   double rcond = 0.0;
-  long factor_nonzeros = 0;  // entries of the Cholesky factor (its memory: 8 bytes each)
+  long factor_nonzeros = 0;            // entries of the Cholesky factor (its memory: 8 bytes each)
   double max_divergence_defect = 0.0;  // before correction, relative to sqrt(cell area)
   double min_moment_rcond = 0.0;
   StageTimes seconds;

@@ -21,7 +21,8 @@ void ElasticityIntegrator::strain_operator(int c, int q, StrainOperator& B) cons
   for (int j = 0; j < table_.num_points(c); ++j) area += table_.weight(c, j);
   for (int k = 0; k < n; ++k) {
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-    for (int j = 0; j < table_.num_points(c); ++j) mean += table_.weight(c, j) * table_.grad(c, j, k);
+    for (int j = 0; j < table_.num_points(c); ++j)
+      mean += table_.weight(c, j) * table_.grad(c, j, k);
     const Eigen::Vector2d shift = share * (mean / area - table_.grad(c, q, k));
     for (int d = 0; d < 2; ++d) {
       B(0, 2 * k + d) += shift[d];
@@ -42,14 +43,15 @@ void ElasticityIntegrator::cell_matrix(int c, Eigen::MatrixXd& K) const {
 }
 
 ElasticityIntegrator::CellMatrices ElasticityIntegrator::cell_matrices(int first, int last,
-                                                                      int threads) const {
+                                                                       int threads) const {
   const PolygonMesh& mesh = table_.mesh();
   const int count = last - first;
   CellMatrices out;
   out.first = first;
   out.offset.assign(count + 1, 0);
   for (int i = 0; i < count; ++i)
-    out.offset[i + 1] = out.offset[i] + 4 * std::size_t(mesh.cell_size(first + i)) * mesh.cell_size(first + i);
+    out.offset[i + 1] =
+        out.offset[i] + 4 * std::size_t(mesh.cell_size(first + i)) * mesh.cell_size(first + i);
   out.data.resize(out.offset.back());
 #pragma omp parallel num_threads(std::max(threads, 1))
   {
@@ -78,11 +80,13 @@ StrainOperator ElasticityIntegrator::mean_strain_operator(int c) const {
   return sum / area;
 }
 
-ElasticityIntegrator::MeanStrainOperators ElasticityIntegrator::all_mean_strain_operators(int threads) const {
+ElasticityIntegrator::MeanStrainOperators ElasticityIntegrator::all_mean_strain_operators(
+    int threads) const {
   const int nc = table_.mesh().num_cells();
   MeanStrainOperators out;
   out.offset.assign(nc + 1, 0);
-  for (int c = 0; c < nc; ++c) out.offset[c + 1] = out.offset[c] + 6 * std::size_t(table_.num_nodes(c));
+  for (int c = 0; c < nc; ++c)
+    out.offset[c + 1] = out.offset[c] + 6 * std::size_t(table_.num_nodes(c));
   out.data.resize(out.offset.back());
 #pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(threads, 1))
   for (int c = 0; c < nc; ++c) {

@@ -49,7 +49,8 @@ class ElasticityIntegrator {
     std::vector<std::size_t> offset;
     std::vector<double> data;
     Eigen::Map<const StrainOperator> block(int c) const {
-      return {data.data() + offset[c], 3, static_cast<Eigen::Index>((offset[c + 1] - offset[c]) / 3)};
+      return {data.data() + offset[c], 3,
+              static_cast<Eigen::Index>((offset[c + 1] - offset[c]) / 3)};
     }
   };
   MeanStrainOperators all_mean_strain_operators(int threads) const;

@@ -18,7 +18,8 @@ namespace {
 constexpr int kMaxNodes = 64;  // cells with more vertices are rejected
 
 void check_options(const ElementOptions& o) {
-  if (std::find(kFanRulePoints.begin(), kFanRulePoints.end(), o.rule_points) == kFanRulePoints.end())
+  if (std::find(kFanRulePoints.begin(), kFanRulePoints.end(), o.rule_points) ==
+      kFanRulePoints.end())
     throw InputError("quadrature rule with " + std::to_string(o.rule_points) +
                      " points per fan triangle: expected 1, 3 or 6");
   check_weight_options(o.weights);
@@ -33,8 +34,9 @@ void check_star_shaped(const PolygonMesh& mesh) {
                        " vertices, expected at most " + std::to_string(kMaxNodes));
     const double area = polygon::signed_area(pts);
     if (!(area > 0.0) || !polygon::star_shaped_about(pts, polygon::centroid(pts, area), 0.0))
-      throw InputError("cell " + std::to_string(c) +
-                       " is not star-shaped with respect to its centroid (fan quadrature needs it)");
+      throw InputError(
+          "cell " + std::to_string(c) +
+          " is not star-shaped with respect to its centroid (fan quadrature needs it)");
   }
 }
 
@@ -74,7 +76,8 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
     build_cell(c);
     if (!(rcond_[c] > kMinMomentRcond) || !(min_weight_[c] > 0.0)) {
       int expected = failed.load();
-      while (c < expected && !failed.compare_exchange_weak(expected, c)) {}
+      while (c < expected && !failed.compare_exchange_weak(expected, c)) {
+      }
     }
   }
   if (failed < nc) {
@@ -84,11 +87,13 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
     // indefinite or leaves a node without influence.
     if (!(min_weight_[c] > 0.0))
       throw NumericalError("cell " + std::to_string(c) + ": a vertex weight function is " +
-                           fmt(min_weight_[c]) + " <= 0 at a quadrature point (expected > 0 inside "
+                           fmt(min_weight_[c]) +
+                           " <= 0 at a quadrature point (expected > 0 inside "
                            "the cell; a degenerate cell or weight sub-triangle)");
     throw NumericalError("cell " + std::to_string(c) +
                          ": the RK moment matrix is singular at a quadrature point (reciprocal "
-                         "condition " + fmt(rcond_[c]) + ", expected > " + fmt(kMinMomentRcond) + ")");
+                         "condition " +
+                         fmt(rcond_[c]) + ", expected > " + fmt(kMinMomentRcond) + ")");
   }
 }
 
@@ -164,7 +169,8 @@ void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vecto
   constexpr double kInside = 1e-9;
   const bool on_edge = at.bary[0] < kInside;
   Eigen::Vector3d bary = at.bary;
-  if (on_edge) bary = Eigen::Vector3d(kInside, at.bary[1] * (1 - kInside), at.bary[2] * (1 - kInside));
+  if (on_edge)
+    bary = Eigen::Vector3d(kInside, at.bary[1] * (1 - kInside), at.bary[2] * (1 - kInside));
   weights_->evaluate(c, at.fan, bary, w, grad_w);
   const FanPoint inside{at.fan, bary};
   rk_shape_functions(cell_frame(mesh_, c, weights_->centroids()[c]),

@@ -12,10 +12,10 @@
 namespace vorodg {
 
 struct ElementOptions {
-  int rule_points = 3;                 // per fan triangle: 1, 3 or 6
-  bool divergence_correction = true;   // enforce the discrete divergence identity (Eq. 16)
+  int rule_points = 3;                // per fan triangle: 1, 3 or 6
+  bool divergence_correction = true;  // enforce the discrete divergence identity (Eq. 16)
   WeightFunctionOptions weights;
-  int threads = 1;                     // setup threads; results do not depend on it
+  int threads = 1;  // setup threads; results do not depend on it
 };
 
 /// Quadrature point of a cell: fan triangle and barycentric coordinates (centroid, v_k, v_k+1).
@@ -41,7 +41,9 @@ class ElementTable {
   double weight(int c, int q) const { return weights_q_[point_offsets_[c] + q]; }
   const FanPoint& fan_point(int c, int q) const { return fan_points_[point_offsets_[c] + q]; }
   /// psi_k and grad psi_k of the cell's vertex k at quadrature point q.
-  double shape(int c, int q, int k) const { return shape_[value_offsets_[c] + q * num_nodes(c) + k]; }
+  double shape(int c, int q, int k) const {
+    return shape_[value_offsets_[c] + q * num_nodes(c) + k];
+  }
   const Eigen::Vector2d& grad(int c, int q, int k) const {
     return grad_[value_offsets_[c] + q * num_nodes(c) + k];
   }

@@ -12,7 +12,8 @@ double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vecto
     return Eigen::Vector3d(1.0, (y.x() - frame.centre.x()) / frame.scale,
                            (y.y() - frame.centre.y()) / frame.scale);
   };
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero(), dM[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero(),
+                  dM[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   for (int J = 0; J < n; ++J) {
     const Eigen::Vector3d pJ = basis(nodes[J]);
     const Eigen::Matrix3d ppT = pJ * pJ.transpose();
@@ -23,8 +24,8 @@ double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vecto
   // M is 3x3 symmetric positive definite inside the cell: its inverse in closed form (adjugate
   // over determinant) is exact enough and far cheaper than a factorization per point.
   const Eigen::Matrix3d Minv = M.inverse();
-  const double rcond = 1.0 / (M.cwiseAbs().colwise().sum().maxCoeff() *
-                              Minv.cwiseAbs().colwise().sum().maxCoeff());
+  const double rcond =
+      1.0 / (M.cwiseAbs().colwise().sum().maxCoeff() * Minv.cwiseAbs().colwise().sum().maxCoeff());
   // One step of iterative refinement makes the solves backward stable, which is what keeps
   // partition of unity and linear reproduction at round-off level near the cell's edges,
   // where M is ill-conditioned.

@@ -104,7 +104,7 @@ void number_patch(const PolygonMesh& mesh, int vertex, int N, PatchNumbering& pa
     for (int s = 0; s < n; ++s)
       for (int t = 1; t < N; ++t) cd.dof[lattice.spoke_node(s, t)] = patch.unknowns++;
     for (int node = lattice.first_interior(); node < lattice.node_count(); ++node)
-      cd.dof[node] = patch.unknowns++;  // fan interiors
+      cd.dof[node] = patch.unknowns++;                // fan interiors
     for (int e_local : {cd.k, (cd.k + n - 1) % n}) {  // the two edges at the patch vertex
       const int e = mesh.cell_edges(c)[e_local];
       auto it = std::find_if(shared_edges.begin(), shared_edges.begin() + n_shared,
@@ -141,7 +141,8 @@ WeightFunctions::WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOp
   offsets_.resize(mesh.num_cells() + 1, 0);
   for (int c = 0; c < mesh.num_cells(); ++c) {
     centroids_[c] = mesh.cell_centroid(c);
-    offsets_[c + 1] = offsets_[c] + static_cast<std::size_t>(mesh.cell_size(c)) * lattice(c).node_count();
+    offsets_[c + 1] =
+        offsets_[c] + static_cast<std::size_t>(mesh.cell_size(c)) * lattice(c).node_count();
   }
   values_.assign(offsets_.back(), 0.0);
 #pragma omp parallel num_threads(std::max(threads, 1))
@@ -190,8 +191,10 @@ void WeightFunctions::solve_patch(int vertex) {
               for (int j = 0; j < nodes.count; ++j) {
                 const int dj = dofs[j];
                 if (dj < 0 || dj > di) continue;
-                if (dense) K_dense(di, dj) += local.K(i, j);
-                else triplets.emplace_back(di, dj, local.K(i, j));
+                if (dense)
+                  K_dense(di, dj) += local.K(i, j);
+                else
+                  triplets.emplace_back(di, dj, local.K(i, j));
               }
             }
           }
@@ -209,7 +212,8 @@ void WeightFunctions::solve_patch(int vertex) {
   for (const auto& cd : patch.cells) {
     const int n_nodes = static_cast<int>(cd.dof.size());
     double* out = values_.data() + offsets_[cd.cell] + static_cast<std::size_t>(cd.k) * n_nodes;
-    for (int node = 0; node < n_nodes; ++node) out[node] = cd.dof[node] >= 0 ? w[cd.dof[node]] : 0.0;
+    for (int node = 0; node < n_nodes; ++node)
+      out[node] = cd.dof[node] >= 0 ? w[cd.dof[node]] : 0.0;
   }
 }
 
@@ -223,11 +227,10 @@ void WeightFunctions::evaluate(int cell, int fan, const Eigen::Vector3d& bary, d
   const auto nodes = sub_triangle_nodes(lat, fan, loc.a, loc.b, loc.up, degree);
   double phi[6], dphi[6][2];
   lattice_basis(degree, loc.xi, loc.eta, phi, dphi);
-  const Eigen::Matrix2d Jinv_t =
-      sub_triangle_jacobian(centroids_[cell], mesh_.vertex(loop[fan]),
-                            mesh_.vertex(loop[(fan + 1) % n]), m, loc.up)
-          .inverse()
-          .transpose();
+  const Eigen::Matrix2d Jinv_t = sub_triangle_jacobian(centroids_[cell], mesh_.vertex(loop[fan]),
+                                                       mesh_.vertex(loop[(fan + 1) % n]), m, loc.up)
+                                     .inverse()
+                                     .transpose();
   for (int j = 0; j < n; ++j) {
     const auto vals = values(cell, j);
     double value = 0.0;

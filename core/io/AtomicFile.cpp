@@ -44,7 +44,8 @@ std::string read_file(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, ec))
     throw InputError("input '" + path.string() + "': is a folder, expected a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("input '" + path.string() + "': cannot open (" + std::strerror(errno) + ")");
+  if (!in)
+    throw InputError("input '" + path.string() + "': cannot open (" + std::strerror(errno) + ")");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();

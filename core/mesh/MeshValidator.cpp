@@ -26,7 +26,9 @@ class DefectList {
   int max_;
 };
 
-std::string cell_name(int c) { return "cell " + std::to_string(c); }
+std::string cell_name(int c) {
+  return "cell " + std::to_string(c);
+}
 
 void check_vertices(const PolygonMesh& mesh, double tol, DefectList& out) {
   const int n = mesh.num_vertices();
@@ -71,7 +73,8 @@ void check_cell(const PolygonMesh& mesh, int c, double tol, double min_area, Def
   const double area = polygon::signed_area(pts);
   if (!std::isfinite(area) || std::abs(area) <= min_area) {  // not finite: coordinates overflow
     out.add(MeshDefect::Kind::zero_area_cell, c,
-            cell_name(c) + " has area " + fmt(area) + ", expected a finite area above " + fmt(min_area));
+            cell_name(c) + " has area " + fmt(area) + ", expected a finite area above " +
+                fmt(min_area));
     return;
   }
   if (polygon::self_intersects(pts)) {
@@ -80,9 +83,9 @@ void check_cell(const PolygonMesh& mesh, int c, double tol, double min_area, Def
     return;
   }
   if (area < 0) {
-    out.add(MeshDefect::Kind::clockwise_cell, c,
-            cell_name(c) + " is clockwise (signed area " + fmt(area) +
-                "), expected counter-clockwise");
+    out.add(
+        MeshDefect::Kind::clockwise_cell, c,
+        cell_name(c) + " is clockwise (signed area " + fmt(area) + "), expected counter-clockwise");
     return;
   }
   // Fan quadrature and the RK element need every fan triangle from the centroid positive.
@@ -127,19 +130,32 @@ void check_edges(const PolygonMesh& mesh, DefectList& out) {
 std::string_view defect_kind_name(MeshDefect::Kind kind) {
   using K = MeshDefect::Kind;
   switch (kind) {
-    case K::empty_mesh: return "empty mesh";
-    case K::duplicate_vertex: return "duplicate vertex";
-    case K::unreferenced_vertex: return "unreferenced vertex";
-    case K::repeated_vertex_in_cell: return "repeated vertex in cell";
-    case K::clockwise_cell: return "clockwise cell";
-    case K::zero_area_cell: return "zero-area cell";
-    case K::self_intersecting_cell: return "self-intersecting cell";
-    case K::not_star_shaped: return "cell not star-shaped";
-    case K::cell_outside_domain: return "cell outside domain";
-    case K::non_manifold_edge: return "non-manifold edge";
-    case K::inconsistent_orientation: return "inconsistent orientation";
-    case K::boundary_edge_off_domain: return "boundary edge off domain";
-    case K::area_mismatch: return "area mismatch";
+    case K::empty_mesh:
+      return "empty mesh";
+    case K::duplicate_vertex:
+      return "duplicate vertex";
+    case K::unreferenced_vertex:
+      return "unreferenced vertex";
+    case K::repeated_vertex_in_cell:
+      return "repeated vertex in cell";
+    case K::clockwise_cell:
+      return "clockwise cell";
+    case K::zero_area_cell:
+      return "zero-area cell";
+    case K::self_intersecting_cell:
+      return "self-intersecting cell";
+    case K::not_star_shaped:
+      return "cell not star-shaped";
+    case K::cell_outside_domain:
+      return "cell outside domain";
+    case K::non_manifold_edge:
+      return "non-manifold edge";
+    case K::inconsistent_orientation:
+      return "inconsistent orientation";
+    case K::boundary_edge_off_domain:
+      return "boundary edge off domain";
+    case K::area_mismatch:
+      return "area mismatch";
   }
   return "?";
 }

@@ -51,6 +51,7 @@ struct MeshValidationReport {
   std::string summary() const;
 };
 
-MeshValidationReport validate_mesh(const PolygonMesh& mesh, const MeshValidationOptions& options = {});
+MeshValidationReport validate_mesh(const PolygonMesh& mesh,
+                                   const MeshValidationOptions& options = {});
 
 }  // namespace vorodg

@@ -77,7 +77,10 @@ void PolygonMesh::build_edges() {
       const int other = std::max(a, b);
       int found = -1;
       for (int e = first[key]; e >= 0; e = next[e])
-        if (std::max(edges_[e].v0, edges_[e].v1) == other) { found = e; break; }
+        if (std::max(edges_[e].v0, edges_[e].v1) == other) {
+          found = e;
+          break;
+        }
       if (found < 0) {
         found = static_cast<int>(edges_.size());
         edges_.push_back({a, b, c, -1, Side::none});
@@ -88,8 +91,9 @@ void PolygonMesh::build_edges() {
         auto where = [&] { return "edge (" + std::to_string(a) + "," + std::to_string(b) + ")"; };
         if (edge.cell1 >= 0) {
           topology_defects_.push_back({TopologyDefect::Kind::non_manifold_edge, a, b,
-                                       where() + " is shared by cells " + std::to_string(edge.cell0) +
-                                           ", " + std::to_string(edge.cell1) + " and " +
+                                       where() + " is shared by cells " +
+                                           std::to_string(edge.cell0) + ", " +
+                                           std::to_string(edge.cell1) + " and " +
                                            std::to_string(c) + ", expected at most two"});
         } else if (edge.v0 == a) {
           topology_defects_.push_back({TopologyDefect::Kind::inconsistent_orientation, a, b,
@@ -124,7 +128,9 @@ std::vector<Point> PolygonMesh::cell_points(int c) const {
   return pts;
 }
 
-double PolygonMesh::cell_area(int c) const { return polygon::signed_area(cell_points(c)); }
+double PolygonMesh::cell_area(int c) const {
+  return polygon::signed_area(cell_points(c));
+}
 
 Point PolygonMesh::cell_centroid(int c) const {
   const auto pts = cell_points(c);

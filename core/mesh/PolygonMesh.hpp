@@ -76,7 +76,9 @@ class PolygonMesh {
   double total_area() const;
   /// Mesh size used on every convergence plot: sqrt(domain area / number of cells).
   double h_avg() const;
-  double edge_length(int e) const { return (vertices_[edges_[e].v1] - vertices_[edges_[e].v0]).norm(); }
+  double edge_length(int e) const {
+    return (vertices_[edges_[e].v1] - vertices_[edges_[e].v0]).norm();
+  }
 
   const std::vector<int>& offsets() const { return offsets_; }
   const std::vector<int>& cell_vertex_list() const { return cell_vertices_; }

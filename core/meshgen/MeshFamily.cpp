@@ -17,8 +17,12 @@ namespace vorodg {
 namespace {
 
 constexpr std::pair<MeshFamily, std::string_view> kFamilyNames[] = {
-    {MeshFamily::rcp, "rcp"},   {MeshFamily::hex, "hex"},   {MeshFamily::perturbed_hex, "perturbed-hex"},
-    {MeshFamily::tri, "tri"},   {MeshFamily::quad, "quad"}, {MeshFamily::file, "file"},
+    {MeshFamily::rcp, "rcp"},
+    {MeshFamily::hex, "hex"},
+    {MeshFamily::perturbed_hex, "perturbed-hex"},
+    {MeshFamily::tri, "tri"},
+    {MeshFamily::quad, "quad"},
+    {MeshFamily::file, "file"},
 };
 
 /// Covered fraction of the seeds at least 3d from every side, over the inset rectangle: the
@@ -48,7 +52,8 @@ GeneratedMesh generate_rcp(const MeshSpec& spec) {
   const auto sample = sample_poisson_disk(spec.domain, options);
   out.report.seconds["seeding"] = clock.seconds();
   out.report.seeds = static_cast<int>(sample.points.size());
-  out.report.covered_fraction = covered_fraction(sample.points.size(), spec.size, spec.domain.area());
+  out.report.covered_fraction =
+      covered_fraction(sample.points.size(), spec.size, spec.domain.area());
   out.report.covered_fraction_interior = interior_fraction(spec.domain, sample.points, spec.size);
 
   clock.restart();
@@ -82,8 +87,9 @@ GeneratedMesh generate_tri(const MeshSpec& spec) {
       if (spec.domain.distance_to_side(p, static_cast<Side>(s)) < 0.5 * spec.size) return true;
     return false;
   };
-  sample.points.erase(std::remove_if(sample.points.begin() + n_fixed, sample.points.end(), near_side),
-                      sample.points.end());
+  sample.points.erase(
+      std::remove_if(sample.points.begin() + n_fixed, sample.points.end(), near_side),
+      sample.points.end());
   out.report.seconds["seeding"] = clock.seconds();
   out.report.seeds = static_cast<int>(sample.points.size());
   clock.restart();
@@ -113,8 +119,12 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
   GeneratedMesh out;
   Stopwatch clock;
   switch (spec.family) {
-    case MeshFamily::rcp: out = generate_rcp(spec); break;
-    case MeshFamily::tri: out = generate_tri(spec); break;
+    case MeshFamily::rcp:
+      out = generate_rcp(spec);
+      break;
+    case MeshFamily::tri:
+      out = generate_tri(spec);
+      break;
     case MeshFamily::hex:
       out.mesh = hex_mesh(spec.domain, spec.size);
       out.report.seconds["hexagons"] = clock.seconds();

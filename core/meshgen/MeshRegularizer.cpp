@@ -152,7 +152,8 @@ bool CollapsibleMesh::loop_acceptable(const std::vector<int>& loop, int a, const
   // Voronoi cells are convex; a collapse may not make a reflex corner (a vertex dragged onto a
   // side vertex would otherwise leave angles above 220 degrees next to the sides).
   for (std::size_t k = 0; k < pts.size(); ++k)
-    if (polygon::orient2(pts[(k + pts.size() - 1) % pts.size()], pts[k], pts[(k + 1) % pts.size()]) <
+    if (polygon::orient2(pts[(k + pts.size() - 1) % pts.size()], pts[k],
+                         pts[(k + 1) % pts.size()]) <
         -kConvexTolerance * (pts[(k + 1) % pts.size()] - pts[k]).squaredNorm())
       return false;
   return polygon::star_shaped_about(pts, polygon::centroid(pts, area), min_fan_area_);
@@ -291,7 +292,8 @@ PolygonMesh merge_small_cells(const PolygonMesh& mesh, int min_sides, int max_si
       for (int v : loop) pts.push_back(mesh.vertex(v));
       if (!acceptable_cell(pts)) continue;
       const double angle = polygon::max_interior_angle(pts);
-      if (best >= 0 && std::make_pair(angle, loop.size()) >= std::make_pair(best_angle, best_loop.size()))
+      if (best >= 0 &&
+          std::make_pair(angle, loop.size()) >= std::make_pair(best_angle, best_loop.size()))
         continue;
       best = nb;
       best_angle = angle;

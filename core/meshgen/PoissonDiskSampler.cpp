@@ -33,9 +33,7 @@ class SampleGrid {
   double side() const { return side_; }
   bool occupied(int cell) const { return !std::isnan(cells_[cell].x()); }
   const Point& sample(int cell) const { return cells_[cell]; }
-  Point cell_origin(int cell) const {
-    return domain_.lo() + side_ * Point(cell % nx_, cell / nx_);
-  }
+  Point cell_origin(int cell) const { return domain_.lo() + side_ * Point(cell % nx_, cell / nx_); }
   int cell_of(const Point& p) const {
     const int i = std::clamp(static_cast<int>((p.x() - domain_.x0()) / side_), 0, nx_ - 1);
     const int j = std::clamp(static_cast<int>((p.y() - domain_.y0()) / side_), 0, ny_ - 1);
@@ -134,19 +132,23 @@ std::vector<char> resolve_arrivals(const std::vector<Dart>& darts, const SampleG
       if (status[i] != undecided) continue;
       bool blocked = false, beaten = false;
       grid.for_each_neighbor_cell(darts[i].cell, [&](int cell) {
-        for (int j = first_dart[cell]; j >= 0 && j < static_cast<int>(darts.size()) &&
-                                       darts[j].cell == cell && !beaten;
+        for (int j = first_dart[cell];
+             j >= 0 && j < static_cast<int>(darts.size()) && darts[j].cell == cell && !beaten;
              ++j) {
           if (static_cast<std::size_t>(j) == i || status[j] == rejected) continue;
           if (!arrives_before(darts[j], j, darts[i], i)) continue;
           if ((darts[j].p - darts[i].p).squaredNorm() >= d2) continue;
-          if (status[j] == accepted) beaten = true;
-          else blocked = true;
+          if (status[j] == accepted)
+            beaten = true;
+          else
+            blocked = true;
         }
         return beaten;
       });
-      if (beaten) status[i] = rejected, --open;
-      else if (!blocked) status[i] = accepted, --open;
+      if (beaten)
+        status[i] = rejected, --open;
+      else if (!blocked)
+        status[i] = accepted, --open;
     }
   }
   for (const Dart& dart : darts) first_dart[dart.cell] = -1;
@@ -184,8 +186,7 @@ void check_options(const Rectangle& domain, double d) {
     throw InputError("minimum distance d = " + fmt(d) + ": expected a finite d > 0");
   if (d > domain.scale())
     throw InputError("minimum distance d = " + fmt(d) +
-                     ": expected d no larger than the domain's longer side " +
-                     fmt(domain.scale()));
+                     ": expected d no larger than the domain's longer side " + fmt(domain.scale()));
   const double cells = domain.area() / (d * d);
   if (cells > 2e8)
     throw InputError("minimum distance d = " + fmt(d) + " gives about " +
@@ -253,7 +254,8 @@ PoissonDiskResult sample_poisson_disk(const Rectangle& domain, const PoissonDisk
 
   // Sampled points in grid (row-major) order: neighbouring seeds get nearby numbers.
   for (int c = 0; c < grid.cell_count(); ++c)
-    if (grid.occupied(c) && (fixed_cell.empty() || !fixed_cell[c])) samples.push_back(grid.sample(c));
+    if (grid.occupied(c) && (fixed_cell.empty() || !fixed_cell[c]))
+      samples.push_back(grid.sample(c));
   return result;
 }
 

@@ -18,11 +18,9 @@ void check_size(const Rectangle& domain, double h, const char* what) {
     throw InputError(std::string(what) + " = " + fmt(h) + ": expected a finite value > 0");
   if (h > domain.scale())
     throw InputError(std::string(what) + " = " + fmt(h) +
-                     ": expected no more than the domain's longer side " +
-                     fmt(domain.scale()));
+                     ": expected no more than the domain's longer side " + fmt(domain.scale()));
   if (domain.area() / (h * h) > 1.5e8)
-    throw InputError(std::string(what) + " = " + fmt(h) +
-                     ": gives more than 1.5e8 cells");
+    throw InputError(std::string(what) + " = " + fmt(h) + ": gives more than 1.5e8 cells");
 }
 
 int hex_rows(const Rectangle& domain, double spacing) {

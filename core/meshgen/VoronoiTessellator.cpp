@@ -28,8 +28,8 @@ constexpr double kOnSide = 1e-14;
 /// Original seeds (info = index) plus their mirror images across nearby sides and corners
 /// (info = -1). A seed lying on a side is its own mirror there and is not mirrored across it.
 std::vector<std::pair<CgalPoint, int>> seeds_with_mirrors(const Rectangle& domain,
-                                                         const std::vector<Point>& seeds,
-                                                         double spacing) {
+                                                          const std::vector<Point>& seeds,
+                                                          double spacing) {
   const double reach = 3.0 * spacing;
   const double on_side = kOnSide * domain.scale();
   std::vector<std::pair<CgalPoint, int>> pts;
@@ -75,7 +75,8 @@ class SideClipper {
       const double da = inward_distance(position(a), side);
       const double db = inward_distance(position(b), side);
       if (da >= -tol_) out.push_back(a);
-      if ((da > tol_ && db < -tol_) || (da < -tol_ && db > tol_)) out.push_back(crossing(a, b, side));
+      if ((da > tol_ && db < -tol_) || (da < -tol_ && db > tol_))
+        out.push_back(crossing(a, b, side));
     }
     loop.swap(out);
   }
@@ -83,10 +84,14 @@ class SideClipper {
  private:
   double inward_distance(const Point& p, Side side) const {
     switch (side) {
-      case Side::left: return p.x() - domain_.x0();
-      case Side::right: return domain_.x1() - p.x();
-      case Side::bottom: return p.y() - domain_.y0();
-      default: return domain_.y1() - p.y();
+      case Side::left:
+        return p.x() - domain_.x0();
+      case Side::right:
+        return domain_.x1() - p.x();
+      case Side::bottom:
+        return p.y() - domain_.y0();
+      default:
+        return domain_.y1() - p.y();
     }
   }
   int crossing(int a, int b, Side side) {
@@ -95,8 +100,10 @@ class SideClipper {
     const Point p = position(std::min(a, b)), q = position(std::max(a, b));
     const double dp = inward_distance(p, side), dq = inward_distance(q, side);
     Point x = p + (dp / (dp - dq)) * (q - p);
-    if (side == Side::left || side == Side::right) x.x() = domain_.side_coordinate(side);
-    else x.y() = domain_.side_coordinate(side);
+    if (side == Side::left || side == Side::right)
+      x.x() = domain_.side_coordinate(side);
+    else
+      x.y() = domain_.side_coordinate(side);
     const int id = static_cast<int>(centres_.size() + crossings_.size());
     crossings_.push_back(x);
     ids_.emplace(key, id);
@@ -121,8 +128,8 @@ PolygonMesh voronoi_mesh(const Rectangle& domain, const std::vector<Point>& seed
   if (seeds.empty()) throw InputError("Voronoi tessellation: no seeds");
   for (const Point& p : seeds)
     if (!domain.contains(p, 0.0))
-      throw InputError("Voronoi tessellation: seed (" + fmt(p.x()) + "," +
-                       fmt(p.y()) + ") lies outside the domain " + domain.to_string());
+      throw InputError("Voronoi tessellation: seed (" + fmt(p.x()) + "," + fmt(p.y()) +
+                       ") lies outside the domain " + domain.to_string());
   auto pts = seeds_with_mirrors(domain, seeds, spacing);
   Delaunay dt;
   dt.insert(pts.begin(), pts.end());  // spatially sorted insertion

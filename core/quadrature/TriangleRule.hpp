@@ -8,9 +8,9 @@
 namespace vorodg {
 
 struct TriangleRule {
-  int degree = 0;                          // polynomials up to this degree are exact
-  std::vector<Eigen::Vector3d> bary;       // barycentric coordinates of the points
-  std::vector<double> weights;             // fractions of the triangle's area, sum 1
+  int degree = 0;                     // polynomials up to this degree are exact
+  std::vector<Eigen::Vector3d> bary;  // barycentric coordinates of the points
+  std::vector<double> weights;        // fractions of the triangle's area, sum 1
   int size() const { return static_cast<int>(weights.size()); }
 };
 

@@ -98,6 +98,8 @@ void LowerBlockAssembler::add(std::span<const int> nodes,
   }
 }
 
-Eigen::SparseMatrix<double> LowerBlockAssembler::release() { return std::move(matrix_); }
+Eigen::SparseMatrix<double> LowerBlockAssembler::release() {
+  return std::move(matrix_);
+}
 
 }  // namespace vorodg

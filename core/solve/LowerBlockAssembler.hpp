@@ -25,8 +25,8 @@ class LowerBlockAssembler {
   /// (x, y) per node of `nodes`). Only columns of nodes in [node_begin, node_end) are written:
   /// threads that own disjoint node ranges can add the same elements concurrently, and each
   /// entry still receives its contributions in element order (results independent of threads).
-  void add(std::span<const int> nodes, const Eigen::Ref<const Eigen::MatrixXd>& Ke,
-           int node_begin, int node_end);
+  void add(std::span<const int> nodes, const Eigen::Ref<const Eigen::MatrixXd>& Ke, int node_begin,
+           int node_end);
   void add(std::span<const int> nodes, const Eigen::Ref<const Eigen::MatrixXd>& Ke) {
     add(nodes, Ke, 0, num_nodes_);
   }

@@ -109,8 +109,8 @@ void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
   cholmod_sparse a = view_of(lower, -1);
   const int b = options.block_size;
   // METIS pays off only on large graphs; small systems (patch tests, coarse levels) use AMD.
-  const bool by_nodes = options.ordering == FillOrdering::node_metis ||
-                        options.ordering == FillOrdering::node_amd;
+  const bool by_nodes =
+      options.ordering == FillOrdering::node_metis || options.ordering == FillOrdering::node_amd;
   const bool use_nodes = by_nodes && b >= 1 && lower.cols() % b == 0 && lower.cols() >= 4000;
   common.postorder = 1;
   if (use_nodes) {
@@ -144,8 +144,7 @@ FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>&
   cholmod_sparse a = view_of(lower, -1);
   cholmod_factorize(&a, impl_->factor, &impl_->common);
   report.seconds_factorize = clock.seconds();
-  if (impl_->common.status == CHOLMOD_NOT_POSDEF ||
-      impl_->factor->minor < impl_->factor->n)
+  if (impl_->common.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n)
     throw NumericalError(
         "the stiffness matrix is not positive definite: the system is singular or indefinite "
         "(rigid-body motions left free, or a material so close to incompressible that the "
@@ -156,9 +155,10 @@ FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>&
   report.rcond = cholmod_rcond(impl_->factor, &impl_->common);
   report.factor_nonzeros = static_cast<long>(impl_->factor->xsize);
   if (!(report.rcond >= options.min_rcond))
-    throw NumericalError("the stiffness matrix is numerically singular (CHOLMOD reciprocal "
-                         "condition estimate " + fmt(report.rcond) + ", below " +
-                         fmt(options.min_rcond) + ")");
+    throw NumericalError(
+        "the stiffness matrix is numerically singular (CHOLMOD reciprocal "
+        "condition estimate " +
+        fmt(report.rcond) + ", below " + fmt(options.min_rcond) + ")");
   return report;
 }
 
@@ -172,9 +172,11 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
   b.xtype = CHOLMOD_REAL;
   b.dtype = CHOLMOD_DOUBLE;
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
-  if (!x) throw NumericalError("CHOLMOD's solve failed (status " +
-                               std::to_string(impl_->common.status) + ")");
-  Eigen::VectorXd result = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), rhs.size());
+  if (!x)
+    throw NumericalError("CHOLMOD's solve failed (status " + std::to_string(impl_->common.status) +
+                         ")");
+  Eigen::VectorXd result =
+      Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), rhs.size());
   cholmod_free_dense(&x, &impl_->common);
   if (!result.allFinite()) throw NumericalError("the sparse solve produced non-finite values");
   return result;

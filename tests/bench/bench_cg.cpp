@@ -49,7 +49,17 @@ void BM_CgPipeline(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_CgPipeline)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kSecond)->UseRealTime();
-BENCHMARK(BM_CgPipeline)->Arg(1000000)->Iterations(1)->Repetitions(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_CgPipeline)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+BENCHMARK(BM_CgPipeline)
+    ->Arg(1000000)
+    ->Iterations(1)
+    ->Repetitions(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 BENCHMARK_MAIN();

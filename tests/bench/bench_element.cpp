@@ -104,8 +104,18 @@ BENCHMARK(BM_ElementTable)->Apply(weight_settings)->Unit(benchmark::kMillisecond
 // The default setting (P2, refinement 0) over the whole range, 1e3 to 1e6 cells.
 BENCHMARK(BM_WeightFunctions)->Args({1000, 0, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ElementTable)->Args({1000, 0, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_WeightFunctions)->Args({1000000, 0, 2})->Iterations(1)->Repetitions(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_ElementTable)->Args({1000000, 0, 2})->Iterations(1)->Repetitions(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_WeightFunctions)
+    ->Args({1000000, 0, 2})
+    ->Iterations(1)
+    ->Repetitions(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ElementTable)
+    ->Args({1000000, 0, 2})
+    ->Iterations(1)
+    ->Repetitions(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_ElementTableThreads)
     ->Args({100000, 1})
     ->Args({100000, 2})

@@ -38,7 +38,9 @@ const Rectangle& bench_domain() {
 
 /// Minimum seed distance that gives about n cells: a saturated packing has N ~ 0.7 area / d^2
 /// (covered fraction N pi d^2 / 4 / area ~ 0.547).
-double spacing_for_cells(double n) { return std::sqrt(0.7 * bench_domain().area() / n); }
+double spacing_for_cells(double n) {
+  return std::sqrt(0.7 * bench_domain().area() / n);
+}
 
 /// Hexagon spacing (width across flats) for about n cells: a hexagon of that width has area
 /// (sqrt(3)/2) s^2.

@@ -20,33 +20,41 @@ using fuzz::require;
 using nlohmann::json;
 
 /// An integer key that was accepted holds the value written in the file (no silent wrap-around).
-void check_integer(const json& object, const char* key, long long stored, const std::string& where) {
+void check_integer(const json& object, const char* key, long long stored,
+                   const std::string& where) {
   if (!object.contains(key)) return;
   require(object.at(key) == json(stored), where + "." + key + " written " + object.at(key).dump() +
                                               ", accepted as " + std::to_string(stored));
 }
 
 void check_scene(const Scene& s, const std::string& text) {
-  require(std::isfinite(s.domain.area()) && s.domain.area() > 0, "scene domain of area " + std::to_string(s.domain.area()));
+  require(std::isfinite(s.domain.area()) && s.domain.area() > 0,
+          "scene domain of area " + std::to_string(s.domain.area()));
   require(!s.problems.empty() && !s.nu.empty(), "scene without problems or nu");
   for (const std::string& p : s.problems)  // docs/scenes.md: the problems make_problem knows
-    require(p == "beam" || p == "patch" || p == "patch-mixed" || p == "patch-traction" || p == "mms",
-            "scene accepted with unknown problem '" + p + "'");
+    require(
+        p == "beam" || p == "patch" || p == "patch-mixed" || p == "patch-traction" || p == "mms",
+        "scene accepted with unknown problem '" + p + "'");
   require(std::isfinite(s.E) && s.E > 0, "scene E " + std::to_string(s.E));
   require(!s.meshes.empty() && !s.formulations.empty(), "scene without meshes or formulations");
   for (const SceneMesh& m : s.meshes) {
     require(!m.sizes.empty(), "mesh " + m.label + " without sizes");
     for (std::size_t i = 0; i < m.sizes.size(); ++i) {
-      require(std::isfinite(m.sizes[i]) && m.sizes[i] > 0, "mesh " + m.label + " size " + std::to_string(m.sizes[i]));
+      require(std::isfinite(m.sizes[i]) && m.sizes[i] > 0,
+              "mesh " + m.label + " size " + std::to_string(m.sizes[i]));
       require(i == 0 || m.sizes[i] < m.sizes[i - 1], "mesh " + m.label + " sizes not decreasing");
     }
-    require(m.realizations >= 1, "mesh " + m.label + " realizations " + std::to_string(m.realizations));
+    require(m.realizations >= 1,
+            "mesh " + m.label + " realizations " + std::to_string(m.realizations));
   }
   for (const SceneFormulation& f : s.formulations) {
     const int rule = f.settings.element.rule_points;
-    require(rule == 1 || rule == 3 || rule == 6, "formulation " + f.label + " rule " + std::to_string(rule));
-    require(f.settings.formulation == "cg" ? f.kp.empty() : !f.kp.empty(), "formulation " + f.label + " kp list");
-    for (double k : f.kp) require(std::isfinite(k) && k > 0, "formulation " + f.label + " kp " + std::to_string(k));
+    require(rule == 1 || rule == 3 || rule == 6,
+            "formulation " + f.label + " rule " + std::to_string(rule));
+    require(f.settings.formulation == "cg" ? f.kp.empty() : !f.kp.empty(),
+            "formulation " + f.label + " kp list");
+    for (double k : f.kp)
+      require(std::isfinite(k) && k > 0, "formulation " + f.label + " kp " + std::to_string(k));
   }
   const json root = json::parse(text);  // parse_scene accepted it, so it is valid JSON
   for (std::size_t i = 0; i < s.meshes.size(); ++i) {
@@ -55,7 +63,8 @@ void check_scene(const Scene& s, const std::string& text) {
     check_integer(m, "realizations", s.meshes[i].realizations, where);
     if (m.contains("seed"))
       require(m.at("seed").get<double>() == static_cast<double>(s.meshes[i].seed),
-              where + ".seed written " + m.at("seed").dump() + ", accepted as " + std::to_string(s.meshes[i].seed));
+              where + ".seed written " + m.at("seed").dump() + ", accepted as " +
+                  std::to_string(s.meshes[i].seed));
   }
   for (std::size_t i = 0; i < s.formulations.size(); ++i) {
     const json& f = root.at("formulations").at(i);

@@ -18,12 +18,15 @@ namespace {
 using namespace vorodg;
 using fuzz::require;
 
-bool finite(const Point& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+bool finite(const Point& p) {
+  return std::isfinite(p.x()) && std::isfinite(p.y());
+}
 
 /// What every stage after validation relies on.
 void check_valid_mesh(const PolygonMesh& mesh) {
   const Rectangle& d = mesh.domain();
-  require(std::isfinite(d.area()) && d.area() > 0, "valid mesh on a domain of area " + std::to_string(d.area()));
+  require(std::isfinite(d.area()) && d.area() > 0,
+          "valid mesh on a domain of area " + std::to_string(d.area()));
   require(mesh.num_cells() > 0, "valid mesh without cells");
   const double h = mesh.h_avg();
   require(std::isfinite(h) && h > 0, "valid mesh with h_avg " + std::to_string(h));
@@ -31,14 +34,18 @@ void check_valid_mesh(const PolygonMesh& mesh) {
     require(finite(mesh.vertex(v)), "valid mesh with a non-finite vertex " + std::to_string(v));
   for (int c = 0; c < mesh.num_cells(); ++c) {
     const double a = mesh.cell_area(c);
-    require(std::isfinite(a) && a > 0, "valid mesh, cell " + std::to_string(c) + " has area " + std::to_string(a));
-    require(finite(mesh.cell_centroid(c)), "valid mesh, cell " + std::to_string(c) + " has a non-finite centroid");
+    require(std::isfinite(a) && a > 0,
+            "valid mesh, cell " + std::to_string(c) + " has area " + std::to_string(a));
+    require(finite(mesh.cell_centroid(c)),
+            "valid mesh, cell " + std::to_string(c) + " has a non-finite centroid");
   }
   const double total = mesh.total_area();
   require(std::isfinite(total) && std::abs(total - d.area()) <= 1e-6 * d.area(),
-          "valid mesh covers area " + std::to_string(total) + " of a domain of area " + std::to_string(d.area()));
+          "valid mesh covers area " + std::to_string(total) + " of a domain of area " +
+              std::to_string(d.area()));
   for (const MeshEdge& e : mesh.edges()) {
-    require(e.cell0 >= 0 && e.cell0 < mesh.num_cells() && e.cell1 < mesh.num_cells(), "valid mesh, edge cell out of range");
+    require(e.cell0 >= 0 && e.cell0 < mesh.num_cells() && e.cell1 < mesh.num_cells(),
+            "valid mesh, edge cell out of range");
     require(!e.on_boundary() || e.side != Side::none, "valid mesh with a boundary edge on no side");
   }
   // What vorodg writes it reads back unchanged, in both encodings.

@@ -83,7 +83,9 @@ inline std::string test_name(std::string n) {
 }
 
 /// Length scale of a cell for relative tolerances.
-inline double cell_scale(const PolygonMesh& m, int c) { return std::sqrt(m.cell_area(c)); }
+inline double cell_scale(const PolygonMesh& m, int c) {
+  return std::sqrt(m.cell_area(c));
+}
 
 /// Largest interior angle of cell c in degrees.
 inline double largest_angle_degrees(const PolygonMesh& m, int c) {

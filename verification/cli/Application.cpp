@@ -22,8 +22,9 @@ int print_info() {
 }  // namespace
 
 int run_application(int argc, char** argv) {
-  CLI::App app{"vorodg: RK polygon elements (CG and DG) for 2D elasticity on random Voronoi "
-               "meshes, with a verification harness"};
+  CLI::App app{
+      "vorodg: RK polygon elements (CG and DG) for 2D elasticity on random Voronoi "
+      "meshes, with a verification harness"};
   app.require_subcommand(1);
   app.set_version_flag("--version", VORODG_VERSION);
   MeshCommandOptions mesh_options;

@@ -96,7 +96,8 @@ MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given) {
     return spec;
   }
   spec.family = parse_family(o.family);
-  if (spec.family == MeshFamily::file) throw InputError("--family file: give the mesh as --mesh FILE");
+  if (spec.family == MeshFamily::file)
+    throw InputError("--family file: give the mesh as --mesh FILE");
   spec.size = family_size(spec.family, o);
   spec.seed = o.seed;
   spec.perturbation = o.r;
@@ -130,9 +131,10 @@ void check_output_folder(const std::string& path, const char* option) {
   const auto folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec))
-    throw InputError(std::string(option) + " '" + path + "': expected an existing folder, but '" +
-                     folder.string() + "'" +
-                     (std::filesystem::exists(folder, ec) ? " is not a folder" : " does not exist"));
+    throw InputError(
+        std::string(option) + " '" + path + "': expected an existing folder, but '" +
+        folder.string() + "'" +
+        (std::filesystem::exists(folder, ec) ? " is not a folder" : " does not exist"));
 }
 
 }  // namespace vorodg

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
-#include <sstream>
 
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshStatistics.hpp"
@@ -88,8 +87,9 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
   if (spec.family == MeshFamily::rcp) {
     json["regularization"] = spec.regularization;
     json["covered_fraction"] = *r.covered_fraction;
-    json["covered_fraction_interior"] =
-        r.covered_fraction_interior ? nlohmann::json(*r.covered_fraction_interior) : nlohmann::json();
+    json["covered_fraction_interior"] = r.covered_fraction_interior
+                                            ? nlohmann::json(*r.covered_fraction_interior)
+                                            : nlohmann::json();
     json["side_counts_before"] = histogram_json(r.sides_before);
     json["collapsed_edges"] = r.collapsed_edges;
     json["refused_collapses"] = r.refused_collapses;
@@ -99,10 +99,10 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
   json["seconds"]["total"] = total.seconds();
   if (!o.stats.empty()) write_json(o.stats, json);
 
-  std::cout << family_name(spec.family) << " mesh: " << stats.cells << " cells, "
-            << stats.vertices << " vertices, h_avg " << stats.h_avg << ", min edge/h_avg "
-            << stats.min_edge_over_h << ", min angle " << stats.min_interior_angle_deg
-            << " deg, area error " << stats.area_error;
+  std::cout << family_name(spec.family) << " mesh: " << stats.cells << " cells, " << stats.vertices
+            << " vertices, h_avg " << stats.h_avg << ", min edge/h_avg " << stats.min_edge_over_h
+            << ", min angle " << stats.min_interior_angle_deg << " deg, area error "
+            << stats.area_error;
   if (r.covered_fraction_interior)
     std::cout << ", covered fraction " << *r.covered_fraction_interior << " (interior), "
               << *r.covered_fraction << " (whole)";

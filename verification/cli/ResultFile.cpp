@@ -17,8 +17,12 @@ std::vector<VtuField> cell_fields(const PolygonMesh& mesh, const SolveResult& r,
     for (int e : mesh.cell_edges(c)) largest = std::max(largest, r.edge_gaps[e]);
     gap.values.push_back(largest);
   }
-  return {stress, vm, {"l2_error_density", 1, r.cell_l2_density},
-          {"energy_error_density", 1, r.cell_energy_density}, id, gap};
+  return {stress,
+          vm,
+          {"l2_error_density", 1, r.cell_l2_density},
+          {"energy_error_density", 1, r.cell_energy_density},
+          id,
+          gap};
 }
 
 /// Displacement, exact displacement and error at the given points (3 components, z = 0).
@@ -39,8 +43,10 @@ std::vector<VtuField> point_fields(const std::vector<Point>& points, const Eigen
 void write_result(const std::string& path, const PolygonMesh& mesh, const SolveResult& r,
                   const ExactSolution& exact, bool discontinuous, VtuEncoding encoding) {
   if (!discontinuous) {
-    write_vtu(path, mesh, {point_fields(mesh.vertices(), r.vertex_displacement, exact),
-                           cell_fields(mesh, r, exact)}, encoding);
+    write_vtu(
+        path, mesh,
+        {point_fields(mesh.vertices(), r.vertex_displacement, exact), cell_fields(mesh, r, exact)},
+        encoding);
     return;
   }
   std::vector<Point> points;
@@ -55,7 +61,8 @@ void write_result(const std::string& path, const PolygonMesh& mesh, const SolveR
       if (k + 1 == mesh.cell_size(c)) offsets.push_back(static_cast<int>(cells.size()));
     }
   const PolygonMesh exploded(mesh.domain(), points, offsets, cells);
-  write_vtu(path, exploded, {point_fields(points, uh, exact), cell_fields(mesh, r, exact)}, encoding);
+  write_vtu(path, exploded, {point_fields(points, uh, exact), cell_fields(mesh, r, exact)},
+            encoding);
 }
 
 }  // namespace vorodg

@@ -19,14 +19,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scenes_dir() { return fs::path(VORODG_DATA_DIR) / "scenes"; }
+fs::path scenes_dir() {
+  return fs::path(VORODG_DATA_DIR) / "scenes";
+}
 
 /// A scene given by name ("demo") is looked up among the shipped ones.
 fs::path resolve_scene(const std::string& name) {
   if (fs::exists(name)) return name;
   const fs::path shipped = scenes_dir() / (name + ".json");
   if (fs::exists(shipped)) return shipped;
-  throw InputError("scene '" + name + "': no such file, and no shipped scene of that name (see vorodg run --list)");
+  throw InputError("scene '" + name +
+                   "': no such file, and no shipped scene of that name (see vorodg run --list)");
 }
 
 int list_scenes() {
@@ -36,7 +39,8 @@ int list_scenes() {
   std::sort(files.begin(), files.end());
   for (const fs::path& f : files) {
     const Scene s = read_scene(f);
-    std::cout << std::left << std::setw(28) << f.stem().string() << s.study << ": " << s.description << "\n";
+    std::cout << std::left << std::setw(28) << f.stem().string() << s.study << ": " << s.description
+              << "\n";
   }
   return 0;
 }
@@ -50,13 +54,16 @@ void draw_plots(const fs::path& out) {
     std::cerr << "note: " << script << " not found; no plots drawn\n";
     return;
   }
-  const std::string cmd = std::string(python) + " '" + script.string() + "' '" + out.string() + "' >/dev/null";
-  if (std::system(cmd.c_str()) != 0) std::cerr << "note: the plots could not be drawn (" << cmd << ")\n";
+  const std::string cmd =
+      std::string(python) + " '" + script.string() + "' '" + out.string() + "' >/dev/null";
+  if (std::system(cmd.c_str()) != 0)
+    std::cerr << "note: the plots could not be drawn (" << cmd << ")\n";
 }
 
 /// An extremes study: each sweep runs (and reports) in its own subfolder, then every run gets
 /// its verdict. Broken runs are findings of the study, not a failure of the program: exit 0.
-int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots, const Stopwatch& clock) {
+int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots,
+                 const Stopwatch& clock) {
   std::vector<std::vector<RunRecord>> results;
   std::size_t runs = 0;
   for (const auto& sweep : scene.sweeps) {
@@ -65,15 +72,17 @@ int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots,
     std::cout << "\n== sweep " << sweep->name << " (" << sweep->axis << ")\n";
     results.push_back(run_study(*sweep, sub));
     // A sweep's own report has no pictures: the extremes plot stands for them all.
-    finish_report_markdown(write_study_report(*sweep, results.back(), sub.out).markdown, sub.out, {});
+    finish_report_markdown(write_study_report(*sweep, results.back(), sub.out).markdown, sub.out,
+                           {});
     runs += results.back().size();
   }
   std::string markdown;
   const int broken = write_extremes_report(scene, results, options.out, markdown);
   if (!no_plots) draw_plots(options.out);
   finish_report_markdown(markdown, options.out, study_pictures());
-  std::cout << "\n" << scene.name << ": " << runs << " runs (" << broken << " broken), "
-            << clock.seconds() << " s; report in " << (options.out / "report.md").string() << "\n";
+  std::cout << "\n"
+            << scene.name << ": " << runs << " runs (" << broken << " broken), " << clock.seconds()
+            << " s; report in " << (options.out / "report.md").string() << "\n";
   return 0;
 }
 
@@ -92,7 +101,8 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& o) {
 
 int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   if (o.list) return list_scenes();
-  if (o.scene.empty()) throw InputError("run: expected a scene (a file or a shipped name; see --list)");
+  if (o.scene.empty())
+    throw InputError("run: expected a scene (a file or a shipped name; see --list)");
   if (o.out.empty()) throw InputError("run: expected an output folder (-o DIR)");
   if (o.threads < 1) throw InputError("--threads " + std::to_string(o.threads) + ": expected >= 1");
   echo_options("vorodg run", command);
@@ -108,10 +118,12 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   if (!o.no_plots) draw_plots(o.out);
   finish_report_markdown(report.markdown, o.out, study_pictures());
   const int unexpected = report.unexpected;
-  std::cout << "\n" << scene.name << ": " << results.size() << " runs, " << clock.seconds()
+  std::cout << "\n"
+            << scene.name << ": " << results.size() << " runs, " << clock.seconds()
             << " s; report in " << (fs::path(o.out) / "report.md").string() << "\n";
   if (unexpected > 0) {
-    std::cerr << "vorodg: " << unexpected << " patch-suite outcomes differ from the expected ones\n";
+    std::cerr << "vorodg: " << unexpected
+              << " patch-suite outcomes differ from the expected ones\n";
     return 1;
   }
   return 0;

@@ -12,18 +12,19 @@ void add_setting_options(CLI::App& cmd, SettingOptions& o) {
     const SettingSpec* p = &spec;  // the schema is static: its address outlives the command
     switch (spec.kind) {
       case SettingKind::flag:
-        cmd.add_flag_callback(spec.flag, [p, &o] { p->set(o.settings, p->flag_negates ? 0.0 : 1.0); },
-                              spec.doc);
+        cmd.add_flag_callback(
+            spec.flag, [p, &o] { p->set(o.settings, p->flag_negates ? 0.0 : 1.0); }, spec.doc);
         break;
       case SettingKind::number:
-        cmd.add_option_function<double>(spec.flag, [p, &o](const double& v) { p->set(o.settings, v); },
-                                        spec.doc)
+        cmd.add_option_function<double>(
+               spec.flag, [p, &o](const double& v) { p->set(o.settings, v); }, spec.doc)
             ->default_str(default_text(spec))
             ->check(finite_number());
         break;
       case SettingKind::integer:
-        cmd.add_option_function<int>(spec.flag, [p, &o](const int& v) { p->set(o.settings, v); },
-                                     spec.doc + " (" + requirement_text(spec) + ")")
+        cmd.add_option_function<int>(
+               spec.flag, [p, &o](const int& v) { p->set(o.settings, v); },
+               spec.doc + " (" + requirement_text(spec) + ")")
             ->default_str(default_text(spec));
         break;
       case SettingKind::choice:

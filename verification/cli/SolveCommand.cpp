@@ -41,14 +41,16 @@ void print_summary(const SolveSettings& settings, const MeshSpec& spec, const Ru
 }  // namespace
 
 CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
-  CLI::App* cmd = app.add_subcommand("solve", "Solve one problem on one mesh and measure its error");
+  CLI::App* cmd =
+      app.add_subcommand("solve", "Solve one problem on one mesh and measure its error");
   add_mesh_source_options(*cmd, o.mesh);
   o.mesh.domain = "0,-0.5,4,0.5";  // the beam's default: [0, L] x [-D/2, D/2], L/D = 4
   cmd->get_option("--domain")->default_str(o.mesh.domain);
   cmd->add_option("--mesh", o.mesh.file, "Read the mesh from this .vtu instead of generating one");
   add_setting_options(*cmd, o.settings);
   // Both cores by default; results are bitwise the same for any thread count.
-  o.settings.settings.element.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  o.settings.settings.element.threads =
+      static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   cmd->get_option("--threads")->default_str(std::to_string(o.settings.settings.element.threads));
   add_vtu_output_options(*cmd, o.output, "Result file");
   cmd->add_option("--metrics", o.metrics, "Metrics file to write (.json)");
@@ -67,9 +69,10 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   const PolygonMesh& mesh = generated.mesh;
   const auto validation = validate_mesh(mesh);
   if (!validation.ok())
-    throw InputError("mesh " + (spec.path.empty() ? std::string(family_name(spec.family)) : spec.path) +
-                     " is invalid: " + validation.defects.front().what + " (" +
-                     std::to_string(validation.defect_count) + " defects; see vorodg mesh --check)");
+    throw InputError(
+        "mesh " + (spec.path.empty() ? std::string(family_name(spec.family)) : spec.path) +
+        " is invalid: " + validation.defects.front().what + " (" +
+        std::to_string(validation.defect_count) + " defects; see vorodg mesh --check)");
   const double mesh_seconds = clock.seconds();
 
   SolveResult r = run_solve(mesh, settings);
@@ -86,8 +89,7 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   json["blas"] = blas_description();
   if (!o.metrics.empty()) write_json(o.metrics, json);
   if (!o.output.path.empty())
-    write_result(o.output.path, mesh, r, *exact, settings.formulation != "cg",
-                 o.output.encoding());
+    write_result(o.output.path, mesh, r, *exact, settings.formulation != "cg", o.output.encoding());
   print_summary(settings, spec, metrics);
   return 0;
 }

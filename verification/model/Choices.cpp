@@ -166,7 +166,11 @@ FillOrdering parse_ordering(const std::string& name) {
 std::string ordering_name(FillOrdering ordering) {
   return enum_name(ordering_choices(), kOrderings, ordering);
 }
-PlaneModel parse_plane(const std::string& name) { return parse_enum(plane_choices(), kPlanes, name); }
-std::string plane_name(PlaneModel plane) { return enum_name(plane_choices(), kPlanes, plane); }
+PlaneModel parse_plane(const std::string& name) {
+  return parse_enum(plane_choices(), kPlanes, name);
+}
+std::string plane_name(PlaneModel plane) {
+  return enum_name(plane_choices(), kPlanes, plane);
+}
 
 }  // namespace vorodg

@@ -16,7 +16,6 @@ double number(const json& value, const char* key) {
   return v.is_number() ? v.get<double>() : std::nan("");
 }
 
-
 }  // namespace
 
 double RunMetrics::total_seconds() const {
@@ -26,11 +25,19 @@ double RunMetrics::total_seconds() const {
 }
 
 RunMetrics run_metrics(const PolygonMesh& mesh, const SolveResult& r) {
-  return {.cells = mesh.num_cells(), .vertices = mesh.num_vertices(), .dofs = r.dofs,
-          .free_dofs = r.free_dofs, .h_avg = mesh.h_avg(), .l2_error = r.l2_error,
-          .energy_error = r.energy_error, .rcond = r.rcond, .factor_nonzeros = r.factor_nonzeros,
-          .max_divergence_defect = r.max_divergence_defect, .min_moment_rcond = r.min_moment_rcond,
-          .seconds = r.seconds, .dg = r.dg,
+  return {.cells = mesh.num_cells(),
+          .vertices = mesh.num_vertices(),
+          .dofs = r.dofs,
+          .free_dofs = r.free_dofs,
+          .h_avg = mesh.h_avg(),
+          .l2_error = r.l2_error,
+          .energy_error = r.energy_error,
+          .rcond = r.rcond,
+          .factor_nonzeros = r.factor_nonzeros,
+          .max_divergence_defect = r.max_divergence_defect,
+          .min_moment_rcond = r.min_moment_rcond,
+          .seconds = r.seconds,
+          .dg = r.dg,
           .peak_memory_mb = peak_memory_mb()};  // of the whole process so far
 }
 
@@ -114,8 +121,10 @@ json to_json(const RunRecord& record) {
 RunRecord record_from_json(const StudyRun& run, const json& line) {
   RunRecord record{run, std::nullopt, ""};
   if (line.at("id").get<std::string>() != run.id) throw json::other_error::create(501, "id", &line);
-  if (line.at("status").get<std::string>() == "ok") record.metrics = metrics_from_json(line);
-  else record.error = line.at("error").get<std::string>();
+  if (line.at("status").get<std::string>() == "ok")
+    record.metrics = metrics_from_json(line);
+  else
+    record.error = line.at("error").get<std::string>();
   return record;
 }
 

@@ -12,9 +12,22 @@ namespace {
 
 using S = SolveSettings;
 
+SettingSpec base(std::string key, std::string flag, std::string symbol, std::string doc,
+                 SettingKind kind, SettingScope scope, SettingRange range) {
+  SettingSpec spec;
+  spec.key = std::move(key);
+  spec.flag = std::move(flag);
+  spec.symbol = std::move(symbol);
+  spec.doc = std::move(doc);
+  spec.kind = kind;
+  spec.scope = scope;
+  spec.range = std::move(range);
+  return spec;
+}
+
 SettingSpec number(std::string key, std::string flag, std::string symbol, std::string doc,
                    SettingScope scope, SettingRange range, double& (*field)(S&)) {
-  SettingSpec spec{key, flag, symbol, doc, SettingKind::number, scope, range};
+  SettingSpec spec = base(key, flag, symbol, doc, SettingKind::number, scope, range);
   spec.get = [field](const S& s) { return field(const_cast<S&>(s)); };
   spec.set = [field](S& s, double v) { field(s) = v; };
   return spec;
@@ -22,7 +35,7 @@ SettingSpec number(std::string key, std::string flag, std::string symbol, std::s
 
 SettingSpec integer(std::string key, std::string flag, std::string symbol, std::string doc,
                     SettingScope scope, SettingRange range, int& (*field)(S&)) {
-  SettingSpec spec{key, flag, symbol, doc, SettingKind::integer, scope, range};
+  SettingSpec spec = base(key, flag, symbol, doc, SettingKind::integer, scope, range);
   spec.get = [field](const S& s) { return field(const_cast<S&>(s)); };
   spec.set = [field](S& s, double v) { field(s) = static_cast<int>(v); };
   return spec;
@@ -30,7 +43,7 @@ SettingSpec integer(std::string key, std::string flag, std::string symbol, std::
 
 SettingSpec flag(std::string key, std::string flag, std::string doc, SettingScope scope,
                  bool& (*field)(S&), bool negates = false) {
-  SettingSpec spec{key, flag, key, doc, SettingKind::flag, scope, {}};
+  SettingSpec spec = base(key, flag, key, doc, SettingKind::flag, scope, SettingRange{});
   spec.flag_negates = negates;
   spec.get = [field](const S& s) { return field(const_cast<S&>(s)) ? 1.0 : 0.0; };
   spec.set = [field](S& s, double v) { field(s) = v != 0.0; };
@@ -40,30 +53,39 @@ SettingSpec flag(std::string key, std::string flag, std::string doc, SettingScop
 SettingSpec choice(std::string key, std::string flag, std::string doc, SettingScope scope,
                    const Choices& choices, std::function<std::string(const S&)> get,
                    std::function<void(S&, const std::string&)> set) {
-  SettingSpec spec{key, flag, key, doc, SettingKind::choice, scope, {}};
+  SettingSpec spec = base(key, flag, key, doc, SettingKind::choice, scope, SettingRange{});
   spec.choices = &choices;
   spec.get_text = std::move(get);
   spec.set_text = std::move(set);
   return spec;
 }
 
-SettingRange above(double lower) { return {lower, std::nullopt, true, true, {}}; }
-SettingRange at_least(double lower) { return {lower, std::nullopt, false, true, {}}; }
-SettingRange one_of(std::vector<int> allowed) { return {std::nullopt, std::nullopt, true, true, allowed}; }
+SettingRange above(double lower) {
+  return {lower, std::nullopt, true, true, {}};
+}
+SettingRange at_least(double lower) {
+  return {lower, std::nullopt, false, true, {}};
+}
+SettingRange one_of(std::vector<int> allowed) {
+  return {std::nullopt, std::nullopt, true, true, allowed};
+}
 
 std::vector<SettingSpec> make_specs() {
   using Scope = SettingScope;
   const std::vector<int> rules(kFanRulePoints.begin(), kFanRulePoints.end());
   const std::vector<int> degrees(kWeightDegrees.begin(), kWeightDegrees.end());
   return {
-      choice("problem", "--problem", "the boundary value problem", Scope::top, problem_choices(),
-             [](const S& s) { return s.problem; }, [](S& s, const std::string& v) { s.problem = v; }),
-      choice("name", "--formulation", "the formulation", Scope::formulation, formulation_choices(),
-             [](const S& s) { return s.formulation; },
-             [](S& s, const std::string& v) { s.formulation = v; }),
-      choice("plane", "--plane", "plane stress or plane strain", Scope::material, plane_choices(),
-             [](const S& s) { return plane_name(s.plane); },
-             [](S& s, const std::string& v) { s.plane = parse_plane(v); }),
+      choice(
+          "problem", "--problem", "the boundary value problem", Scope::top, problem_choices(),
+          [](const S& s) { return s.problem; }, [](S& s, const std::string& v) { s.problem = v; }),
+      choice(
+          "name", "--formulation", "the formulation", Scope::formulation, formulation_choices(),
+          [](const S& s) { return s.formulation; },
+          [](S& s, const std::string& v) { s.formulation = v; }),
+      choice(
+          "plane", "--plane", "plane stress or plane strain", Scope::material, plane_choices(),
+          [](const S& s) { return plane_name(s.plane); },
+          [](S& s, const std::string& v) { s.plane = parse_plane(v); }),
       number("E", "--E", "E", "Young's modulus", Scope::material, above(0),
              [](S& s) -> double& { return s.E; }),
       number("nu", "--nu", "nu", "Poisson's ratio", Scope::material, {-1.0, 0.5, true, true, {}},
@@ -72,8 +94,9 @@ std::vector<SettingSpec> make_specs() {
              [](S& s) -> double& { return s.load; }),
       flag("mean_dilation", "--mean-dilation", "mean-dilation (B-bar) strain operator",
            Scope::formulation, [](S& s) -> bool& { return s.mean_dilation; }),
-      flag("correction", "--no-correction", "divergence-consistency correction (the flag skips it)",
-           Scope::formulation, [](S& s) -> bool& { return s.element.divergence_correction; }, true),
+      flag(
+          "correction", "--no-correction", "divergence-consistency correction (the flag skips it)",
+          Scope::formulation, [](S& s) -> bool& { return s.element.divergence_correction; }, true),
       integer("rule", "--rule", "rule", "quadrature points per fan triangle", Scope::formulation,
               one_of(rules), [](S& s) -> int& { return s.element.rule_points; }),
       integer("refinement", "--refinement", "refinement",
@@ -103,14 +126,17 @@ std::vector<SettingSpec> make_specs() {
            [](S& s) -> bool& { return s.energy_error; }),
       integer("threads", "--threads", "threads", "threads for setup, assembly and errors",
               Scope::command_line, at_least(1), [](S& s) -> int& { return s.element.threads; }),
-      choice("ordering", "--ordering", "fill-reducing ordering of the sparse factor",
-             Scope::command_line, ordering_choices(),
-             [](const S& s) { return ordering_name(s.ordering); },
-             [](S& s, const std::string& v) { s.ordering = parse_ordering(v); }),
+      choice(
+          "ordering", "--ordering", "fill-reducing ordering of the sparse factor",
+          Scope::command_line, ordering_choices(),
+          [](const S& s) { return ordering_name(s.ordering); },
+          [](S& s, const std::string& v) { s.ordering = parse_ordering(v); }),
   };
 }
 
-std::string bound_text(double x) { return exact_text(x); }
+std::string bound_text(double x) {
+  return exact_text(x);
+}
 
 }  // namespace
 
@@ -133,13 +159,18 @@ std::string exact_text(double x) {
 
 std::string value_text(const SettingSpec& spec, const SolveSettings& settings) {
   switch (spec.kind) {
-    case SettingKind::choice: return spec.get_text(settings);
-    case SettingKind::flag: return spec.get(settings) != 0.0 ? "true" : "false";
-    default: return exact_text(spec.get(settings));
+    case SettingKind::choice:
+      return spec.get_text(settings);
+    case SettingKind::flag:
+      return spec.get(settings) != 0.0 ? "true" : "false";
+    default:
+      return exact_text(spec.get(settings));
   }
 }
 
-std::string default_text(const SettingSpec& spec) { return value_text(spec, SolveSettings{}); }
+std::string default_text(const SettingSpec& spec) {
+  return value_text(spec, SolveSettings{});
+}
 
 std::string requirement_text(const SettingSpec& spec) {
   if (spec.kind == SettingKind::choice) return choice_list(*spec.choices);
@@ -148,12 +179,16 @@ std::string requirement_text(const SettingSpec& spec) {
   if (!r.allowed.empty()) {
     std::string out;
     for (std::size_t i = 0; i < r.allowed.size(); ++i)
-      out += (i == 0 ? "" : i + 1 == r.allowed.size() ? " or " : ", ") + std::to_string(r.allowed[i]);
+      out += (i == 0                      ? ""
+              : i + 1 == r.allowed.size() ? " or "
+                                          : ", ") +
+             std::to_string(r.allowed[i]);
     return out;
   }
   const std::string lo = r.lower ? bound_text(*r.lower) + (r.lower_open ? " < " : " <= ") : "";
   const std::string hi = r.upper ? (r.upper_open ? " < " : " <= ") + bound_text(*r.upper) : "";
-  if (r.lower && !r.upper) return spec.symbol + (r.lower_open ? " > " : " >= ") + bound_text(*r.lower);
+  if (r.lower && !r.upper)
+    return spec.symbol + (r.lower_open ? " > " : " >= ") + bound_text(*r.lower);
   if (!r.lower && !r.upper) return "a finite " + spec.symbol;
   return lo + spec.symbol + hi;
 }
@@ -178,7 +213,8 @@ std::optional<std::string> check_text(const SettingSpec& spec, const std::string
 
 std::optional<SettingError> check_settings(const SolveSettings& settings) {
   for (const SettingSpec& spec : setting_specs()) {
-    const auto message = spec.kind == SettingKind::choice ? check_text(spec, spec.get_text(settings))
+    const auto message = spec.kind == SettingKind::choice
+                             ? check_text(spec, spec.get_text(settings))
                          : spec.kind == SettingKind::flag ? std::nullopt
                                                           : check_value(spec, spec.get(settings));
     if (message) return SettingError{&spec, *message};

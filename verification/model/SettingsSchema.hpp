@@ -53,7 +53,8 @@ std::string exact_text(double x);
 std::string value_text(const SettingSpec& spec, const SolveSettings& settings);
 /// The default, as text.
 std::string default_text(const SettingSpec& spec);
-/// What the range requires, for messages and docs: "-1 < nu < 0.5", "1, 3 or 6", "stress or strain".
+/// What the range requires, for messages and docs: "-1 < nu < 0.5", "1, 3 or 6", "stress or
+/// strain".
 std::string requirement_text(const SettingSpec& spec);
 
 /// A value outside its range: "0.5: expected -1 < nu < 0.5"; none if it is valid.

@@ -69,8 +69,10 @@ std::string ConvergenceTable::format(const Cell& cell, const Style& style) {
   if (!n) return "-";
   std::ostringstream os;
   auto put = [&](double x, int precision) {
-    if (style.scientific) os << std::scientific << std::setprecision(precision) << x;
-    else os << std::defaultfloat << std::setprecision(precision) << x;
+    if (style.scientific)
+      os << std::scientific << std::setprecision(precision) << x;
+    else
+      os << std::defaultfloat << std::setprecision(precision) << x;
   };
   put(n->value, style.precision);
   if (n->spread) os << " ± ", put(*n->spread, 1);
@@ -135,8 +137,10 @@ void ConvergenceTable::write_csv(std::ostream& out) const {
       const Cell& cell = columns_[c].cells[r];
       out << (c ? "," : "");
       const Number* n = std::get_if<Number>(&cell);
-      if (n) out << std::setprecision(17) << n->value;
-      else if (const std::string* t = std::get_if<std::string>(&cell)) out << quoted(*t);
+      if (n)
+        out << std::setprecision(17) << n->value;
+      else if (const std::string* t = std::get_if<std::string>(&cell))
+        out << quoted(*t);
       if (has_spread[c]) {
         out << ",";
         if (n && n->spread) out << std::setprecision(17) << *n->spread;

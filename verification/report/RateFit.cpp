@@ -18,7 +18,8 @@ double pair_rate(double h0, double e0, double h1, double e1) {
 
 RateFit fit_rate(const std::vector<double>& h, const std::vector<double>& e) {
   const std::size_t n = h.size();
-  if (n < 2 || e.size() != n) throw std::invalid_argument("fit_rate: expected two or more (h, e) pairs");
+  if (n < 2 || e.size() != n)
+    throw std::invalid_argument("fit_rate: expected two or more (h, e) pairs");
   // Means, then centred sums: the order of these operations fixes the published digits.
   double mx = 0, my = 0;
   for (std::size_t i = 0; i < n; ++i) mx += std::log(h[i]) / n, my += std::log(e[i]) / n;

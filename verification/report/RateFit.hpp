@@ -8,8 +8,8 @@
 namespace vorodg {
 
 struct RateFit {
-  double rate = 0.0;       // slope of log(e) against log(h)
-  double intercept = 0.0;  // the fitted log(e) at log(h) = 0: e ~ exp(intercept) h^rate
+  double rate = 0.0;           // slope of log(e) against log(h)
+  double intercept = 0.0;      // the fitted log(e) at log(h) = 0: e ~ exp(intercept) h^rate
   std::optional<double> ci95;  // half-width of the 95% interval of the rate (needs >= 3 points)
   int points = 0;
 };

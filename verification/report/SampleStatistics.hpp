@@ -10,7 +10,7 @@ struct SampleStatistics {
   double mean = 0.0;
   std::optional<double> std_dev;  // sample (n - 1) standard deviation; none for n < 2
   double min = 0.0, max = 0.0;
-  std::vector<double> values;     // in the order given (for CDFs)
+  std::vector<double> values;  // in the order given (for CDFs)
 };
 
 /// Statistics of a non-empty sample; throws std::invalid_argument for an empty one.

@@ -13,13 +13,15 @@ bool expected_to_pass(const Scene& scene, const StudyRun& run) {
   return true;
 }
 
-int write_patch_suite(const Scene& scene, const std::vector<RunRecord>& records, std::ostringstream& md) {
+int write_patch_suite(const Scene& scene, const std::vector<RunRecord>& records,
+                      std::ostringstream& md) {
   ConvergenceTable table;
   const ConvergenceTable::Style sci{3, true};
   int unexpected = 0;
   for (const RunRecord& r : records) {
     const auto& m = r.metrics;
-    const bool pass = m && m->l2_error <= scene.patch_tolerance && m->energy_error <= scene.patch_tolerance;
+    const bool pass =
+        m && m->l2_error <= scene.patch_tolerance && m->energy_error <= scene.patch_tolerance;
     const bool expect = expected_to_pass(scene, r.run);
     unexpected += pass != expect;
     table.start_row();

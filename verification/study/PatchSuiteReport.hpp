@@ -14,6 +14,7 @@ namespace vorodg {
 bool expected_to_pass(const Scene& scene, const StudyRun& run);
 
 /// Prints the verdicts, appends their table to `md` and returns the number of unexpected ones.
-int write_patch_suite(const Scene& scene, const std::vector<RunRecord>& records, std::ostringstream& md);
+int write_patch_suite(const Scene& scene, const std::vector<RunRecord>& records,
+                      std::ostringstream& md);
 
 }  // namespace vorodg

@@ -67,9 +67,15 @@ void read_setting(SceneObject& object, const SettingSpec& spec, SolveSettings& s
       spec.set_text(s, text);
       break;
     }
-    case SettingKind::flag: spec.set(s, object.flag(spec.key, spec.get(s) != 0.0)); break;
-    case SettingKind::integer: spec.set(s, object.integer(spec.key, static_cast<int>(spec.get(s)))); break;
-    case SettingKind::number: spec.set(s, object.number(spec.key, spec.get(s))); break;
+    case SettingKind::flag:
+      spec.set(s, object.flag(spec.key, spec.get(s) != 0.0));
+      break;
+    case SettingKind::integer:
+      spec.set(s, object.integer(spec.key, static_cast<int>(spec.get(s))));
+      break;
+    case SettingKind::number:
+      spec.set(s, object.number(spec.key, spec.get(s)));
+      break;
   }
 }
 
@@ -135,7 +141,8 @@ SolveSettings read_material(SceneObject& top, Scene& scene) {
 void check_problems(SceneObject& top, const Scene& scene, const SolveSettings& material) {
   const SettingSpec& problem_spec = setting_spec("problem");
   for (const std::string& problem : scene.problems) {
-    if (const auto message = check_text(problem_spec, problem)) top.fail_value("problems", *message);
+    if (const auto message = check_text(problem_spec, problem))
+      top.fail_value("problems", *message);
     SolveSettings settings = material;
     settings.problem = problem;
     std::unique_ptr<ExactSolution> exact;
@@ -152,9 +159,10 @@ void check_problems(SceneObject& top, const Scene& scene, const SolveSettings& m
 }
 
 void read_domain(SceneObject& top, Scene& scene) {
-  const bool beam = std::find(scene.problems.begin(), scene.problems.end(), "beam") != scene.problems.end();
-  const std::vector<double> domain = top.numbers("domain", beam ? std::vector<double>{0, -0.5, 4, 0.5}
-                                                                : std::vector<double>{0, 0, 2, 1});
+  const bool beam =
+      std::find(scene.problems.begin(), scene.problems.end(), "beam") != scene.problems.end();
+  const std::vector<double> domain = top.numbers(
+      "domain", beam ? std::vector<double>{0, -0.5, 4, 0.5} : std::vector<double>{0, 0, 2, 1});
   if (domain.size() != 4) top.fail_value("domain", "expected four numbers [x0, y0, x1, y1]");
   try {
     scene.domain = Rectangle(domain[0], domain[1], domain[2], domain[3]);
@@ -204,9 +212,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   check_problems(top, scene, material);
   read_list(top, "meshes", "mesh objects",
             [&](SceneObject& m) { scene.meshes.push_back(read_mesh(m, scene.domain)); });
-  read_list(top, "formulations", "formulation objects", [&](SceneObject& f) {
-    scene.formulations.push_back(read_formulation(f, material));
-  });
+  read_list(top, "formulations", "formulation objects",
+            [&](SceneObject& f) { scene.formulations.push_back(read_formulation(f, material)); });
   {
     const json outputs_value = top.has("outputs") ? top.at("outputs") : json::object();
     SceneObject outputs(outputs_value, "outputs", source);

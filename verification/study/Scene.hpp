@@ -19,9 +19,9 @@
 namespace vorodg {
 
 struct SceneMesh {
-  std::string label;             // default: the family name
+  std::string label;  // default: the family name
   MeshFamily family = MeshFamily::rcp;
-  std::vector<double> sizes;     // d (rcp, tri) or h (hex, perturbed-hex, quad), coarse to fine
+  std::vector<double> sizes;  // d (rcp, tri) or h (hex, perturbed-hex, quad), coarse to fine
   int realizations = 1;
   std::uint64_t seed = MeshSpec{}.seed;
   double perturbation = MeshSpec{}.perturbation;
@@ -58,11 +58,11 @@ struct Scene {
   // merged over them), run into a subfolder named after it.
   std::vector<std::shared_ptr<const Scene>> sweeps;
   // A sweep of an extremes study: what it varies and what its verdicts compare against.
-  std::string axis;                 // nu | kp | aspect | perturbation | regularization | h
-  std::string baseline = "none";    // first-nu | cg | first-mesh | coarsest-level | none
-  double expected_rate = 2.0;       // coarsest-level: the error expected to fall as h^rate
-  double degraded_factor = 3.0;     // error above this times the baseline: degraded
-  double broken_factor = 30.0;      // error above this times the baseline: broken
+  std::string axis;               // nu | kp | aspect | perturbation | regularization | h
+  std::string baseline = "none";  // first-nu | cg | first-mesh | coarsest-level | none
+  double expected_rate = 2.0;     // coarsest-level: the error expected to fall as h^rate
+  double degraded_factor = 3.0;   // error above this times the baseline: degraded
+  double broken_factor = 30.0;    // error above this times the baseline: broken
 };
 
 /// Reads and validates a scene. Throws InputError naming the file and the key.

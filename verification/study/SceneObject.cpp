@@ -30,7 +30,8 @@ SceneObject::SceneObject(const json& value, std::string where, const std::string
   if (!value.is_object()) fail("", "an object", value);
 }
 
-void SceneObject::fail(const std::string& key, const std::string& expected, const json& found) const {
+void SceneObject::fail(const std::string& key, const std::string& expected,
+                       const json& found) const {
   const std::string where = path(key).empty() ? "the top level" : "key '" + path(key) + "'";
   throw InputError("scene " + source_ + ": " + where + ": expected " + expected + ", found " +
                    describe(found));
@@ -40,7 +41,9 @@ void SceneObject::fail_value(const std::string& key, const std::string& what) co
   throw InputError("scene " + source_ + ": key '" + path(key) + "': " + what);
 }
 
-bool SceneObject::has(const std::string& key) { return known(key), value_.contains(key); }
+bool SceneObject::has(const std::string& key) {
+  return known(key), value_.contains(key);
+}
 
 const json& SceneObject::at(const std::string& key) {
   known(key);

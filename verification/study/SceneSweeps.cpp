@@ -17,7 +17,8 @@ using nlohmann::json;
 /// keys and read as a scene of its own, so each sweep is validated like any scene.
 Scene parse_extremes(const json& root, SceneObject& top, const std::string& source) {
   const json& sweeps = top.at("sweeps");
-  if (!sweeps.is_array() || sweeps.empty()) top.fail("sweeps", "a non-empty array of sweep objects", sweeps);
+  if (!sweeps.is_array() || sweeps.empty())
+    top.fail("sweeps", "a non-empty array of sweep objects", sweeps);
   json base = root;
   for (const char* key : {"name", "description", "study", "sweeps"}) base.erase(key);
   Scene scene;
@@ -27,12 +28,14 @@ Scene parse_extremes(const json& root, SceneObject& top, const std::string& sour
     SceneObject s(sweeps[i], where, source);
     json merged = base;
     json patch = sweeps[i];
-    static const std::vector<std::string> sweep_keys = {"name", "axis", "baseline", "expected_rate",
-                                                        "degraded_factor", "broken_factor"};
-    static const std::set<std::string> scene_keys = {"problems", "domain", "material", "meshes",
-                                                     "formulations", "outputs", "patch_tolerance", "reference"};
+    static const std::vector<std::string> sweep_keys = {
+        "name", "axis", "baseline", "expected_rate", "degraded_factor", "broken_factor"};
+    static const std::set<std::string> scene_keys = {"problems",        "domain",       "material",
+                                                     "meshes",          "formulations", "outputs",
+                                                     "patch_tolerance", "reference"};
     for (const auto& [key, ignored] : sweeps[i].items()) {
-      if (scene_keys.count(key) || std::find(sweep_keys.begin(), sweep_keys.end(), key) != sweep_keys.end())
+      if (scene_keys.count(key) ||
+          std::find(sweep_keys.begin(), sweep_keys.end(), key) != sweep_keys.end())
         continue;
       for (const std::string& known : sweep_keys)  // a misspelt sweep key: suggest it here
         if (edit_distance(key, known) < 4)
@@ -46,15 +49,18 @@ Scene parse_extremes(const json& root, SceneObject& top, const std::string& sour
     sweep->name = s.text("name", "");
     if (sweep->name.empty() || sweep->name.find_first_of("/\\ ") != std::string::npos)
       s.fail_value("name", "expected a non-empty folder name without '/', '\\' or spaces");
-    if (!names.insert(sweep->name).second) s.fail_value("name", "'" + sweep->name + "' names two sweeps");
+    if (!names.insert(sweep->name).second)
+      s.fail_value("name", "'" + sweep->name + "' names two sweeps");
     sweep->axis = s.text("axis", "");
     if (!is_choice(sweep_axis_choices(), sweep->axis))
       s.fail_value("axis", "'" + sweep->axis + "': expected " + choice_list(sweep_axis_choices()));
     sweep->baseline = s.text("baseline", sweep->baseline);
     if (!is_choice(baseline_choices(), sweep->baseline))
-      s.fail_value("baseline", "'" + sweep->baseline + "': expected " + choice_list(baseline_choices()));
-    const bool has_cg = std::any_of(sweep->formulations.begin(), sweep->formulations.end(),
-                                    [](const SceneFormulation& f) { return f.settings.formulation == "cg"; });
+      s.fail_value("baseline",
+                   "'" + sweep->baseline + "': expected " + choice_list(baseline_choices()));
+    const bool has_cg =
+        std::any_of(sweep->formulations.begin(), sweep->formulations.end(),
+                    [](const SceneFormulation& f) { return f.settings.formulation == "cg"; });
     if (sweep->baseline == "cg" && !has_cg)
       s.fail_value("baseline", "'cg' needs a cg formulation in the sweep");
     sweep->expected_rate = s.number("expected_rate", sweep->expected_rate);

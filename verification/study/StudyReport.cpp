@@ -24,7 +24,9 @@ std::string csv_text(std::string s) {
   return "\"" + s + "\"";
 }
 
-std::string csv_number(double x) { return fmt(x, 17); }
+std::string csv_number(double x) {
+  return fmt(x, 17);
+}
 
 void write_results_csv(const std::vector<RunRecord>& records, const std::filesystem::path& out) {
   std::ostringstream csv;
@@ -55,7 +57,8 @@ void write_timings(const Scene& scene, const std::vector<RunRecord>& records,
   std::map<std::string, std::map<std::string, double>> timings;
   for (const RunRecord& r : records)
     if (r.metrics)
-      for (const auto& [stage, s] : r.metrics->seconds) timings[group_key(scene, r.run)][stage] += s;
+      for (const auto& [stage, s] : r.metrics->seconds)
+        timings[group_key(scene, r.run)][stage] += s;
   write_json(out / "timings.json", json(timings));
 }
 
@@ -140,7 +143,8 @@ void write_convergence(const StudySummary& summary, const std::filesystem::path&
 void write_kp_trend(const StudySummary& summary, std::ostringstream& md) {
   std::map<std::string, std::vector<const GroupSummary*>> by_formulation;
   for (const GroupSummary& g : summary.groups)
-    if (g.kp && g.rate_l2) by_formulation[g.mesh + " | " + g.problem + " | " + g.label].push_back(&g);
+    if (g.kp && g.rate_l2)
+      by_formulation[g.mesh + " | " + g.problem + " | " + g.label].push_back(&g);
   for (auto& [base, groups] : by_formulation) {
     if (groups.size() < 2) continue;
     std::sort(groups.begin(), groups.end(), [](auto* a, auto* b) { return *a->kp < *b->kp; });
@@ -173,26 +177,29 @@ StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>&
   write_json(out / "summary.json", to_json(scene, summary));
 
   std::ostringstream md;
-  md << "# " << scene.name << "\n\n" << scene.description << "\n\n"
+  md << "# " << scene.name << "\n\n"
+     << scene.description << "\n\n"
      << "Study: " << scene.study << "; problems: ";
   for (const auto& p : scene.problems) md << p << " ";
   md << "; E = " << scene.E << ", plane " << plane_name(scene.plane) << "; " << records.size()
      << " runs.\n\n";
   StudyReport report;
-  if (scene.study == "patch-suite") report.unexpected = write_patch_suite(scene, records, md);
-  else write_convergence(summary, out, md);
+  if (scene.study == "patch-suite")
+    report.unexpected = write_patch_suite(scene, records, md);
+  else
+    write_convergence(summary, out, md);
   write_kp_trend(summary, md);
   if (scene.study == "trade-off") write_tradeoff(records, out, md);
   if (published.is_object() && published.contains("trend"))
-    md << "Published trend (" << published.value("source", "") << "): "
-       << published["trend"].get<std::string>() << "\n\n";
+    md << "Published trend (" << published.value("source", "")
+       << "): " << published["trend"].get<std::string>() << "\n\n";
   report.markdown = md.str();
   return report;
 }
 
 std::vector<std::string> study_pictures() {
-  return {"convergence_l2.png", "convergence_energy.png", "penalty.png", "cdf_l2.png",
-          "tradeoff.png", "extremes.png"};
+  return {"convergence_l2.png", "convergence_energy.png", "penalty.png",
+          "cdf_l2.png",         "tradeoff.png",           "extremes.png"};
 }
 
 void finish_report_markdown(std::string markdown, const std::filesystem::path& out,

@@ -60,10 +60,15 @@ StudyRun make_run(const Scene& scene, int m, int level, int realization, const s
 }
 
 /// The mesh a run's (mesh, level, realization) stands for, or the reason it could not be made.
-std::optional<GeneratedMesh> make_mesh(const Scene& scene, const StudyRun& run, std::string& error) {
+std::optional<GeneratedMesh> make_mesh(const Scene& scene, const StudyRun& run,
+                                       std::string& error) {
   const SceneMesh& m = scene.meshes[run.mesh];
-  const MeshSpec spec{.family = m.family, .domain = scene.domain, .size = run.size, .seed = run.seed,
-                      .perturbation = m.perturbation, .regularization = m.regularization};
+  const MeshSpec spec{.family = m.family,
+                      .domain = scene.domain,
+                      .size = run.size,
+                      .seed = run.seed,
+                      .perturbation = m.perturbation,
+                      .regularization = m.regularization};
   try {
     GeneratedMesh mesh = generate_mesh(spec);
     const auto report = validate_mesh(mesh.mesh);
@@ -100,7 +105,8 @@ std::vector<StudyRun> expand_runs(const Scene& scene) {
             for (int f = 0; f < static_cast<int>(scene.formulations.size()); ++f) {
               const SceneFormulation& form = scene.formulations[f];
               if (!form.is_dg()) runs.push_back(make_run(scene, m, level, r, problem, nu, f, {}));
-              for (double kp : form.kp) runs.push_back(make_run(scene, m, level, r, problem, nu, f, kp));
+              for (double kp : form.kp)
+                runs.push_back(make_run(scene, m, level, r, problem, nu, f, kp));
             }
   std::set<std::string> ids;
   for (const StudyRun& run : runs)
@@ -164,7 +170,8 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
         RunRecord record = solve_run(scene, runs[i], mesh ? &*mesh : nullptr, mesh_error);
         {
           std::lock_guard<std::mutex> guard(lock);
-          out << to_json(record).dump() << "\n" << std::flush;  // at once: a kill loses nothing done
+          out << to_json(record).dump() << "\n"
+              << std::flush;  // at once: a kill loses nothing done
           records[i] = std::move(record);
         }
         progress.finished(i);

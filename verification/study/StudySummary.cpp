@@ -41,7 +41,8 @@ std::optional<RateSummary> rate_summary(const std::vector<const RunRecord*>& rec
   return out;
 }
 
-LevelSummary level_summary(const Scene& scene, const std::vector<const RunRecord*>& records, int level) {
+LevelSummary level_summary(const Scene& scene, const std::vector<const RunRecord*>& records,
+                           int level) {
   LevelSummary lv;
   lv.level = level;
   std::vector<double> l2, energy, h, dofs, iterations;
@@ -117,20 +118,34 @@ StudySummary summarize_study(const Scene& scene, const std::vector<RunRecord>& r
     if (!groups.count(key)) order.push_back(key);
     groups[key].push_back(&r);
   }
-  const json rates = published.is_object() ? published.value("rates", json::object()) : json::object();
+  const json rates =
+      published.is_object() ? published.value("rates", json::object()) : json::object();
   StudySummary summary{{}, published};
   for (const std::string& key : order) {
     const std::vector<const RunRecord*>& runs = groups[key];
     const StudyRun& first = runs.front()->run;
-    GroupSummary g{key, first.mesh_label, first.problem, first.formulation_name,
-                   first.formulation_label, first.variant, first.nu, first.kp, {}, {}, {}, {}};
+    GroupSummary g{key,
+                   first.mesh_label,
+                   first.problem,
+                   first.formulation_name,
+                   first.formulation_label,
+                   first.variant,
+                   first.nu,
+                   first.kp,
+                   {},
+                   {},
+                   {},
+                   {}};
     int max_level = 0;
     for (const RunRecord* r : runs) max_level = std::max(max_level, r->run.level);
-    for (int level = 0; level <= max_level; ++level) g.levels.push_back(level_summary(scene, runs, level));
+    for (int level = 0; level <= max_level; ++level)
+      g.levels.push_back(level_summary(scene, runs, level));
     g.rate_l2 = rate_summary(runs, &RunMetrics::l2_error, max_level + 1);
-    if (scene.energy_error) g.rate_energy = rate_summary(runs, &RunMetrics::energy_error, max_level + 1);
+    if (scene.energy_error)
+      g.rate_energy = rate_summary(runs, &RunMetrics::energy_error, max_level + 1);
     for (const std::string& name : {key, g.variant})
-      if (rates.contains(name) && rates[name].is_number()) g.published_l2_rate = rates[name].get<double>();
+      if (rates.contains(name) && rates[name].is_number())
+        g.published_l2_rate = rates[name].get<double>();
     summary.groups.push_back(std::move(g));
   }
   return summary;
@@ -150,13 +165,16 @@ json published_reference(const Scene& scene) {
 }
 
 json to_json(const Scene& scene, const StudySummary& summary) {
-  json out = {{"scene", {{"name", scene.name}, {"study", scene.study},
-                         {"description", scene.description}, {"problems", scene.problems}}},
+  json out = {{"scene",
+               {{"name", scene.name},
+                {"study", scene.study},
+                {"description", scene.description},
+                {"problems", scene.problems}}},
               {"groups", json::array()}};
   for (const GroupSummary& g : summary.groups) {
-    json j = {{"key", g.key}, {"mesh", g.mesh}, {"problem", g.problem}, {"nu", g.nu},
-              {"variant", g.variant}, {"formulation", g.formulation}, {"label", g.label},
-              {"levels", json::array()}};
+    json j = {{"key", g.key},     {"mesh", g.mesh},         {"problem", g.problem},
+              {"nu", g.nu},       {"variant", g.variant},   {"formulation", g.formulation},
+              {"label", g.label}, {"levels", json::array()}};
     if (g.kp) j["kp"] = *g.kp;
     for (const LevelSummary& lv : g.levels) j["levels"].push_back(level_json(lv));
     j["rate_l2"] = rate_json(g.rate_l2);

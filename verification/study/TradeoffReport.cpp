@@ -26,7 +26,8 @@ std::string scientific(double x) {
 }
 
 /// Per (variant, level): mean h_avg and L2 error, median total seconds.
-std::vector<CostPoint> cost_points(const std::vector<RunRecord>& records, std::vector<std::string>& variants) {
+std::vector<CostPoint> cost_points(const std::vector<RunRecord>& records,
+                                   std::vector<std::string>& variants) {
   std::map<std::pair<std::string, int>, std::vector<const RunMetrics*>> groups;
   for (const RunRecord& r : records) {
     if (!r.ok()) continue;
@@ -50,8 +51,8 @@ std::vector<CostPoint> cost_points(const std::vector<RunRecord>& records, std::v
   return points;
 }
 
-void write_knob_table(const std::vector<CostPoint>& points, const std::vector<std::string>& variants,
-                      std::ostringstream& md) {
+void write_knob_table(const std::vector<CostPoint>& points,
+                      const std::vector<std::string>& variants, std::ostringstream& md) {
   int levels = 0;
   for (const CostPoint& p : points) levels = std::max(levels, p.level + 1);
   md << "\nWhat each knob adds at fixed h, against `" << variants.front()
@@ -70,7 +71,8 @@ void write_knob_table(const std::vector<CostPoint>& points, const std::vector<st
     for (int l = 0; l < levels; ++l) {
       const CostPoint *p = find(v, l), *base = find(variants.front(), l);
       if (p && base)
-        md << " " << fmt(p->error / base->error, 3) << " | " << fmt(p->seconds / base->seconds, 3) << " |";
+        md << " " << fmt(p->error / base->error, 3) << " | " << fmt(p->seconds / base->seconds, 3)
+           << " |";
       else
         md << " - | - |";
     }
@@ -91,20 +93,25 @@ void write_tradeoff(const std::vector<RunRecord>& records, const std::filesystem
     if (front.empty() || p.error < front.back()->error) front.push_back(&p);
   json data = {{"points", json::array()}, {"pareto", json::array()}};
   for (const CostPoint& p : points)
-    data["points"].push_back({{"variant", p.variant}, {"level", p.level}, {"h_avg", p.h},
-                              {"l2_error", p.error}, {"seconds", p.seconds}});
+    data["points"].push_back({{"variant", p.variant},
+                              {"level", p.level},
+                              {"h_avg", p.h},
+                              {"l2_error", p.error},
+                              {"seconds", p.seconds}});
   md << "## Error against wall time\n\nPareto front (median total seconds per run over the "
         "realizations; no other configuration is both cheaper and more accurate). For a target "
         "error e, the cheapest configuration is the first row whose error is at most e:\n\n"
         "| L2 error | seconds | configuration | level | h_avg |\n|---|---|---|---|---|\n";
   std::cout << "\nPareto front (error against median wall time per run):\n";
   for (const CostPoint* p : front) {
-    data["pareto"].push_back({{"variant", p->variant}, {"level", p->level},
-                              {"l2_error", p->error}, {"seconds", p->seconds}});
+    data["pareto"].push_back({{"variant", p->variant},
+                              {"level", p->level},
+                              {"l2_error", p->error},
+                              {"seconds", p->seconds}});
     md << "| " << scientific(p->error) << " | " << fmt(p->seconds, 3) << " | " << p->variant
        << " | " << p->level << " | " << fmt(p->h, 4) << " |\n";
-    std::cout << "  " << scientific(p->error) << "  " << std::setw(9) << fmt(p->seconds, 3) << " s  "
-              << p->variant << ", level " << p->level << "\n";
+    std::cout << "  " << scientific(p->error) << "  " << std::setw(9) << fmt(p->seconds, 3)
+              << " s  " << p->variant << ", level " << p->level << "\n";
   }
   write_knob_table(points, variants, md);
   write_json(out / "tradeoff.json", data);

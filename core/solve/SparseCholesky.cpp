@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <vector>
 
 #include "core/util/Errors.hpp"
@@ -58,6 +59,15 @@ NodeGraph node_graph(const Eigen::SparseMatrix<double>& lower, int b) {
   return g;
 }
 
+/// METIS keeps its random-number state in globals (GKlib's generator, reseeded at each call): two
+/// orderings at once on two threads interleave it and give different, equally valid orderings —
+/// and different round-off in everything after. Serialized, each ordering is a pure function of
+/// its graph again, so study results do not depend on which runs happen to overlap.
+std::mutex& metis_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
 /// A fill-reducing ordering of the node graph (METIS or AMD), expanded to the DOFs of each node.
 std::vector<int> node_permutation(const Eigen::SparseMatrix<double>& lower, int b, bool metis,
                                   cholmod_common* c) {
@@ -74,6 +84,8 @@ std::vector<int> node_permutation(const Eigen::SparseMatrix<double>& lower, int 
   view.dtype = CHOLMOD_DOUBLE;
   view.sorted = view.packed = 1;
   std::vector<int> node_perm(nodes);
+  std::unique_lock<std::mutex> serial(metis_lock(), std::defer_lock);
+  if (metis) serial.lock();
   const int done = metis ? cholmod_metis(&view, nullptr, 0, /*postorder=*/1, node_perm.data(), c)
                          : cholmod_amd(&view, nullptr, 0, node_perm.data(), c);
   if (!done)
@@ -122,6 +134,9 @@ void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
   } else {
     common.nmethods = options.ordering == FillOrdering::cholmod_default ? 0 : 1;
     common.method[0].ordering = CHOLMOD_AMD;
+    // CHOLMOD's own choice may try METIS.
+    std::unique_lock<std::mutex> serial(metis_lock(), std::defer_lock);
+    if (common.nmethods == 0) serial.lock();
     factor = cholmod_analyze(&a, &common);
   }
   if (!factor)

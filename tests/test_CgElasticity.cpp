@@ -184,16 +184,11 @@ Eigen::Matrix2Xd p1_solution(const PolygonMesh& mesh, const ExactSolution& probl
   const Eigen::Matrix3d& D = problem.material().D();
   auto on_side = [&](const Point& p, Side s) {
     switch (s) {
-      case Side::left:
-        return std::abs(p.x() - dom.x0()) < tol;
-      case Side::right:
-        return std::abs(p.x() - dom.x1()) < tol;
-      case Side::bottom:
-        return std::abs(p.y() - dom.y0()) < tol;
-      case Side::top:
-        return std::abs(p.y() - dom.y1()) < tol;
-      default:
-        return false;
+      case Side::left: return std::abs(p.x() - dom.x0()) < tol;
+      case Side::right: return std::abs(p.x() - dom.x1()) < tol;
+      case Side::bottom: return std::abs(p.y() - dom.y0()) < tol;
+      case Side::top: return std::abs(p.y() - dom.y1()) < tol;
+      default: return false;
     }
   };
   const Side sides[] = {Side::left, Side::right, Side::bottom, Side::top};

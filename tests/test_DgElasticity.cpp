@@ -71,14 +71,10 @@ const Family& family_named(const std::string& name) {
 
 const char* method_name(DgMethod m) {
   switch (m) {
-    case DgMethod::penalty:
-      return "dg-penalty";
-    case DgMethod::augmented_lagrangian:
-      return "dg-al";
-    case DgMethod::nitsche:
-      return "dg-nitsche";
-    case DgMethod::sipg:
-      return "dg-sipg";
+    case DgMethod::penalty: return "dg-penalty";
+    case DgMethod::augmented_lagrangian: return "dg-al";
+    case DgMethod::nitsche: return "dg-nitsche";
+    case DgMethod::sipg: return "dg-sipg";
   }
   return "?";
 }

@@ -32,11 +32,9 @@ struct SolveSettings {
 };
 
 struct SolveResult {
-  int dofs = 0;
-  int free_dofs = 0;
-  double l2_error = 0.0;
-  double energy_error = 0.0;
-  double rcond = 0.0;
+  int dofs = 0, free_dofs = 0;
+  double l2_error = 0.0, energy_error = 0.0;  // relative
+  double rcond = 0.0;                         // CHOLMOD's reciprocal condition estimate
   long factor_nonzeros = 0;            // entries of the Cholesky factor (its memory: 8 bytes each)
   double max_divergence_defect = 0.0;  // before correction, relative to sqrt(cell area)
   double min_moment_rcond = 0.0;

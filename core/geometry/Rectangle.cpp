@@ -11,16 +11,11 @@ namespace vorodg {
 
 std::string_view side_name(Side s) {
   switch (s) {
-    case Side::left:
-      return "left";
-    case Side::right:
-      return "right";
-    case Side::bottom:
-      return "bottom";
-    case Side::top:
-      return "top";
-    default:
-      return "none";
+    case Side::left: return "left";
+    case Side::right: return "right";
+    case Side::bottom: return "bottom";
+    case Side::top: return "top";
+    default: return "none";
   }
 }
 
@@ -52,16 +47,11 @@ Rectangle Rectangle::parse(const std::string& text) {
 
 double Rectangle::side_coordinate(Side s) const {
   switch (s) {
-    case Side::left:
-      return lo_.x();
-    case Side::right:
-      return hi_.x();
-    case Side::bottom:
-      return lo_.y();
-    case Side::top:
-      return hi_.y();
-    default:
-      return std::nan("");
+    case Side::left: return lo_.x();
+    case Side::right: return hi_.x();
+    case Side::bottom: return lo_.y();
+    case Side::top: return hi_.y();
+    default: return std::nan("");
   }
 }
 

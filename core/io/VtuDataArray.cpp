@@ -61,12 +61,9 @@ std::int64_t sign_extend(std::uint64_t v, int size) {
 double real_at(const char* p, const ScalarType& t, bool big_endian) {
   const std::uint64_t w = raw_word(p, t.size, big_endian);
   switch (t.kind) {
-    case Kind::signed_int:
-      return static_cast<double>(sign_extend(w, t.size));
-    case Kind::unsigned_int:
-      return static_cast<double>(w);
-    case Kind::real:
-      break;
+    case Kind::signed_int: return static_cast<double>(sign_extend(w, t.size));
+    case Kind::unsigned_int: return static_cast<double>(w);
+    case Kind::real: break;
   }
   if (t.size == 4) return std::bit_cast<float>(static_cast<std::uint32_t>(w));
   return std::bit_cast<double>(w);

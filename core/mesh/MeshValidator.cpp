@@ -130,32 +130,19 @@ void check_edges(const PolygonMesh& mesh, DefectList& out) {
 std::string_view defect_kind_name(MeshDefect::Kind kind) {
   using K = MeshDefect::Kind;
   switch (kind) {
-    case K::empty_mesh:
-      return "empty mesh";
-    case K::duplicate_vertex:
-      return "duplicate vertex";
-    case K::unreferenced_vertex:
-      return "unreferenced vertex";
-    case K::repeated_vertex_in_cell:
-      return "repeated vertex in cell";
-    case K::clockwise_cell:
-      return "clockwise cell";
-    case K::zero_area_cell:
-      return "zero-area cell";
-    case K::self_intersecting_cell:
-      return "self-intersecting cell";
-    case K::not_star_shaped:
-      return "cell not star-shaped";
-    case K::cell_outside_domain:
-      return "cell outside domain";
-    case K::non_manifold_edge:
-      return "non-manifold edge";
-    case K::inconsistent_orientation:
-      return "inconsistent orientation";
-    case K::boundary_edge_off_domain:
-      return "boundary edge off domain";
-    case K::area_mismatch:
-      return "area mismatch";
+    case K::empty_mesh: return "empty mesh";
+    case K::duplicate_vertex: return "duplicate vertex";
+    case K::unreferenced_vertex: return "unreferenced vertex";
+    case K::repeated_vertex_in_cell: return "repeated vertex in cell";
+    case K::clockwise_cell: return "clockwise cell";
+    case K::zero_area_cell: return "zero-area cell";
+    case K::self_intersecting_cell: return "self-intersecting cell";
+    case K::not_star_shaped: return "cell not star-shaped";
+    case K::cell_outside_domain: return "cell outside domain";
+    case K::non_manifold_edge: return "non-manifold edge";
+    case K::inconsistent_orientation: return "inconsistent orientation";
+    case K::boundary_edge_off_domain: return "boundary edge off domain";
+    case K::area_mismatch: return "area mismatch";
   }
   return "?";
 }

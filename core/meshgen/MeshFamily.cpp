@@ -119,12 +119,8 @@ GeneratedMesh generate_mesh(const MeshSpec& spec) {
   GeneratedMesh out;
   Stopwatch clock;
   switch (spec.family) {
-    case MeshFamily::rcp:
-      out = generate_rcp(spec);
-      break;
-    case MeshFamily::tri:
-      out = generate_tri(spec);
-      break;
+    case MeshFamily::rcp: out = generate_rcp(spec); break;
+    case MeshFamily::tri: out = generate_tri(spec); break;
     case MeshFamily::hex:
       out.mesh = hex_mesh(spec.domain, spec.size);
       out.report.seconds["hexagons"] = clock.seconds();

@@ -84,14 +84,10 @@ class SideClipper {
  private:
   double inward_distance(const Point& p, Side side) const {
     switch (side) {
-      case Side::left:
-        return p.x() - domain_.x0();
-      case Side::right:
-        return domain_.x1() - p.x();
-      case Side::bottom:
-        return p.y() - domain_.y0();
-      default:
-        return domain_.y1() - p.y();
+      case Side::left: return p.x() - domain_.x0();
+      case Side::right: return domain_.x1() - p.x();
+      case Side::bottom: return p.y() - domain_.y0();
+      default: return domain_.y1() - p.y();
     }
   }
   int crossing(int a, int b, Side side) {

@@ -53,16 +53,11 @@ TriangleRule make_rule(int points) {
 const TriangleRule& triangle_rule(int points) {
   static const TriangleRule rules[] = {make_rule(1), make_rule(3), make_rule(6), make_rule(7)};
   switch (points) {
-    case 1:
-      return rules[0];
-    case 3:
-      return rules[1];
-    case 6:
-      return rules[2];
-    case 7:
-      return rules[3];
-    default:
-      return make_rule(points), rules[0];  // make_rule throws
+    case 1: return rules[0];
+    case 3: return rules[1];
+    case 6: return rules[2];
+    case 7: return rules[3];
+    default: return make_rule(points), rules[0];  // make_rule throws
   }
 }
 

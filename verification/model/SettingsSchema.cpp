@@ -159,12 +159,9 @@ std::string exact_text(double x) {
 
 std::string value_text(const SettingSpec& spec, const SolveSettings& settings) {
   switch (spec.kind) {
-    case SettingKind::choice:
-      return spec.get_text(settings);
-    case SettingKind::flag:
-      return spec.get(settings) != 0.0 ? "true" : "false";
-    default:
-      return exact_text(spec.get(settings));
+    case SettingKind::choice: return spec.get_text(settings);
+    case SettingKind::flag: return spec.get(settings) != 0.0 ? "true" : "false";
+    default: return exact_text(spec.get(settings));
   }
 }
 

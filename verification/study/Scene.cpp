@@ -67,15 +67,11 @@ void read_setting(SceneObject& object, const SettingSpec& spec, SolveSettings& s
       spec.set_text(s, text);
       break;
     }
-    case SettingKind::flag:
-      spec.set(s, object.flag(spec.key, spec.get(s) != 0.0));
-      break;
+    case SettingKind::flag: spec.set(s, object.flag(spec.key, spec.get(s) != 0.0)); break;
     case SettingKind::integer:
       spec.set(s, object.integer(spec.key, static_cast<int>(spec.get(s))));
       break;
-    case SettingKind::number:
-      spec.set(s, object.number(spec.key, spec.get(s)));
-      break;
+    case SettingKind::number: spec.set(s, object.number(spec.key, spec.get(s))); break;
   }
 }
 
@@ -227,6 +223,17 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   scene.reference = top.text("reference", "");
   top.finish();
   return scene;
+}
+
+MeshSpec SceneMesh::spec(const Rectangle& domain, int level, std::uint64_t realization_seed) const {
+  MeshSpec out;
+  out.family = family;
+  out.domain = domain;
+  out.size = sizes.at(level);
+  out.seed = realization_seed;
+  out.perturbation = perturbation;
+  out.regularization = regularization;
+  return out;
 }
 
 Scene read_scene(const std::filesystem::path& path) {

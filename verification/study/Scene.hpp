@@ -26,6 +26,9 @@ struct SceneMesh {
   std::uint64_t seed = MeshSpec{}.seed;
   double perturbation = MeshSpec{}.perturbation;
   double regularization = MeshSpec{}.regularization;
+
+  /// What the generator needs for one realization of one level.
+  MeshSpec spec(const Rectangle& domain, int level, std::uint64_t realization_seed) const;
 };
 
 struct SceneFormulation {

@@ -62,13 +62,7 @@ StudyRun make_run(const Scene& scene, int m, int level, int realization, const s
 /// The mesh a run's (mesh, level, realization) stands for, or the reason it could not be made.
 std::optional<GeneratedMesh> make_mesh(const Scene& scene, const StudyRun& run,
                                        std::string& error) {
-  const SceneMesh& m = scene.meshes[run.mesh];
-  const MeshSpec spec{.family = m.family,
-                      .domain = scene.domain,
-                      .size = run.size,
-                      .seed = run.seed,
-                      .perturbation = m.perturbation,
-                      .regularization = m.regularization};
+  const MeshSpec spec = scene.meshes[run.mesh].spec(scene.domain, run.level, run.seed);
   try {
     GeneratedMesh mesh = generate_mesh(spec);
     const auto report = validate_mesh(mesh.mesh);

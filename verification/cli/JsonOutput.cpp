@@ -31,12 +31,6 @@ nlohmann::json histogram_json(const std::map<int, int>& histogram) {
   return out;
 }
 
-nlohmann::json to_json(const StageTimes& times) {
-  nlohmann::json out = nlohmann::json::object();
-  for (const auto& [stage, seconds] : times) out[stage] = seconds;
-  return out;
-}
-
 nlohmann::json to_json(const MeshStatistics& s) {
   return {{"cells", s.cells},
           {"vertices", s.vertices},

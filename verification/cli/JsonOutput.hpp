@@ -4,7 +4,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/mesh/MeshStatistics.hpp"
-#include "core/util/Stopwatch.hpp"
 
 namespace vorodg {
 
@@ -14,6 +13,5 @@ void write_json(const std::filesystem::path& path, const nlohmann::json& value);
 
 nlohmann::json to_json(const MeshStatistics& stats);
 nlohmann::json histogram_json(const std::map<int, int>& histogram);
-nlohmann::json to_json(const StageTimes& times);
 
 }  // namespace vorodg

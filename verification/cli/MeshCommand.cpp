@@ -95,7 +95,7 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
     json["refused_collapses"] = r.refused_collapses;
     json["merged_cells"] = r.merged_cells;
   }
-  json["seconds"] = to_json(r.seconds);
+  json["seconds"] = nlohmann::json(r.seconds);  // stage -> seconds
   json["seconds"]["total"] = total.seconds();
   if (!o.stats.empty()) write_json(o.stats, json);
 

@@ -88,15 +88,22 @@ std::vector<std::vector<std::string>> ConvergenceTable::formatted() const {
   return table;
 }
 
+std::size_t ConvergenceTable::display_width(const std::string& text) {
+  // Characters, not bytes: "±" is two bytes of UTF-8 but one column on a terminal.
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char ch) { return (ch & 0xC0) != 0x80; }));
+}
+
 void ConvergenceTable::write_text(std::ostream& out, const std::string& indent) const {
   const auto table = formatted();
   std::vector<std::size_t> width(columns_.size(), 0);
   for (const auto& row : table)
-    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+    for (std::size_t c = 0; c < row.size(); ++c)
+      width[c] = std::max(width[c], display_width(row[c]));
   for (const auto& row : table) {
     out << indent;
     for (std::size_t c = 0; c < row.size(); ++c)
-      out << (c ? "  " : "") << std::setw(static_cast<int>(width[c])) << row[c];
+      out << (c ? "  " : "") << std::string(width[c] - display_width(row[c]), ' ') << row[c];
     out << "\n";
   }
 }

@@ -55,6 +55,7 @@ class ConvergenceTable {
   const Column* find(const std::string& name) const;
   Cell& current(const std::string& name, Style style);
   static std::string format(const Cell& cell, const Style& style);
+  static std::size_t display_width(const std::string& text);
   std::vector<std::vector<std::string>> formatted() const;
 
   std::vector<Column> columns_;

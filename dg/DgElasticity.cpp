@@ -1,6 +1,7 @@
 #include "dg/DgElasticity.hpp"
 
 #include <Eigen/SparseLU>
+#include <algorithm>
 #include <cmath>
 
 #include "core/element/LoadIntegrator.hpp"
@@ -29,9 +30,9 @@ DgElasticity::DgElasticity(const ElementTable& table, const ElasticityIntegrator
       threads_(std::max(threads, 1)),
       space_(table.mesh()),
       ops_(space_, integrator, table) {
-  if (!(options.kp > 0.0) || !std::isfinite(options.kp))
-    throw InputError("penalty k_p = " + std::to_string(options.kp) +
-                     ": expected k_p > 0 (relative to E)");
+  const double kp = penalty_multiplier(options);
+  if (!(kp > 0.0) || !std::isfinite(kp))
+    throw InputError("penalty k_p = " + fmt(kp) + ": expected k_p > 0");
   if (!(options.tolerance > 0.0)) throw InputError("DG tolerance: expected > 0");
   if (options.max_iterations < 1) throw InputError("DG maximum iterations: expected >= 1");
   if (options.sipg_sign != -1 && options.sipg_sign != 1)
@@ -45,9 +46,19 @@ void DgElasticity::run() {
   solve();
 }
 
-double DgElasticity::penalty(const Interface& f) const {
-  const double h = options_.local_h ? f.h_local : table_.mesh().h_avg();
-  return options_.kp * integrator_.material().E() / h;  // eps = k_p E f(h), f(h) = 1/h
+PenaltyScaling penalty_scaling(const DgOptions& options) {
+  if (options.penalty) return *options.penalty;
+  return options.method == DgMethod::sipg ? PenaltyScaling::coercive : PenaltyScaling::h_avg;
+}
+
+double penalty_multiplier(const DgOptions& options) {
+  if (options.kp) return *options.kp;
+  return penalty_scaling(options) == PenaltyScaling::coercive ? 1.0 : 1e3;
+}
+
+TractionKind interface_traction(const DgOptions& options) {
+  if (options.traction) return *options.traction;
+  return options.method == DgMethod::sipg ? TractionKind::fan : TractionKind::mean;
 }
 
 void DgElasticity::setup_system() {
@@ -73,24 +84,28 @@ void DgElasticity::assemble_system() {
   }
   seconds_["cell_matrices"] = clock.seconds();
   clock.restart();
+  penalty_ = std::make_unique<InterfacePenalty>(
+      ops_, integrator_, cells, penalty_scaling(options_), penalty_multiplier(options_),
+      options_.weighted_average, interface_traction(options_), threads_);
+  seconds_["penalty"] = clock.seconds();
+  clock.restart();
   const SegmentRule& rule = gauss2_segment();
-  for (const Interface& f : space_.interfaces()) {
+  const bool sipg = options_.method == DgMethod::sipg;
+  const TractionKind kind = interface_traction(options_);
+  const auto& faces = space_.interfaces();
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const Interface& f = faces[i];
     const std::vector<int> dofs = ops_.dofs(f);
-    // eps int [u].[v]: the penalty, exact with two points for edge-linear jumps.
     Eigen::MatrixXd local = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
     for (int g = 0; g < 2; ++g) {
+      const double w = rule.weights[g] * f.length;
       const InterfaceOperator J = ops_.jump(f, rule.t[g]);
-      local += penalty(f) * rule.weights[g] * f.length * J.transpose() * J;
-      if (options_.method == DgMethod::sipg && !options_.sipg_mean_stress) {
-        // -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u], each cell's own stress at the point
-        const InterfaceOperator T = ops_.point_traction(f, rule.t[g]);
-        const Eigen::MatrixXd JT = rule.weights[g] * f.length * J.transpose() * T;
+      local += penalty_->eps(i) * w * J.transpose() * J;  // eps int [u].[v], exact (linear jumps)
+      if (sipg) {  // -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u]
+        const Eigen::MatrixXd JT =
+            w * J.transpose() * ops_.traction(f, rule.t[g], kind, penalty_->weights(i));
         local += -JT + options_.sipg_sign * JT.transpose();
       }
-    }
-    if (options_.method == DgMethod::sipg && options_.sipg_mean_stress) {
-      const Eigen::MatrixXd JT = f.length * ops_.mean_jump(f).transpose() * ops_.mean_traction(f);
-      local += -JT + options_.sipg_sign * JT.transpose();
     }
     for (std::size_t j = 0; j < dofs.size(); ++j)
       for (std::size_t i = 0; i < dofs.size(); ++i)
@@ -121,12 +136,14 @@ void DgElasticity::assemble_system() {
   add_boundary_tractions(mesh, problem_, cell_dof, f);
   load_ = constraints_->restrict(f) - A_fixed_ * constraints_->prescribed();
   lambda_.assign(2 * space_.interfaces().size(), Eigen::Vector2d::Zero());
+  if (options_.method == DgMethod::nitsche) build_consistency();
   seconds_["assembly"] = clock.seconds();
 }
 
 /// The interface terms that move to the right side: -int lambda.[v] (al) or
-/// +int {sigma_mean(u)} n.[v] (nitsche), restricted to the free DOFs.
+/// +int {sigma(u)} n.[v] (nitsche, the operator built once), restricted to the free DOFs.
 Eigen::VectorXd DgElasticity::interface_load(const Eigen::VectorXd& u) {
+  if (options_.method == DgMethod::nitsche) return constraints_->restrict(consistency_ * u);
   Eigen::VectorXd g = Eigen::VectorXd::Zero(num_dofs());
   const SegmentRule& rule = gauss2_segment();
   const auto& faces = space_.interfaces();
@@ -134,25 +151,39 @@ Eigen::VectorXd DgElasticity::interface_load(const Eigen::VectorXd& u) {
     const Interface& f = faces[i];
     const std::vector<int> dofs = ops_.dofs(f);
     Eigen::VectorXd local = Eigen::VectorXd::Zero(dofs.size());
-    if (options_.method == DgMethod::augmented_lagrangian) {
-      for (int q = 0; q < 2; ++q)
-        local -=
-            rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() * lambda_[2 * i + q];
-    } else {
-      Eigen::VectorXd uf(dofs.size());
-      for (std::size_t k = 0; k < dofs.size(); ++k) uf[k] = u[dofs[k]];
-      const Eigen::Vector2d traction = ops_.mean_traction(f) * uf;  // {sigma_mean(u^i)} n
-      local += f.length * ops_.mean_jump(f).transpose() * traction;
-    }
+    for (int q = 0; q < 2; ++q)
+      local -=
+          rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() * lambda_[2 * i + q];
     for (std::size_t k = 0; k < dofs.size(); ++k) g[dofs[k]] += local[k];
   }
   return constraints_->restrict(g);
 }
 
+/// int {sigma(u)} n.[v] as a matrix on all DOFs, with the two-point rule (exact for the fan and
+/// mean stresses, which are constant along the edge).
+void DgElasticity::build_consistency() {
+  const SegmentRule& rule = gauss2_segment();
+  const TractionKind kind = interface_traction(options_);
+  std::vector<Eigen::Triplet<double>> triplets;
+  const auto& faces = space_.interfaces();
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const Interface& f = faces[i];
+    const std::vector<int> dofs = ops_.dofs(f);
+    Eigen::MatrixXd local = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
+    for (int q = 0; q < 2; ++q)
+      local += rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() *
+               ops_.traction(f, rule.t[q], kind, penalty_->weights(i));
+    for (std::size_t j = 0; j < dofs.size(); ++j)
+      for (std::size_t r = 0; r < dofs.size(); ++r)
+        triplets.emplace_back(dofs[r], dofs[j], local(r, j));
+  }
+  consistency_.resize(num_dofs(), num_dofs());
+  consistency_.setFromTriplets(triplets.begin(), triplets.end());
+}
+
 void DgElasticity::solve() {
   Stopwatch clock;
-  const double eps_avg = options_.kp * integrator_.material().E() / table_.mesh().h_avg();
-  report_.penalty = eps_avg;
+  report_.penalty = median_penalty();
   const bool symmetric = !(options_.method == DgMethod::sipg && options_.sipg_sign > 0);
   SparseCholesky cholesky;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
@@ -165,9 +196,10 @@ void DgElasticity::solve() {
       // Symmetric interior penalty is coercive only above a penalty threshold, which the large
       // one-sided gradients of RK shape functions at short edges push up.
       throw NumericalError(
-          "dg-sipg: the matrix is not positive definite at k_p = " + fmt(options_.kp) +
-          " E: the penalty is below the coercivity threshold of the interface "
-          "terms on this mesh (raise --kp, or use --sipg-mean-stress)");
+          "dg-sipg: the matrix is not positive definite at k_p = " +
+          fmt(penalty_multiplier(options_)) +
+          ": the penalty is below the coercivity threshold of the interface terms on this mesh "
+          "(use --penalty auto with --kp 1 or more, or raise --kp)");
     }
     seconds_["analysis"] = factorization_.seconds_analyze;
     seconds_["factorization"] = factorization_.seconds_factorize;
@@ -204,8 +236,9 @@ void DgElasticity::solve() {
         const std::vector<int> dofs = ops_.dofs(faces[i]);
         Eigen::VectorXd uf(dofs.size());
         for (std::size_t k = 0; k < dofs.size(); ++k) uf[k] = u_[dofs[k]];
-        const double step =
-            options_.al_update_kp ? options_.kp * integrator_.material().E() : penalty(faces[i]);
+        const double step = options_.al_update_kp
+                                ? penalty_multiplier(options_) * integrator_.material().E()
+                                : penalty_->eps(i);
         for (int q = 0; q < 2; ++q)
           lambda_[2 * i + q] += step * (ops_.jump(faces[i], rule.t[q]) * uf);
       }
@@ -230,6 +263,14 @@ void DgElasticity::solve() {
   seconds_["solve"] = clock.seconds();
   report_.seconds_per_iteration = clock.seconds() / report_.iterations;
   measure_gap();
+}
+
+double DgElasticity::median_penalty() const {
+  std::vector<double> eps;
+  for (std::size_t i = 0; i < space_.interfaces().size(); ++i) eps.push_back(penalty_->eps(i));
+  if (eps.empty()) return 0.0;
+  std::nth_element(eps.begin(), eps.begin() + eps.size() / 2, eps.end());
+  return eps[eps.size() / 2];
 }
 
 void DgElasticity::measure_gap() {

@@ -2,16 +2,19 @@
 // Discontinuous Galerkin elasticity on disconnected RK polygons (report section 9; sign
 // conventions and multiplier placement: docs/design.md "Discontinuous Galerkin"). The bulk term
 // is the shared cell-stiffness kernel, unchanged; the formulations differ in their interface
-// terms (eps = k_p E f(h), f(h) = 1/h, [u] = u_1 - u_2, n outward from cell 1):
+// terms (eps per interface from InterfacePenalty, [u] = u_1 - u_2, n outward from cell 1, {.} the
+// interface average, weighted or plain):
 //   penalty:    a(u,v) + eps int [u].[v] = l(v)                                  (one solve)
 //   al:         a(u,v) + int lambda.[v] + eps int [u].[v] = l(v),
 //               lambda <- lambda + eps [u] at the interface quadrature points     (Eqs. 24-26)
-//   nitsche:    a(u,v) + eps int [u].[v] = l(v) + int {sigma_mean(u^i)} n . [v]  (Eqs. 27-29)
+//   nitsche:    a(u,v) + eps int [u].[v] = l(v) + int {sigma(u^i)} n . [v]  (Eqs. 27-29)
 //   sipg:       a(u,v) - int {sigma(u)}n.[v] + s int {sigma(v)}n.[u] + eps int [u].[v] = l(v),
 //               s = -1 symmetric (SIPG), +1 non-symmetric (NIPG), as MFEM's ex17 (one solve)
+// Each cell's stress on an interface is its point, fan or mean stress (TractionKind).
 // The iterative schemes factor a + eps P once and back-solve per iteration.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -22,6 +25,7 @@
 #include "core/util/Stopwatch.hpp"
 #include "dg/DgSpace.hpp"
 #include "dg/InterfaceOperators.hpp"
+#include "dg/InterfacePenalty.hpp"
 
 namespace vorodg {
 
@@ -32,15 +36,26 @@ DgMethod parse_dg_method(const std::string& formulation);
 
 struct DgOptions {
   DgMethod method = DgMethod::nitsche;
-  double kp = 1e3;           // penalty relative to E: eps = kp * E / h
-  bool local_h = false;      // h per interface, (area_1 + area_2) / (2 length), not h_avg
-  double tolerance = 1e-10;  // relative change of u between iterations
+  // Unset: the method's default (penalty_scaling(), penalty_multiplier()).
+  std::optional<PenaltyScaling> penalty;
+  std::optional<double> kp;       // multiplier of the scaling: k_p E / h, or k_p eta_F
+  bool weighted_average = false;  // coercive: average weighted by the cells' trace constants
+  double tolerance = 1e-10;       // relative change of u between iterations
   int max_iterations = 500;
-  bool al_update_kp = false;      // the report's Eq. 26: lambda <- lambda + kp E [u] (no 1/h)
-  bool sipg_mean_stress = false;  // sipg with each cell's mean stress instead of its own
-  int sipg_sign = -1;             // -1 symmetric, +1 non-symmetric
+  bool al_update_kp = false;  // the report's Eq. 26: lambda <- lambda + kp E [u] (no 1/h)
+  std::optional<TractionKind> traction;              // unset: fan for dg-sipg, mean for the others
+  int sipg_sign = -1;                                // -1 symmetric, +1 non-symmetric
   FillOrdering ordering = FillOrdering::node_metis;  // of the sparse Cholesky factor
 };
+
+/// The scaling in effect: the option, else coercive for dg-sipg (a symmetric interior penalty is
+/// only coercive above a mesh-dependent threshold) and h-avg for the others (the report's).
+PenaltyScaling penalty_scaling(const DgOptions& options);
+/// k_p in effect: the option, else 1 for the coercive scaling (the proven bound), 1e3 otherwise.
+double penalty_multiplier(const DgOptions& options);
+/// The stress the interface terms take from each cell: the option, else fan for dg-sipg (own
+/// stress whose trace constant stays bounded at short edges) and mean for the others (Eq. 29).
+TractionKind interface_traction(const DgOptions& options);
 
 struct DgReport {
   int iterations = 0;
@@ -48,7 +63,7 @@ struct DgReport {
   double last_change = 0.0;   // relative change of the last iteration
   double gap_norm = 0.0;      // (int_interfaces |[u]|^2)^1/2
   double relative_gap = 0.0;  // gap_norm / (int_interfaces |{u}|^2)^1/2
-  double penalty = 0.0;       // eps on an interface of size h_avg
+  double penalty = 0.0;       // eps on an interface of size h_avg (median eps if coercive)
   double seconds_per_iteration = 0.0;
 };
 
@@ -72,13 +87,18 @@ class DgElasticity {
   int num_dofs() const { return space_.num_dofs(); }
   int num_free_dofs() const { return constraints_ ? constraints_->num_free() : 0; }
   const FactorizationReport& factorization() const { return factorization_; }
+  /// The assembled matrix on the free DOFs (after assemble_system()).
+  const Eigen::SparseMatrix<double>& system_matrix() const { return A_; }
   const DgReport& report() const { return report_; }
+  /// The interface penalties and weights (after assemble_system()).
+  const InterfacePenalty& penalty() const { return *penalty_; }
   const StageTimes& seconds() const { return seconds_; }
 
  private:
-  double penalty(const Interface& f) const;
   Eigen::VectorXd interface_load(const Eigen::VectorXd& u);
+  void build_consistency();
   void measure_gap();
+  double median_penalty() const;
 
   const ElementTable& table_;
   const ElasticityIntegrator& integrator_;
@@ -87,12 +107,14 @@ class DgElasticity {
   int threads_;
   DgSpace space_;
   InterfaceOperators ops_;
+  std::unique_ptr<InterfacePenalty> penalty_;
 
   std::optional<DirichletConstraints> constraints_;
   Eigen::VectorXd load_, u_;
-  Eigen::SparseMatrix<double> A_;        // free-free block (full)
-  Eigen::SparseMatrix<double> A_fixed_;  // free rows, prescribed columns
-  std::vector<Eigen::Vector2d> lambda_;  // al: multiplier per interface quadrature point
+  Eigen::SparseMatrix<double> A_;            // free-free block (full)
+  Eigen::SparseMatrix<double> A_fixed_;      // free rows, prescribed columns
+  std::vector<Eigen::Vector2d> lambda_;      // al: multiplier per interface quadrature point
+  Eigen::SparseMatrix<double> consistency_;  // nitsche: int {sigma(u)} n.[v] on all DOFs
   FactorizationReport factorization_;
   DgReport report_;
   StageTimes seconds_;

@@ -16,6 +16,7 @@ struct Interface {
   int cell[2];             // cell 1 (edge.cell0) and cell 2
   int dof_v0[2];           // first DOF (x) of vertex v0's copy in each cell
   int dof_v1[2];           // first DOF (x) of vertex v1's copy in each cell
+  int local_edge[2];       // the edge's index in each cell (edge k runs from vertex k to k + 1)
   Eigen::Vector2d a, b;    // end points v0 and v1
   Eigen::Vector2d normal;  // outward from cell 1
   double length;
@@ -32,11 +33,14 @@ class DgSpace {
   int cell_offset(int c) const { return offsets_[c]; }
   int cell_dof_count(int c) const { return offsets_[c + 1] - offsets_[c]; }
   const std::vector<Interface>& interfaces() const { return interfaces_; }
+  /// Interfaces (interior edges) of cell c: the faces its interior-penalty terms live on.
+  int interface_count(int c) const { return interface_count_[c]; }
 
  private:
   const PolygonMesh& mesh_;
   std::vector<int> offsets_;
   std::vector<Interface> interfaces_;
+  std::vector<int> interface_count_;
 };
 
 }  // namespace vorodg

@@ -45,37 +45,71 @@ Eigen::Matrix<double, 2, 3> InterfaceOperators::traction_map(const Eigen::Vector
   return N;
 }
 
-InterfaceOperator InterfaceOperators::mean_traction(const Interface& f) const {
-  const int m1 = space_.cell_dof_count(f.cell[0]), m2 = space_.cell_dof_count(f.cell[1]);
-  InterfaceOperator T(2, m1 + m2);
-  const auto N = traction_map(f.normal);
-  T.leftCols(m1) = 0.5 * N * mean_stress_[f.cell[0]];
-  T.rightCols(m2) = 0.5 * N * mean_stress_[f.cell[1]];
-  return T;
+StressOperator InterfaceOperators::point_stress(int c, int k, double along) const {
+  const int n = space_.mesh().cell_size(c);
+  double psi[64];
+  Eigen::Vector2d grad[64];
+  // Barycentric (centroid, v_k, v_k+1) = (0, 1 - along, along): the fan triangle's outer edge.
+  table_.evaluate(c, FanPoint{k, Eigen::Vector3d(0.0, 1.0 - along, along)}, psi, grad);
+  StrainOperator B;
+  strain_operator(grad, n, B);
+  return integrator_.material().D() * B;
 }
 
-InterfaceOperator InterfaceOperators::point_traction(const Interface& f, double t) const {
+StressOperator InterfaceOperators::fan_stress(int c, int k) const {
+  // The same strain operators (and weights) as the cell's stiffness, on fan triangle k only.
+  StrainOperator B, sum = StrainOperator::Zero(3, 2 * space_.mesh().cell_size(c));
+  double area = 0.0;
+  for (int q = 0; q < table_.num_points(c); ++q) {
+    if (table_.fan_point(c, q).fan != k) continue;
+    integrator_.strain_operator(c, q, B);
+    sum += table_.weight(c, q) * B;
+    area += table_.weight(c, q);
+  }
+  return integrator_.material().D() * (sum / area);
+}
+
+std::vector<StressOperator> InterfaceOperators::fan_stresses(int c) const {
+  const int n = space_.mesh().cell_size(c);
+  std::vector<StressOperator> sums(n, StressOperator::Zero(3, 2 * n));
+  std::vector<double> areas(n, 0.0);
+  StrainOperator B;
+  for (int q = 0; q < table_.num_points(c); ++q) {
+    const int k = table_.fan_point(c, q).fan;
+    integrator_.strain_operator(c, q, B);
+    sums[k] += table_.weight(c, q) * B;
+    areas[k] += table_.weight(c, q);
+  }
+  for (int k = 0; k < n; ++k) sums[k] = integrator_.material().D() * (sums[k] / areas[k]);
+  return sums;
+}
+
+StressOperator InterfaceOperators::edge_stress(int c, int k, double along,
+                                               TractionKind kind) const {
+  switch (kind) {
+    case TractionKind::point: return point_stress(c, k, along);
+    case TractionKind::fan: return fan_stress(c, k);
+    case TractionKind::mean: break;
+  }
+  return mean_stress_[c];
+}
+
+Eigen::Vector2d InterfaceOperators::edge_normal(int c, int k) const {
   const PolygonMesh& mesh = space_.mesh();
+  const auto loop = mesh.cell_vertices(c);
+  const int n = static_cast<int>(loop.size());
+  const Eigen::Vector2d e = mesh.vertex(loop[(k + 1) % n]) - mesh.vertex(loop[k]);
+  return Eigen::Vector2d(e.y(), -e.x()).normalized();  // counter-clockwise loop: outward
+}
+
+InterfaceOperator InterfaceOperators::traction(const Interface& f, double t, TractionKind kind,
+                                               const Eigen::Vector2d& w) const {
   const int m1 = space_.cell_dof_count(f.cell[0]), m2 = space_.cell_dof_count(f.cell[1]);
   InterfaceOperator T(2, m1 + m2);
   const auto N = traction_map(f.normal);
-  const Eigen::Matrix3d& D = integrator_.material().D();
-  const int v0 = mesh.edge(f.edge).v0;
-  for (int s = 0; s < 2; ++s) {
-    const int c = f.cell[s];
-    const auto loop = mesh.cell_vertices(c);
-    const int n = static_cast<int>(loop.size());
-    // Cell 1 runs the edge v0 -> v1 (fan of v0), cell 2 runs it v1 -> v0 (fan of v1).
-    const int k0 = static_cast<int>(std::find(loop.begin(), loop.end(), v0) - loop.begin());
-    const int fan = s == 0 ? k0 : (k0 + n - 1) % n;
-    const double along = s == 0 ? t : 1.0 - t;
-    double psi[64];
-    Eigen::Vector2d grad[64];
-    table_.evaluate(c, FanPoint{fan, Eigen::Vector3d(0.0, 1.0 - along, along)}, psi, grad);
-    StrainOperator B;
-    strain_operator(grad, n, B);
-    (s == 0 ? T.leftCols(m1) : T.rightCols(m2)) = 0.5 * N * D * B;
-  }
+  // Cell 2 runs the edge the other way: its point t lies a fraction 1 - t along its edge.
+  T.leftCols(m1) = w[0] * N * edge_stress(f.cell[0], f.local_edge[0], t, kind);
+  T.rightCols(m2) = w[1] * N * edge_stress(f.cell[1], f.local_edge[1], 1.0 - t, kind);
   return T;
 }
 

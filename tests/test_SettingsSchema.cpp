@@ -35,7 +35,16 @@ TEST(SettingsSchema, KeysAndFlagsAreUnique) {
 TEST(SettingsSchema, DefaultsAreTheDefaultSettingsAndValid) {
   EXPECT_FALSE(check_settings(SolveSettings{}).has_value());
   EXPECT_EQ(default_text(setting_spec("nu")), "0.3");
-  EXPECT_EQ(default_text(setting_spec("kp")), "1000");
+  EXPECT_EQ(default_text(setting_spec("kp")), "1 with penalty auto, else 1000");
+  SolveSettings sipg, nitsche;
+  sipg.formulation = "dg-sipg";
+  nitsche.formulation = "dg-nitsche";
+  EXPECT_EQ(value_text(setting_spec("kp"), sipg), "1");
+  EXPECT_EQ(value_text(setting_spec("penalty"), sipg), "auto");
+  EXPECT_EQ(value_text(setting_spec("traction"), sipg), "fan");
+  EXPECT_EQ(value_text(setting_spec("kp"), nitsche), "1000");
+  EXPECT_EQ(value_text(setting_spec("penalty"), nitsche), "h-avg");
+  EXPECT_EQ(value_text(setting_spec("traction"), nitsche), "mean");
   EXPECT_EQ(default_text(setting_spec("correction")), "true");
   EXPECT_EQ(default_text(setting_spec("name")), "cg");
   EXPECT_EQ(default_text(setting_spec("plane")), "stress");

@@ -65,9 +65,16 @@ void collect(const Formulation& formulation, const PolygonMesh& mesh, SolveResul
 
 }  // namespace
 
+DgOptions dg_options(const SolveSettings& settings) {
+  DgOptions options = settings.dg;
+  options.method =
+      settings.formulation == "cg" ? DgMethod::penalty : parse_dg_method(settings.formulation);
+  options.ordering = settings.ordering;
+  return options;
+}
+
 SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   const bool cg = settings.formulation == "cg";
-  const DgMethod method = cg ? DgMethod::penalty : parse_dg_method(settings.formulation);
   SolveResult result;
   const auto problem = make_problem(settings, mesh.domain());
   Stopwatch clock;
@@ -96,10 +103,8 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
     collect(formulation, mesh, result);
     result.edge_gaps.assign(mesh.num_edges(), 0.0);
   } else {
-    DgOptions options = settings.dg;
-    options.method = method;
-    options.ordering = settings.ordering;
-    DgElasticity formulation(table, integrator, *problem, options, settings.element.threads);
+    DgElasticity formulation(table, integrator, *problem, dg_options(settings),
+                             settings.element.threads);
     formulation.run();
     clock.restart();
     mean_strain = integrator.all_mean_strain_operators(settings.element.threads);

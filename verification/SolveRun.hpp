@@ -28,8 +28,12 @@ struct SolveSettings {
   ElementOptions element;  // rule, correction, weight refinement/degree, threads
   FillOrdering ordering = FillOrdering::node_metis;  // the sparse Cholesky factor's ordering
   bool energy_error = true;
-  DgOptions dg;  // k_p (relative to E), local h, tolerance, iterations, variants
+  DgOptions dg;  // penalty scaling and k_p, tolerance, iterations, variants
 };
+
+/// The DG options of a DG formulation's settings (method and ordering filled in); for cg, those
+/// of dg-penalty, so that the DG settings still read back.
+DgOptions dg_options(const SolveSettings& settings);
 
 struct SolveResult {
   int dofs = 0, free_dofs = 0;

@@ -7,19 +7,26 @@
 #include <cmath>
 
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "dg/TraceConstants.hpp"
 #include "verification/SolveRun.hpp"
 
 namespace {
 
 using namespace vorodg;
 
-void BM_DgIteration(benchmark::State& state) {
+/// The rcp beam mesh of about `cells` cells (seed 5).
+GeneratedMesh rcp_beam_mesh(std::int64_t cells) {
   MeshSpec spec;
   spec.family = MeshFamily::rcp;
   spec.domain = Rectangle(0.0, -0.5, 4.0, 0.5);
-  spec.size = std::sqrt(0.7 * spec.domain.area() / static_cast<double>(state.range(0)));
+  spec.size = std::sqrt(0.7 * spec.domain.area() / static_cast<double>(cells));
   spec.seed = 5;
-  const GeneratedMesh mesh = generate_mesh(spec);
+  return generate_mesh(spec);
+}
+
+void BM_DgIteration(benchmark::State& state) {
+  const GeneratedMesh mesh = rcp_beam_mesh(state.range(0));
   SolveSettings settings;
   settings.formulation = state.range(1) == 0 ? "dg-nitsche" : "dg-al";
   settings.dg.kp = 1e3;
@@ -39,7 +46,45 @@ void BM_DgIteration(benchmark::State& state) {
       r.dg->seconds_per_iteration / r.seconds["factorization"];
 }
 
+/// The coercive penalty's per-cell eigenproblems against the element table's setup, on the
+/// same rcp mesh with one thread: range(1) = 0 fan stresses (the dg-sipg default), 1 point
+/// stresses, 2 mean stresses. Target: <= 15% of the element setup at 1e5 cells.
+void BM_TraceConstants(benchmark::State& state) {
+  const GeneratedMesh mesh = rcp_beam_mesh(state.range(0));
+  Stopwatch clock;
+  const ElementTable table(mesh.mesh, ElementOptions{});
+  const double element_seconds = clock.seconds();
+  const IsotropicElasticity material(1.0, 0.3, PlaneModel::stress);
+  const ElasticityIntegrator integrator(table, material, false);
+  const auto stiffness = integrator.all_cell_matrices(1);
+  const DgSpace space(mesh.mesh);
+  const InterfaceOperators ops(space, integrator, table);
+  const TractionKind kind = state.range(1) == 0   ? TractionKind::fan
+                            : state.range(1) == 1 ? TractionKind::point
+                                                  : TractionKind::mean;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    clock.restart();
+    const TraceConstants constants(ops, stiffness, kind, 1);
+    seconds = clock.seconds();
+    benchmark::DoNotOptimize(constants.constant(0, 0));
+  }
+  state.counters["cells"] = mesh.mesh.num_cells();
+  state.counters["element_setup"] = element_seconds;
+  state.counters["trace_constants"] = seconds;
+  state.counters["over_element_setup"] = seconds / element_seconds;
+}
+
 }  // namespace
+
+BENCHMARK(BM_TraceConstants)
+    ->Args({100000, 0})
+    ->Args({100000, 1})
+    ->Args({100000, 2})
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 BENCHMARK(BM_DgIteration)
     ->Args({1000, 0})

@@ -105,7 +105,8 @@ MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given) {
   return spec;
 }
 
-void echo_options(const std::string& prefix, const CLI::App& command) {
+void echo_options(const std::string& prefix, const CLI::App& command,
+                  const std::map<std::string, std::string>& resolved) {
   std::ostringstream os;
   os << prefix;
   for (const CLI::Option* opt : command.get_options()) {
@@ -118,7 +119,10 @@ void echo_options(const std::string& prefix, const CLI::App& command) {
       if (opt->count()) os << " " << opt->get_name();
       continue;
     }
-    const std::string value = opt->count() ? opt->as<std::string>() : opt->get_default_str();
+    const auto given = resolved.find(opt->get_name());
+    const std::string value = opt->count()              ? opt->as<std::string>()
+                              : given != resolved.end() ? given->second
+                                                        : opt->get_default_str();
     if (value.empty()) continue;
     os << " " << opt->get_name() << " " << value;
   }

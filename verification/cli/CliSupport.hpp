@@ -4,6 +4,7 @@
 // output folders exist before any work starts.
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "core/io/VtuMesh.hpp"
@@ -45,7 +46,8 @@ void add_mesh_source_options(CLI::App& command, MeshSourceOptions& o);
 MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given);
 
 /// Prints "# <prefix> --option value ..." with every option's value or default.
-void echo_options(const std::string& prefix, const CLI::App& command);
+void echo_options(const std::string& prefix, const CLI::App& command,
+                  const std::map<std::string, std::string>& resolved = {});
 /// Throws InputError if the folder of `path` is not an existing folder (nothing to do for an
 /// empty path).
 void check_output_folder(const std::string& path, const char* option);

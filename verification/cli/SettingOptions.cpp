@@ -49,4 +49,12 @@ SolveSettings checked_settings(const SettingOptions& o) {
   return settings;
 }
 
+std::map<std::string, std::string> resolved_defaults(const SolveSettings& settings) {
+  std::map<std::string, std::string> out;
+  for (const SettingSpec& spec : setting_specs())
+    if (!spec.default_doc.empty() && !spec.flag.empty())
+      out[spec.flag] = value_text(spec, settings);
+  return out;
+}
+
 }  // namespace vorodg

@@ -19,5 +19,8 @@ struct SettingOptions {
 void add_setting_options(CLI::App& command, SettingOptions& options);
 /// The settings the options describe; throws InputError naming the first bad option.
 SolveSettings checked_settings(const SettingOptions& options);
+/// The values, by flag, of the settings whose default depends on others (the penalty scaling
+/// and k_p depend on the formulation): what an echoed command line must state to be reproduced.
+std::map<std::string, std::string> resolved_defaults(const SolveSettings& settings);
 
 }  // namespace vorodg

@@ -9,6 +9,7 @@
 #include "core/util/Format.hpp"
 #include "verification/cli/JsonOutput.hpp"
 #include "verification/cli/ResultFile.hpp"
+#include "verification/model/Choices.hpp"
 #include "verification/model/RunRecord.hpp"
 
 namespace vorodg {
@@ -30,7 +31,9 @@ void print_summary(const SolveSettings& settings, const MeshSpec& spec, const Ru
             << " cells, " << m.dofs << " dofs, h_avg " << m.h_avg << ", L2 error " << m.l2_error
             << ", energy error " << m.energy_error << ", rcond " << m.rcond << "\n";
   if (m.dg)
-    std::cout << settings.formulation << ": k_p " << settings.dg.kp << ", " << m.dg->iterations
+    std::cout << settings.formulation << ": penalty "
+              << penalty_name(penalty_scaling(dg_options(settings))) << ", k_p "
+              << penalty_multiplier(dg_options(settings)) << ", " << m.dg->iterations
               << " iterations, " << m.dg->stop_reason << ", relative gap " << m.dg->relative_gap
               << ", " << m.dg->seconds_per_iteration << " s per iteration\n";
   std::cout << "seconds:";
@@ -64,7 +67,7 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   check_output_folder(o.metrics, "--metrics");
   Stopwatch clock;
   const MeshSpec spec = mesh_spec(o.mesh, command.count("--domain") > 0);
-  echo_options("vorodg solve", command);
+  echo_options("vorodg solve", command, resolved_defaults(settings));
   const GeneratedMesh generated = generate_mesh(spec);
   const PolygonMesh& mesh = generated.mesh;
   const auto validation = validate_mesh(mesh);
@@ -85,7 +88,10 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   json["problem"] = settings.problem;
   json["formulation"] = settings.formulation;
   json["family"] = family_name(spec.family);
-  if (r.dg) json["kp"] = settings.dg.kp;
+  if (r.dg) {
+    json["kp"] = penalty_multiplier(dg_options(settings));
+    json["penalty_scaling"] = penalty_name(penalty_scaling(dg_options(settings)));
+  }
   json["blas"] = blas_description();
   if (!o.metrics.empty()) write_json(o.metrics, json);
   if (!o.output.path.empty())

@@ -84,6 +84,25 @@ strain  plane strain
   return choices;
 }
 
+const Choices& penalty_choices() {
+  static const Choices choices = table(R"(
+h-avg    eps = k_p E / h_avg (the report's f(h) = 1/h)
+local-h  eps = k_p E / h_F, h_F = (|K_1| + |K_2|) / (2 |F|) per interface
+fixed-h  eps = k_p E / H, H the domain's shorter side (not refined with the mesh)
+auto     eps = k_p times the proven coercive bound from the cells' trace constants
+)");
+  return choices;
+}
+
+const Choices& traction_choices() {
+  static const Choices choices = table(R"(
+point  each cell's own stress at the edge points (one-sided limits of the gradients)
+fan    each cell's own stress averaged over its fan triangle on the edge
+mean   each cell's mean stress (the report's Eq. 29)
+)");
+  return choices;
+}
+
 const Choices& study_choices() {
   static const Choices choices = table(R"(
 convergence    errors and rates over levels and realizations
@@ -142,6 +161,9 @@ namespace {
 constexpr FillOrdering kOrderings[] = {FillOrdering::node_metis, FillOrdering::node_amd,
                                        FillOrdering::amd, FillOrdering::cholmod_default};
 constexpr PlaneModel kPlanes[] = {PlaneModel::stress, PlaneModel::strain};
+constexpr PenaltyScaling kPenalties[] = {PenaltyScaling::h_avg, PenaltyScaling::local_h,
+                                         PenaltyScaling::fixed_h, PenaltyScaling::coercive};
+constexpr TractionKind kTractions[] = {TractionKind::point, TractionKind::fan, TractionKind::mean};
 
 /// The enum value of a name: `values` lists the enum values in the order of `choices`.
 template <class Enum, std::size_t N>
@@ -171,6 +193,18 @@ PlaneModel parse_plane(const std::string& name) {
 }
 std::string plane_name(PlaneModel plane) {
   return enum_name(plane_choices(), kPlanes, plane);
+}
+PenaltyScaling parse_penalty(const std::string& name) {
+  return parse_enum(penalty_choices(), kPenalties, name);
+}
+std::string penalty_name(PenaltyScaling scaling) {
+  return enum_name(penalty_choices(), kPenalties, scaling);
+}
+TractionKind parse_traction(const std::string& name) {
+  return parse_enum(traction_choices(), kTractions, name);
+}
+std::string traction_name(TractionKind kind) {
+  return enum_name(traction_choices(), kTractions, kind);
 }
 
 }  // namespace vorodg

@@ -7,6 +7,7 @@
 
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/solve/SparseCholesky.hpp"
+#include "dg/InterfacePenalty.hpp"
 
 namespace vorodg {
 
@@ -21,6 +22,8 @@ const Choices& formulation_choices();
 const Choices& generated_family_choices();  // the families a scene or `--family` can generate
 const Choices& ordering_choices();
 const Choices& plane_choices();
+const Choices& penalty_choices();   // how the DG penalty is scaled
+const Choices& traction_choices();  // which stress of a cell the DG interface terms take
 const Choices& study_choices();
 const Choices& sweep_axis_choices();  // what an extremes sweep varies
 const Choices& baseline_choices();    // what an extremes sweep compares errors with
@@ -35,5 +38,9 @@ FillOrdering parse_ordering(const std::string& name);
 std::string ordering_name(FillOrdering ordering);
 PlaneModel parse_plane(const std::string& name);
 std::string plane_name(PlaneModel plane);
+PenaltyScaling parse_penalty(const std::string& name);
+std::string penalty_name(PenaltyScaling scaling);
+TractionKind parse_traction(const std::string& name);
+std::string traction_name(TractionKind kind);
 
 }  // namespace vorodg

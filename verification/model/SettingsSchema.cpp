@@ -70,6 +70,40 @@ SettingRange one_of(std::vector<int> allowed) {
   return {std::nullopt, std::nullopt, true, true, allowed};
 }
 
+/// The DG penalty's scaling: unset means the formulation's default (dg/DgElasticity.hpp).
+SettingSpec penalty_choice() {
+  SettingSpec spec = choice(
+      "penalty", "--penalty", "DG: how the penalty eps is scaled on each interface",
+      SettingScope::formulation, penalty_choices(),
+      [](const S& s) { return penalty_name(penalty_scaling(dg_options(s))); },
+      [](S& s, const std::string& v) { s.dg.penalty = parse_penalty(v); });
+  spec.default_doc = "auto for dg-sipg, else h-avg";
+  return spec;
+}
+
+/// Which stress of each cell the interface terms take: unset means the formulation's default.
+SettingSpec traction_choice() {
+  SettingSpec spec = choice(
+      "traction", "--traction", "DG: each cell's stress on an interface", SettingScope::formulation,
+      traction_choices(),
+      [](const S& s) { return traction_name(interface_traction(dg_options(s))); },
+      [](S& s, const std::string& v) { s.dg.traction = parse_traction(v); });
+  spec.default_doc = "fan for dg-sipg, else mean";
+  return spec;
+}
+
+/// k_p multiplies the scaling: E / h (h-avg, local-h, fixed-h) or the coercive bound (auto).
+SettingSpec kp_number() {
+  SettingSpec spec = base("kp", "--kp", "k_p",
+                          "DG penalty multiplier: eps = k_p E / h, or k_p times the proven "
+                          "coercive bound with penalty auto",
+                          SettingKind::number, SettingScope::formulation, above(0));
+  spec.get = [](const S& s) { return penalty_multiplier(dg_options(s)); };
+  spec.set = [](S& s, double v) { s.dg.kp = v; };
+  spec.default_doc = "1 with penalty auto, else 1000";
+  return spec;
+}
+
 std::vector<SettingSpec> make_specs() {
   using Scope = SettingScope;
   const std::vector<int> rules(kFanRulePoints.begin(), kFanRulePoints.end());
@@ -106,10 +140,11 @@ std::vector<SettingSpec> make_specs() {
       integer("degree", "--degree", "degree", "weight functions: P1 or P2 on the sub-triangles",
               Scope::formulation, one_of(degrees),
               [](S& s) -> int& { return s.element.weights.degree; }),
-      number("kp", "--kp", "k_p", "DG penalty relative to E: eps = k_p E / h", Scope::formulation,
-             above(0), [](S& s) -> double& { return s.dg.kp; }),
-      flag("local_h", "--local-h", "DG: h per interface instead of h_avg", Scope::formulation,
-           [](S& s) -> bool& { return s.dg.local_h; }),
+      penalty_choice(),
+      kp_number(),
+      flag("weighted_average", "--weighted-average",
+           "DG, penalty auto: interface average weighted by the cells' trace constants",
+           Scope::formulation, [](S& s) -> bool& { return s.dg.weighted_average; }),
       number("tolerance", "--tol", "tolerance", "DG iterations: relative change to stop at",
              Scope::formulation, above(0), [](S& s) -> double& { return s.dg.tolerance; }),
       integer("max_iterations", "--max-iter", "max_iterations", "DG iterations: at most this many",
@@ -117,9 +152,7 @@ std::vector<SettingSpec> make_specs() {
       flag("al_update_kp", "--al-update-kp",
            "dg-al: update lambda with k_p E [u] (the report's Eq. 26) instead of eps [u]",
            Scope::formulation, [](S& s) -> bool& { return s.dg.al_update_kp; }),
-      flag("sipg_mean_stress", "--sipg-mean-stress",
-           "dg-sipg: each cell's mean stress instead of its own stress on the edge",
-           Scope::formulation, [](S& s) -> bool& { return s.dg.sipg_mean_stress; }),
+      traction_choice(),
       integer("sipg_sign", "--sipg-sign", "sipg_sign", "dg-sipg: -1 symmetric, +1 non-symmetric",
               Scope::formulation, one_of({-1, 1}), [](S& s) -> int& { return s.dg.sipg_sign; }),
       flag("energy_error", "", "compute the energy norm of the error too", Scope::outputs,
@@ -166,6 +199,7 @@ std::string value_text(const SettingSpec& spec, const SolveSettings& settings) {
 }
 
 std::string default_text(const SettingSpec& spec) {
+  if (!spec.default_doc.empty()) return spec.default_doc;
   return value_text(spec, SolveSettings{});
 }
 

@@ -35,6 +35,7 @@ struct SettingSpec {
   SettingRange range;
   const Choices* choices = nullptr;  // choice settings
   bool flag_negates = false;         // the flag sets the value to false (--no-correction)
+  std::string default_doc;  // a default that depends on other settings, in words; empty: read it
   // Numbers, integers and flags (0 or 1) travel as double; choices as their name.
   std::function<double(const SolveSettings&)> get;
   std::function<void(SolveSettings&, double)> set;
@@ -51,7 +52,7 @@ const SettingSpec& setting_spec(const std::string& key);
 std::string exact_text(double x);
 /// The setting's value in `settings` as text: numbers exact, flags true/false, choices by name.
 std::string value_text(const SettingSpec& spec, const SolveSettings& settings);
-/// The default, as text.
+/// The default, as text (the words of default_doc where the default depends on the formulation).
 std::string default_text(const SettingSpec& spec);
 /// What the range requires, for messages and docs: "-1 < nu < 0.5", "1, 3 or 6", "stress or
 /// strain".

@@ -100,7 +100,7 @@ SceneFormulation read_formulation(SceneObject& f, const SolveSettings& material)
   read_scope(f, SettingScope::formulation, s);
   const SettingSpec& kp = setting_spec("kp");
   if (s.formulation != "cg") {
-    out.kp = f.numbers(kp.key, {kp.get(SolveSettings{})});
+    out.kp = f.numbers(kp.key, {kp.get(s)});
     for (double k : out.kp)
       if (const auto message = check_value(kp, k)) f.fail_value(kp.key, *message);
   } else if (f.has(kp.key)) {

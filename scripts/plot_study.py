@@ -37,6 +37,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plotting_common import (  # noqa: E402
     InputError, label_minor_ticks, light_grid, plt, save_atomically)
+from penalty_edges_plot import plot_penalty_edges  # noqa: E402
 from study_plots import MARKERS, log_limits, plot_cdf, plot_penalty, title  # noqa: E402
 from study_summary import has_mean, is_number, read_summary, usable  # noqa: E402
 from tradeoff_extremes_plots import plot_extremes, plot_tradeoff  # noqa: E402
@@ -173,6 +174,7 @@ def main(argv):
         return 2
     drawn = [plot_convergence(summary, *norm, args.outdir, args.dpi) for norm in NORMS]
     drawn.append(plot_penalty(summary, args.outdir, args.dpi))
+    drawn.append(plot_penalty_edges(args.outdir, args.dpi))
     drawn.append(plot_cdf(summary, args.outdir, args.dpi))
     drawn.append(plot_tradeoff(args.outdir, args.dpi))
     if not any(drawn):

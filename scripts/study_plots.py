@@ -94,7 +94,7 @@ def plot_penalty(summary, outdir, dpi):
                                linewidth=1.2, alpha=0.9)
     ax_err.set_xscale("log")
     ax_err.set_yscale("log")
-    ax_err.set_xlabel("penalty stiffness k_p")
+    ax_err.set_xlabel("penalty multiplier k_p (of E/h_avg; of the coercive bound for auto)")
     ax_err.set_ylabel("mean relative L2 displacement error")
     ax_err.set_title("L2 error against k_p", fontsize=10.5)
     light_grid(ax_err)

@@ -10,7 +10,9 @@
 #include "core/util/Format.hpp"
 #include "verification/cli/JsonOutput.hpp"
 #include "verification/report/ConvergenceTable.hpp"
+#include "verification/study/KpTrendReport.hpp"
 #include "verification/study/PatchSuiteReport.hpp"
+#include "verification/study/PenaltyAnalysis.hpp"
 #include "verification/study/StudySummary.hpp"
 #include "verification/study/TradeoffReport.hpp"
 
@@ -138,34 +140,6 @@ void write_convergence(const StudySummary& summary, const std::filesystem::path&
   write_file_atomically(out / "convergence.csv", csv.str());
 }
 
-/// Rate against k_p, per formulation: the trend the report's Figure 26 claims, stated from our
-/// numbers (a rise must exceed the 95% intervals to count).
-void write_kp_trend(const StudySummary& summary, std::ostringstream& md) {
-  std::map<std::string, std::vector<const GroupSummary*>> by_formulation;
-  for (const GroupSummary& g : summary.groups)
-    if (g.kp && g.rate_l2)
-      by_formulation[g.mesh + " | " + g.problem + " | " + g.label].push_back(&g);
-  for (auto& [base, groups] : by_formulation) {
-    if (groups.size() < 2) continue;
-    std::sort(groups.begin(), groups.end(), [](auto* a, auto* b) { return *a->kp < *b->kp; });
-    md << "L2 rate against k_p for " << base << ":";
-    bool rises = true;
-    for (std::size_t i = 0; i < groups.size(); ++i) {
-      const RateFit& r = groups[i]->rate_l2->fit;
-      md << (i ? ", " : " ") << "k_p " << fmt(*groups[i]->kp) << " -> " << fmt(r.rate, 3);
-      if (i > 0) {
-        const RateFit& q = groups[i - 1]->rate_l2->fit;
-        const double margin = r.ci95.value_or(0.0) + q.ci95.value_or(0.0);
-        rises = rises && r.rate > q.rate + margin;
-      }
-    }
-    md << ". "
-       << (rises ? "The rate rises with k_p."
-                 : "The rate does **not** rise with k_p beyond the 95% intervals.")
-       << "\n\n";
-  }
-}
-
 }  // namespace
 
 StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>& records,
@@ -189,6 +163,7 @@ StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>&
   else
     write_convergence(summary, out, md);
   write_kp_trend(summary, md);
+  if (scene.study == "penalty-sweep") write_penalty_analysis(scene, out, md);
   if (scene.study == "trade-off") write_tradeoff(records, out, md);
   if (published.is_object() && published.contains("trend"))
     md << "Published trend (" << published.value("source", "")
@@ -198,7 +173,7 @@ StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>&
 }
 
 std::vector<std::string> study_pictures() {
-  return {"convergence_l2.png", "convergence_energy.png", "penalty.png",
+  return {"convergence_l2.png", "convergence_energy.png", "penalty.png", "penalty_edges.png",
           "cdf_l2.png",         "tradeoff.png",           "extremes.png"};
 }
 

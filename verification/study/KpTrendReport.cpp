@@ -1,0 +1,104 @@
+#include "verification/study/KpTrendReport.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/util/Format.hpp"
+#include "verification/report/ConvergenceTable.hpp"
+
+namespace vorodg {
+namespace {
+
+struct Reading {
+  std::string mesh, problem, label;
+  std::vector<const GroupSummary*> groups;  // by k_p, increasing
+};
+
+double ci(const RateFit& fit) {
+  return fit.ci95.value_or(0.0);
+}
+
+/// Each rate above the previous one by more than the two intervals.
+bool rises_throughout(const Reading& r) {
+  for (std::size_t i = 1; i < r.groups.size(); ++i) {
+    const RateFit &a = r.groups[i - 1]->rate_l2->fit, &b = r.groups[i]->rate_l2->fit;
+    if (!(b.rate > a.rate + ci(a) + ci(b))) return false;
+  }
+  return true;
+}
+
+/// The rate at the largest k_p above the one at the smallest by more than the two intervals.
+bool rises_overall(const Reading& r) {
+  const RateFit &a = r.groups.front()->rate_l2->fit, &b = r.groups.back()->rate_l2->fit;
+  return b.rate > a.rate + ci(a) + ci(b);
+}
+
+std::string rate_text(const RateFit& fit) {
+  return fmt(fit.rate, 3) + (fit.ci95 ? " ± " + fmt(*fit.ci95, 2) : "");
+}
+
+}  // namespace
+
+void write_kp_trend(const StudySummary& summary, std::ostringstream& md) {
+  std::map<std::string, Reading> readings;
+  std::map<std::string, const GroupSummary*> cg;  // by mesh | problem
+  std::set<double> kps;
+  for (const GroupSummary& g : summary.groups) {
+    if (!g.rate_l2) continue;
+    if (!g.kp) {
+      if (g.formulation == "cg" && g.label == "cg") cg[g.mesh + " | " + g.problem] = &g;
+      continue;
+    }
+    Reading& r = readings[g.mesh + " | " + g.problem + " | " + g.label];
+    r.mesh = g.mesh;
+    r.problem = g.problem;
+    r.label = g.label;
+    r.groups.push_back(&g);
+    kps.insert(*g.kp);
+  }
+  std::erase_if(readings, [](const auto& item) { return item.second.groups.size() < 2; });
+  if (readings.empty()) return;
+  ConvergenceTable table;
+  std::vector<std::string> rising, reaching;
+  for (auto& [name, r] : readings) {
+    std::sort(r.groups.begin(), r.groups.end(), [](auto* a, auto* b) { return *a->kp < *b->kp; });
+    table.start_row();
+    table.add_text("mesh | problem", r.mesh + " | " + r.problem);
+    table.add_text("reading", r.label);
+    for (double kp : kps) {
+      const auto at = std::find_if(r.groups.begin(), r.groups.end(),
+                                   [&](const GroupSummary* g) { return *g->kp == kp; });
+      table.add_text("k_p " + fmt(kp), at == r.groups.end() ? "-" : rate_text((*at)->rate_l2->fit));
+    }
+    const bool throughout = rises_throughout(r), overall = rises_overall(r);
+    table.add_text("rises", throughout ? "at every step" : overall ? "overall" : "no");
+    const auto c = cg.find(r.mesh + " | " + r.problem);
+    std::string reaches = "-";
+    if (c != cg.end()) {
+      const RateFit &last = r.groups.back()->rate_l2->fit, &ref = c->second->rate_l2->fit;
+      const bool near = std::abs(last.rate - ref.rate) <= ci(last) + ci(ref);
+      reaches = (near ? "yes (" : "no (") + fmt(last.rate - ref.rate, 2) + ")";
+      if (overall && near) reaching.push_back(r.label + " (" + r.mesh + ")");
+    }
+    table.add_text("reaches CG's rate at the largest k_p", reaches);
+    if (overall) rising.push_back(r.label + " (" + r.mesh + ")");
+  }
+  auto list = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
+    return out.empty() ? std::string("none") : out;
+  };
+  md << "## L2 rate against k_p\n\n"
+     << "Least-squares L2 rate (95% interval) of each reading at each k_p. `rises`: the rate at "
+        "the largest k_p exceeds the one at the smallest by more than both intervals (`overall`), "
+        "or every step does (`at every step`). The last column compares the rate at the largest "
+        "k_p with CG's on the same meshes (difference in brackets).\n\n";
+  table.write_markdown(md);
+  md << "\nReadings whose rate rises with k_p: " << list(rising)
+     << ". Of them, reaching CG's rate at the largest k_p (the published figure's picture): "
+     << list(reaching) << ".\n\n";
+}
+
+}  // namespace vorodg

@@ -513,3 +513,25 @@ TEST_F(ExtremesRun, VerdictsFollowThePhysicsAndARerunResumes) {
 
 }  // namespace
 }  // namespace vorodg
+
+namespace vorodg {
+namespace {
+
+TEST(SceneLabels, NameThePenaltyAndTractionThatDifferFromTheDefaults) {
+  // Two dg-sipg blocks that differ only in penalty scaling or traction must not share a label
+  // (run ids are built from it); the formulation's own defaults add nothing.
+  const Scene scene = parse_scene(R"({"problems": ["patch"], "meshes": [{"sizes": [0.5]}],
+      "formulations": [{"name": "dg-sipg"}, {"name": "dg-sipg", "penalty": "h-avg"},
+                       {"name": "dg-sipg", "traction": "point", "weighted_average": true},
+                       {"name": "dg-nitsche", "penalty": "auto"}]})",
+                                  "labels");
+  std::vector<std::string> labels;
+  for (const SceneFormulation& f : scene.formulations) labels.push_back(f.label);
+  EXPECT_EQ(labels, (std::vector<std::string>{"dg-sipg", "dg-sipg h-avg",
+                                              "dg-sipg point-stress weighted", "dg-nitsche auto"}));
+  EXPECT_EQ(scene.formulations[0].kp, (std::vector<double>{1.0}));
+  EXPECT_EQ(scene.formulations[1].kp, (std::vector<double>{1000.0}));
+}
+
+}  // namespace
+}  // namespace vorodg

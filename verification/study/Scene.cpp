@@ -90,6 +90,15 @@ std::string default_label(const SolveSettings& s) {
   if (s.mean_dilation) label += " mean-dilation";
   if (s.element.rule_points != SolveSettings{}.element.rule_points)
     label += " rule-" + std::to_string(s.element.rule_points);
+  if (s.formulation == "cg") return label;
+  DgOptions plain;  // the formulation's defaults
+  plain.method = dg_options(s).method;
+  // Appended piece by piece: g++ 12 warns falsely (-Wrestrict) on " " + std::string here.
+  if (penalty_scaling(dg_options(s)) != penalty_scaling(plain))
+    label.append(" ").append(penalty_name(penalty_scaling(dg_options(s))));
+  if (interface_traction(dg_options(s)) != interface_traction(plain))
+    label.append(" ").append(traction_name(interface_traction(dg_options(s)))).append("-stress");
+  if (s.dg.weighted_average) label += " weighted";
   return label;
 }
 

@@ -56,7 +56,12 @@ def plot_penalty(summary, outdir, dpi):
     level_h = level_sizes(summary["groups"])
     rated = [g for g in kp_groups if g["rate_l2"] is not None]
     ncols = 3 if rated else 2
-    fig, axes = plt.subplots(1, ncols, figsize=(5.2 * ncols + 2.6, 5.4), layout="constrained")
+    # Many formulations: their legend goes in a row block under the panels, not beside them.
+    legend_rows = math.ceil((len(formulations) + bool(cg_groups)) / 4) if len(formulations) > 7 else 0
+    fig = plt.figure(figsize=(5.2 * ncols + 2.6, 5.4 + 0.25 * legend_rows), layout="constrained")
+    grid = fig.add_gridspec(2 if legend_rows else 1, ncols,
+                            height_ratios=[5.4, 0.25 * legend_rows + 0.3] if legend_rows else None)
+    axes = [fig.add_subplot(grid[0, i]) for i in range(ncols)]
     ax_err, ax_it = axes[0], axes[1]
 
     def series(f, level, key):
@@ -99,7 +104,7 @@ def plot_penalty(summary, outdir, dpi):
     ax_err.set_title("L2 error against k_p", fontsize=10.5)
     light_grid(ax_err)
     ax_it.set_xscale("log")
-    ax_it.set_xlabel("penalty stiffness k_p")
+    ax_it.set_xlabel("penalty multiplier k_p")
     ax_it.set_ylabel("mean iterations")
     ax_it.set_title("iterations against k_p", fontsize=10.5)
     light_grid(ax_it)
@@ -134,7 +139,7 @@ def plot_penalty(summary, outdir, dpi):
                                  xycoords=("axes fraction", "data"), xytext=(0, 3),
                                  textcoords="offset points", fontsize=8, color="tab:red")
         ax_rate.set_xscale("log")
-        ax_rate.set_xlabel("penalty stiffness k_p")
+        ax_rate.set_xlabel("penalty multiplier k_p")
         ax_rate.set_ylabel("least-squares L2 rate (bars: 95% interval)")
         ax_rate.set_title("L2 rate against k_p", fontsize=10.5)
         light_grid(ax_rate)
@@ -152,8 +157,14 @@ def plot_penalty(summary, outdir, dpi):
     leg1 = last.legend(handles=level_handles, title="colour: level", loc="upper left",
                        bbox_to_anchor=(1.03, 1.0), fontsize=8.5, title_fontsize=9, frameon=False)
     last.add_artist(leg1)
-    last.legend(handles=form_handles, title="line: formulation", loc="lower left",
-                bbox_to_anchor=(1.03, 0.0), fontsize=8.5, title_fontsize=9, frameon=False)
+    if not legend_rows:
+        last.legend(handles=form_handles, title="line: formulation", loc="lower left",
+                    bbox_to_anchor=(1.03, 0.0), fontsize=8.5, title_fontsize=9, frameon=False)
+    else:
+        ax_legend = fig.add_subplot(grid[1, :])
+        ax_legend.axis("off")
+        ax_legend.legend(handles=form_handles, title="line: formulation", loc="center", ncol=4,
+                         fontsize=8.5, title_fontsize=9, frameon=False)
     fig.suptitle(title(summary, "penalty stiffness k_p"), fontsize=11.5)
     save_atomically(fig, os.path.join(outdir, "penalty.png"), dpi)
     return True

@@ -57,31 +57,40 @@ StressOperator InterfaceOperators::point_stress(int c, int k, double along) cons
 }
 
 StressOperator InterfaceOperators::fan_stress(int c, int k) const {
-  // The same strain operators (and weights) as the cell's stiffness, on fan triangle k only.
-  StrainOperator B, sum = StrainOperator::Zero(3, 2 * space_.mesh().cell_size(c));
+  // B is affine in the gradients: their average over fan triangle k gives the average of B.
+  const int n = space_.mesh().cell_size(c);
+  std::vector<Eigen::Vector2d> mean(n, Eigen::Vector2d::Zero());
   double area = 0.0;
   for (int q = 0; q < table_.num_points(c); ++q) {
     if (table_.fan_point(c, q).fan != k) continue;
-    integrator_.strain_operator(c, q, B);
-    sum += table_.weight(c, q) * B;
+    for (int j = 0; j < n; ++j) mean[j] += table_.weight(c, q) * table_.grad(c, q, j);
     area += table_.weight(c, q);
   }
-  return integrator_.material().D() * (sum / area);
+  for (Eigen::Vector2d& g : mean) g /= area;
+  StrainOperator B;
+  integrator_.strain_operator_of(c, mean.data(), B);
+  return integrator_.material().D() * B;
 }
 
 std::vector<StressOperator> InterfaceOperators::fan_stresses(int c) const {
+  // B is affine in the gradients: average the gradients per fan triangle, then build one B each.
   const int n = space_.mesh().cell_size(c);
-  std::vector<StressOperator> sums(n, StressOperator::Zero(3, 2 * n));
+  std::vector<Eigen::Vector2d> mean(n * n, Eigen::Vector2d::Zero());
   std::vector<double> areas(n, 0.0);
-  StrainOperator B;
   for (int q = 0; q < table_.num_points(c); ++q) {
     const int k = table_.fan_point(c, q).fan;
-    integrator_.strain_operator(c, q, B);
-    sums[k] += table_.weight(c, q) * B;
-    areas[k] += table_.weight(c, q);
+    const double w = table_.weight(c, q);
+    for (int j = 0; j < n; ++j) mean[k * n + j] += w * table_.grad(c, q, j);
+    areas[k] += w;
   }
-  for (int k = 0; k < n; ++k) sums[k] = integrator_.material().D() * (sums[k] / areas[k]);
-  return sums;
+  std::vector<StressOperator> out(n);
+  StrainOperator B;
+  for (int k = 0; k < n; ++k) {
+    for (int j = 0; j < n; ++j) mean[k * n + j] /= areas[k];
+    integrator_.strain_operator_of(c, &mean[k * n], B);
+    out[k] = integrator_.material().D() * B;
+  }
+  return out;
 }
 
 StressOperator InterfaceOperators::edge_stress(int c, int k, double along,

@@ -9,8 +9,13 @@ ElasticityIntegrator::ElasticityIntegrator(const ElementTable& table,
     : table_(table), material_(material), mean_dilation_(mean_dilation) {}
 
 void ElasticityIntegrator::strain_operator(int c, int q, StrainOperator& B) const {
+  strain_operator_of(c, &table_.grad(c, q, 0), B);  // the gradients of (c, q) are contiguous
+}
+
+void ElasticityIntegrator::strain_operator_of(int c, const Eigen::Vector2d* gradients,
+                                              StrainOperator& B) const {
   const int n = table_.num_nodes(c);
-  vorodg::strain_operator(&table_.grad(c, q, 0), n, B);  // the gradients of (c, q) are contiguous
+  vorodg::strain_operator(gradients, n, B);
   if (!mean_dilation_) return;
   // B-bar: the in-plane dilatation eps_xx + eps_yy (all of the volumetric strain in plane
   // strain, where eps_zz = 0) is replaced by its cell mean: each of the two normal strains takes
@@ -23,7 +28,7 @@ void ElasticityIntegrator::strain_operator(int c, int q, StrainOperator& B) cons
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     for (int j = 0; j < table_.num_points(c); ++j)
       mean += table_.weight(c, j) * table_.grad(c, j, k);
-    const Eigen::Vector2d shift = share * (mean / area - table_.grad(c, q, k));
+    const Eigen::Vector2d shift = share * (mean / area - gradients[k]);
     for (int d = 0; d < 2; ++d) {
       B(0, 2 * k + d) += shift[d];
       B(1, 2 * k + d) += shift[d];

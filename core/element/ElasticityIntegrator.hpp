@@ -22,6 +22,9 @@ class ElasticityIntegrator {
 
   /// B at quadrature point q of cell c (3 x 2n), in Voigt form (eps_xx, eps_yy, 2 eps_xy).
   void strain_operator(int c, int q, StrainOperator& B) const;
+  /// B of cell c from its n shape-function gradients at one point, or from their weighted
+  /// average over part of the cell (B is affine in them, so that is the average of B there).
+  void strain_operator_of(int c, const Eigen::Vector2d* gradients, StrainOperator& B) const;
   /// The cell stiffness matrix (2n x 2n).
   void cell_matrix(int c, Eigen::MatrixXd& K) const;
   /// The matrices of cells [first, last), computed in parallel into their own slots (so the

@@ -102,9 +102,10 @@ void TraceConstants::compute_cell(const InterfaceOperators& ops,
   // equals the pseudo-inverse of K on every traction row (rows annihilate rigid modes).
   const Eigen::MatrixXd R = rigid_modes(mesh, c);
   const double shift = K.trace() / (2 * n);
-  Eigen::MatrixXd shifted = K;
+  thread_local Eigen::MatrixXd shifted;  // one buffer per thread: no allocation per cell
+  shifted = K;
   shifted.noalias() += shift * R * R.transpose();
-  const Eigen::LLT<Eigen::MatrixXd> llt(shifted);
+  const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(shifted);  // factors in place
   if (llt.info() != Eigen::Success)
     throw NumericalError("cell " + std::to_string(c) +
                          ": the stiffness matrix has a zero-energy mode that is not a rigid "
@@ -113,11 +114,13 @@ void TraceConstants::compute_cell(const InterfaceOperators& ops,
   std::vector<StressOperator> fans;
   if (kind_ == TractionKind::fan) fans = ops.fan_stresses(c);
   const int rows = kind_ == TractionKind::point ? 4 : 2;
-  Eigen::MatrixXd G(rows * n, 2 * n);
+  thread_local Eigen::MatrixXd G, Y;
+  G.resize(rows * n, 2 * n);
   for (int k = 0; k < n; ++k)
     G.middleRows(rows * k, rows) =
         kind_ == TractionKind::fan ? fan_rows(ops, c, k, fans[k]) : traction_rows(ops, kind_, c, k);
-  const Eigen::MatrixXd Y = llt.matrixL().solve(G.transpose());
+  Y = G.transpose();
+  llt.matrixL().solveInPlace(Y);
   for (int k = 0; k < n; ++k) {
     const auto Yk = Y.middleCols(rows * k, rows);
     constants_[offsets_[c] + k] = largest_eigenvalue(Yk.transpose() * Yk);

@@ -70,8 +70,9 @@ ConvergenceTable convergence_table(const GroupSummary& g) {
   for (const LevelSummary& lv : g.levels) {
     table.start_row();
     table.add_value("level", lv.level, std::nullopt, count);
-    const std::string runs =
-        std::to_string(lv.runs) + (lv.failed ? " (" + std::to_string(lv.failed) + " failed)" : "");
+    std::string runs = std::to_string(lv.runs);
+    if (lv.failed) runs.append(" (").append(std::to_string(lv.failed)).append(" failed)");
+    if (lv.diverged) runs.append(" (").append(std::to_string(lv.diverged)).append(" diverged)");
     if (!lv.l2) {
       table.add_text("runs", runs);
       table.add_text("L2 error", "all failed");

@@ -55,6 +55,7 @@ LevelSummary level_summary(const Scene& scene, const std::vector<const RunRecord
       continue;
     }
     const RunMetrics& m = *r->metrics;
+    if (m.stop_reason() == "diverged") ++lv.diverged;
     l2.push_back(m.l2_error);
     energy.push_back(m.energy_error);
     h.push_back(m.h_avg);
@@ -92,6 +93,7 @@ json rate_json(const std::optional<RateSummary>& rate) {
 
 json level_json(const LevelSummary& lv) {
   json out = {{"level", lv.level}, {"size", lv.size}, {"runs", lv.runs}, {"failed", lv.failed}};
+  if (lv.diverged) out["diverged"] = lv.diverged;  // absent when none, as in older summaries
   if (!lv.l2) return out;
   out["h_avg"] = *lv.h_avg;
   out["dofs"] = *lv.dofs;

@@ -20,6 +20,7 @@ struct LevelSummary {
   int level = 0;
   double size = 0.0;
   int runs = 0, failed = 0;
+  int diverged = 0;  // DG iterations that diverged: counted in the statistics, flagged apart
   // Over the realizations that ran (none if every run of the level failed):
   std::optional<double> h_avg, dofs, iterations;  // means
   std::optional<SampleStatistics> l2, energy;

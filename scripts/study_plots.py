@@ -156,8 +156,8 @@ def plot_penalty(summary, outdir, dpi):
                                    label="cg (no k_p; error at that level)"))
     leg1 = last.legend(handles=level_handles, title="colour: level", loc="upper left",
                        bbox_to_anchor=(1.03, 1.0), fontsize=8.5, title_fontsize=9, frameon=False)
-    last.add_artist(leg1)
     if not legend_rows:
+        last.add_artist(leg1)  # the formulation legend below replaces the axes' legend
         last.legend(handles=form_handles, title="line: formulation", loc="lower left",
                     bbox_to_anchor=(1.03, 0.0), fontsize=8.5, title_fontsize=9, frameon=False)
     else:

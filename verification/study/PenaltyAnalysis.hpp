@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "verification/model/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
@@ -14,5 +15,11 @@ namespace vorodg {
 /// Writes penalty_edges.csv and penalty_thresholds.csv into `out` and a section into `md`.
 void write_penalty_analysis(const Scene& scene, const std::filesystem::path& out,
                             std::ostringstream& md);
+
+/// Per mesh and level (realization 0), each dg-sipg reading at its cheapest working penalty: the
+/// coercive ones at k_p = 1 (the proven bound), the fixed ones at the smallest k_p that solved,
+/// with L2 error, condition estimate and time, into `md`.
+void write_penalty_comparison(const Scene& scene, const std::vector<RunRecord>& records,
+                              std::ostringstream& md);
 
 }  // namespace vorodg

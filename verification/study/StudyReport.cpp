@@ -164,7 +164,10 @@ StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>&
   else
     write_convergence(summary, out, md);
   write_kp_trend(summary, md);
-  if (scene.study == "penalty-sweep") write_penalty_analysis(scene, out, md);
+  if (scene.study == "penalty-sweep") {
+    write_penalty_analysis(scene, out, md);
+    write_penalty_comparison(scene, records, md);
+  }
   if (scene.study == "trade-off") write_tradeoff(records, out, md);
   if (published.is_object() && published.contains("trend"))
     md << "Published trend (" << published.value("source", "")

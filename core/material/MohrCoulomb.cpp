@@ -1,0 +1,34 @@
+#include "core/material/MohrCoulomb.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+MohrCoulomb::MohrCoulomb(const MohrCoulombParameters& parameters) : p_(parameters) {
+  auto require = [](bool ok, const char* what, double value, const char* expected) {
+    if (!ok)
+      throw InputError(std::string("Mohr-Coulomb criterion: ") + what + " = " +
+                       std::to_string(value) + ", expected " + expected);
+  };
+  require(std::isfinite(p_.cohesion) && p_.cohesion > 0, "cohesion", p_.cohesion, "> 0");
+  require(std::isfinite(p_.friction) && p_.friction >= 0, "friction", p_.friction, ">= 0");
+  require(std::isfinite(p_.tensile_cutoff) && p_.tensile_cutoff > 0, "tensile_cutoff",
+          p_.tensile_cutoff, "> 0");
+}
+
+double MohrCoulomb::utilization(double normal, double shear) const {
+  if (!std::isfinite(normal) || !std::isfinite(shear))
+    throw NumericalError("Mohr-Coulomb criterion: the traction is not finite");
+  const double tension = normal / p_.tensile_cutoff;
+  const double capacity = p_.cohesion - p_.friction * normal;  // the shear the plane can carry
+  const double sliding =
+      capacity > 0.0 ? std::abs(shear) / capacity : std::numeric_limits<double>::infinity();
+  return std::max(tension, sliding);
+}
+
+}  // namespace vorodg

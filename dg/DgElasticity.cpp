@@ -101,15 +101,14 @@ void DgElasticity::assemble_system() {
       const double w = rule.weights[g] * f.length;
       const InterfaceOperator J = ops_.jump(f, rule.t[g]);
       local += penalty_->eps(i) * w * J.transpose() * J;  // eps int [u].[v], exact (linear jumps)
-      if (sipg) {  // -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u]
-        const Eigen::MatrixXd JT =
-            w * J.transpose() * ops_.traction(f, rule.t[g], kind, penalty_->weights(i));
-        local += -JT + options_.sipg_sign * JT.transpose();
-      }
     }
-    for (std::size_t j = 0; j < dofs.size(); ++j)
-      for (std::size_t i = 0; i < dofs.size(); ++i)
-        triplets.emplace_back(dofs[i], dofs[j], local(i, j));
+    if (sipg) {  // -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u]
+      const Eigen::MatrixXd JT = consistency_block(i, kind);
+      local += -JT + options_.sipg_sign * JT.transpose();
+    }
+    for (std::size_t col = 0; col < dofs.size(); ++col)
+      for (std::size_t row = 0; row < dofs.size(); ++row)
+        triplets.emplace_back(dofs[row], dofs[col], local(row, col));
   }
   Eigen::SparseMatrix<double> full(num_dofs(), num_dofs());
   full.setFromTriplets(triplets.begin(), triplets.end());
@@ -159,20 +158,32 @@ Eigen::VectorXd DgElasticity::interface_load(const Eigen::VectorXd& u) {
   return constraints_->restrict(g);
 }
 
-/// int {sigma(u)} n.[v] as a matrix on all DOFs, with the two-point rule (exact for the fan and
-/// mean stresses, which are constant along the edge).
-void DgElasticity::build_consistency() {
+/// int_F {sigma(u)}_w n . [v] on interface i as a block on its two cells' DOFs, with the two-point
+/// rule (exact for the fan and mean stresses, which are constant along the edge and so are
+/// computed once).
+Eigen::MatrixXd DgElasticity::consistency_block(std::size_t i, TractionKind kind) const {
+  const Interface& f = space_.interfaces()[i];
   const SegmentRule& rule = gauss2_segment();
+  const bool constant = kind != TractionKind::point;
+  const InterfaceOperator fixed =
+      constant ? ops_.traction(f, 0.5, kind, penalty_->weights(i)) : InterfaceOperator();
+  const int m = space_.cell_dof_count(f.cell[0]) + space_.cell_dof_count(f.cell[1]);
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(m, m);
+  for (int q = 0; q < 2; ++q)
+    block += rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() *
+             (constant ? fixed : ops_.traction(f, rule.t[q], kind, penalty_->weights(i)));
+  return block;
+}
+
+/// int {sigma(u)} n.[v] as a matrix on all DOFs.
+void DgElasticity::build_consistency() {
   const TractionKind kind = interface_traction(options_);
   std::vector<Eigen::Triplet<double>> triplets;
   const auto& faces = space_.interfaces();
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const Interface& f = faces[i];
     const std::vector<int> dofs = ops_.dofs(f);
-    Eigen::MatrixXd local = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
-    for (int q = 0; q < 2; ++q)
-      local += rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() *
-               ops_.traction(f, rule.t[q], kind, penalty_->weights(i));
+    const Eigen::MatrixXd local = consistency_block(i, kind);
     for (std::size_t j = 0; j < dofs.size(); ++j)
       for (std::size_t r = 0; r < dofs.size(); ++r)
         triplets.emplace_back(dofs[r], dofs[j], local(r, j));

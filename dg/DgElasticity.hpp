@@ -97,6 +97,7 @@ class DgElasticity {
  private:
   Eigen::VectorXd interface_load(const Eigen::VectorXd& u);
   void build_consistency();
+  Eigen::MatrixXd consistency_block(std::size_t interface, TractionKind kind) const;
   void measure_gap();
   double median_penalty() const;
 

@@ -17,8 +17,7 @@ InterfacePenalty::InterfacePenalty(const InterfaceOperators& ops,
   if (weighted_average && scaling != PenaltyScaling::coercive)
     throw InputError("weighted interface averages need the coercive penalty (penalty auto)");
   if (scaling == PenaltyScaling::coercive) {
-    constants_ = std::make_unique<TraceConstants>(ops, stiffness, kind, threads);
-    set_coercive(space_, kp, weighted_average);
+    set_coercive(TraceConstants(ops, stiffness, kind, threads), kp, weighted_average);
     return;
   }
   const PolygonMesh& mesh = space_.mesh();
@@ -33,14 +32,15 @@ InterfacePenalty::InterfacePenalty(const InterfaceOperators& ops,
   }
 }
 
-void InterfacePenalty::set_coercive(const DgSpace& space, double kp, bool weighted_average) {
-  const auto& faces = space.interfaces();
+void InterfacePenalty::set_coercive(const TraceConstants& constants, double kp,
+                                    bool weighted_average) {
+  const auto& faces = space_.interfaces();
   eps_.resize(faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const Interface& f = faces[i];
     double k[2];
     for (int s = 0; s < 2; ++s)
-      k[s] = space.interface_count(f.cell[s]) * constants_->constant(f.cell[s], f.local_edge[s]);
+      k[s] = space_.interface_count(f.cell[s]) * constants.constant(f.cell[s], f.local_edge[s]);
     const double sum = k[0] + k[1];
     if (!(sum > 0.0))
       throw NumericalError("interface on edge " + std::to_string(f.edge) +

@@ -11,7 +11,6 @@
 //             so that k_p > 1/2 makes the symmetric interior-penalty form coercive and k_p = 1
 //             (the default) gives it the coercivity constant 1/2 in the DG energy norm.
 #include <Eigen/Core>
-#include <memory>
 #include <vector>
 
 #include "dg/TraceConstants.hpp"
@@ -34,15 +33,12 @@ class InterfacePenalty {
   const Eigen::Vector2d& weights(int i) const { return weights_[i]; }
   /// eps_F relative to E / h_avg, per interface: what the penalty study plots.
   std::vector<double> relative_to_h_avg() const;
-  /// The cells' trace constants (coercive scaling only; null otherwise).
-  const TraceConstants* trace_constants() const { return constants_.get(); }
 
  private:
-  void set_coercive(const DgSpace& space, double kp, bool weighted_average);
+  void set_coercive(const TraceConstants& constants, double kp, bool weighted_average);
 
   const ElasticityIntegrator& integrator_;
   const DgSpace& space_;
-  std::unique_ptr<TraceConstants> constants_;
   std::vector<double> eps_;
   std::vector<Eigen::Vector2d> weights_;
 };

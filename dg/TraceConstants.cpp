@@ -127,10 +127,6 @@ void TraceConstants::compute_cell(const InterfaceOperators& ops,
   }
 }
 
-double TraceConstants::cell_maximum(int c) const {
-  return *std::max_element(constants_.begin() + offsets_[c], constants_.begin() + offsets_[c + 1]);
-}
-
 std::vector<double> TraceConstants::brute_force(const InterfaceOperators& ops,
                                                 const ElasticityIntegrator& integrator,
                                                 TractionKind kind, int c) {

@@ -26,8 +26,6 @@ class TraceConstants {
 
   /// C_{K,F} for cell c and its edge k (from the cell's vertex k to vertex k + 1).
   double constant(int c, int k) const { return constants_[offsets_[c] + k]; }
-  /// The largest constant of cell c over its edges.
-  double cell_maximum(int c) const;
   TractionKind kind() const { return kind_; }
 
   /// C_{K,F} for one cell by the quotient's definition, without the rigid-mode shift: the

@@ -57,38 +57,28 @@ StressOperator InterfaceOperators::point_stress(int c, int k, double along) cons
 }
 
 StressOperator InterfaceOperators::fan_stress(int c, int k) const {
-  // B is affine in the gradients: their average over fan triangle k gives the average of B.
-  const int n = space_.mesh().cell_size(c);
-  std::vector<Eigen::Vector2d> mean(n, Eigen::Vector2d::Zero());
-  double area = 0.0;
-  for (int q = 0; q < table_.num_points(c); ++q) {
-    if (table_.fan_point(c, q).fan != k) continue;
-    for (int j = 0; j < n; ++j) mean[j] += table_.weight(c, q) * table_.grad(c, q, j);
-    area += table_.weight(c, q);
-  }
-  for (Eigen::Vector2d& g : mean) g /= area;
-  StrainOperator B;
-  integrator_.strain_operator_of(c, mean.data(), B);
-  return integrator_.material().D() * B;
+  return fan_stresses(c, k)[0];
 }
 
-std::vector<StressOperator> InterfaceOperators::fan_stresses(int c) const {
+std::vector<StressOperator> InterfaceOperators::fan_stresses(int c, int only) const {
   // B is affine in the gradients: average the gradients per fan triangle, then build one B each.
   const int n = space_.mesh().cell_size(c);
+  const int first = only < 0 ? 0 : only, last = only < 0 ? n : only + 1;
   std::vector<Eigen::Vector2d> mean(n * n, Eigen::Vector2d::Zero());
   std::vector<double> areas(n, 0.0);
   for (int q = 0; q < table_.num_points(c); ++q) {
     const int k = table_.fan_point(c, q).fan;
+    if (k < first || k >= last) continue;
     const double w = table_.weight(c, q);
     for (int j = 0; j < n; ++j) mean[k * n + j] += w * table_.grad(c, q, j);
     areas[k] += w;
   }
-  std::vector<StressOperator> out(n);
+  std::vector<StressOperator> out;
   StrainOperator B;
-  for (int k = 0; k < n; ++k) {
+  for (int k = first; k < last; ++k) {
     for (int j = 0; j < n; ++j) mean[k * n + j] /= areas[k];
     integrator_.strain_operator_of(c, &mean[k * n], B);
-    out[k] = integrator_.material().D() * B;
+    out.push_back(integrator_.material().D() * B);
   }
   return out;
 }

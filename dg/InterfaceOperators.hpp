@@ -48,8 +48,9 @@ class InterfaceOperators {
   /// Cell c's stress operator (3 x 2n) on its edge k (vertex k to k + 1), at the point a fraction
   /// `along` of the way (point; fan and mean are constant along the edge).
   StressOperator edge_stress(int c, int k, double along, TractionKind kind) const;
-  /// Cell c's fan stresses on all its edges in one pass over its quadrature points.
-  std::vector<StressOperator> fan_stresses(int c) const;
+  /// Cell c's fan stresses on all its edges (or only on edge `only`) in one pass over its
+  /// quadrature points.
+  std::vector<StressOperator> fan_stresses(int c, int only = -1) const;
   /// Cell c's outward unit normal on its edge k.
   Eigen::Vector2d edge_normal(int c, int k) const;
   /// Maps a Voigt stress to the traction on a surface with normal n.

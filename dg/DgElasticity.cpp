@@ -65,8 +65,7 @@ void DgElasticity::setup_system() {
   Stopwatch clock;
   // Every cell's copy of a vertex on a Dirichlet side carries the prescribed displacement.
   constraints_.emplace(
-      table_.mesh(), problem_, [&](int c, int k) { return space_.cell_offset(c) + 2 * k; },
-      num_dofs());
+      table_.mesh(), problem_, [&](int c, int k) { return space_.dof(c, k); }, num_dofs());
   seconds_["setup"] = clock.seconds();
 }
 
@@ -77,10 +76,11 @@ void DgElasticity::assemble_system() {
   // a(u, v): the shared cell kernel, block by block (each cell owns its DOFs).
   const auto cells = integrator_.all_cell_matrices(threads_);
   for (int c = 0; c < mesh.num_cells(); ++c) {
-    const int m = space_.cell_dof_count(c), first = space_.cell_offset(c);
+    const int m = space_.cell_dof_count(c);
+    const std::vector<int> dofs = space_.cell_dofs(c);
     const auto Kc = cells.block(c, m);
     for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i) triplets.emplace_back(first + i, first + j, Kc(i, j));
+      for (int i = 0; i < m; ++i) triplets.emplace_back(dofs[i], dofs[j], Kc(i, j));
   }
   seconds_["cell_matrices"] = clock.seconds();
   clock.restart();
@@ -130,7 +130,7 @@ void DgElasticity::assemble_system() {
 
   // l(v) on the cells' own copies.
   Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
-  const DofOf cell_dof = [&](int c, int k) { return space_.cell_offset(c) + 2 * k; };
+  const DofOf cell_dof = [&](int c, int k) { return space_.dof(c, k); };
   add_body_force(table_, problem_, cell_dof, f);
   add_boundary_tractions(mesh, problem_, cell_dof, f);
   load_ = constraints_->restrict(f) - A_fixed_ * constraints_->prescribed();

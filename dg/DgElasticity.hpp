@@ -79,9 +79,7 @@ class DgElasticity {
 
   const DgSpace& space() const { return space_; }
   /// The cell's own DOF vector (its copies), as the integrator expects.
-  Eigen::VectorXd cell_dofs(int c) const {
-    return u_.segment(space_.cell_offset(c), space_.cell_dof_count(c));
-  }
+  Eigen::VectorXd cell_dofs(int c) const { return u_(space_.cell_dofs(c)); }
   /// Largest |[u]| over the interface quadrature points of each edge (0 on boundary edges).
   std::vector<double> edge_gaps() const;
   int num_dofs() const { return space_.num_dofs(); }

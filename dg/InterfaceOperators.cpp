@@ -16,10 +16,9 @@ InterfaceOperators::InterfaceOperators(const DgSpace& space, const ElasticityInt
 }
 
 std::vector<int> InterfaceOperators::dofs(const Interface& f) const {
-  std::vector<int> out;
-  for (int s = 0; s < 2; ++s)
-    for (int d = 0; d < space_.cell_dof_count(f.cell[s]); ++d)
-      out.push_back(space_.cell_offset(f.cell[s]) + d);
+  std::vector<int> out = space_.cell_dofs(f.cell[0]);
+  const std::vector<int> second = space_.cell_dofs(f.cell[1]);
+  out.insert(out.end(), second.begin(), second.end());
   return out;
 }
 
@@ -27,10 +26,13 @@ InterfaceOperator InterfaceOperators::jump(const Interface& f, double t) const {
   const int m1 = space_.cell_dof_count(f.cell[0]), m2 = space_.cell_dof_count(f.cell[1]);
   InterfaceOperator J = InterfaceOperator::Zero(2, m1 + m2);
   const int base[2] = {0, m1};
+  // Cell 1 runs the edge from v0 (its vertex local_edge) to v1; cell 2 from v1 to v0.
+  const PolygonMesh& mesh = space_.mesh();
   for (int s = 0; s < 2; ++s) {
     const double sign = s == 0 ? 1.0 : -1.0;
-    const int v0 = f.dof_v0[s] - space_.cell_offset(f.cell[s]) + base[s];
-    const int v1 = f.dof_v1[s] - space_.cell_offset(f.cell[s]) + base[s];
+    const int n = mesh.cell_size(f.cell[s]), first = f.local_edge[s], next = (first + 1) % n;
+    const int v0 = base[s] + 2 * (s == 0 ? first : next);
+    const int v1 = base[s] + 2 * (s == 0 ? next : first);
     for (int d = 0; d < 2; ++d) {
       J(d, v0 + d) += sign * (1.0 - t);
       J(d, v1 + d) += sign * t;

@@ -18,6 +18,16 @@ CohesiveLaw law(SofteningShape shape, double beta = 1.0) {
   return CohesiveLaw({kStrength, kEnergy, beta, shape});
 }
 
+/// Simpson on n panels: exact on each linear piece, every kink costs O(panel^2).
+double area_under_envelope(const CohesiveLaw& l, int n) {
+  const double h = l.critical_opening() / n;
+  double area = 0.0;
+  for (int i = 0; i < n; ++i)
+    area +=
+        h / 6.0 * (l.envelope(i * h) + 4.0 * l.envelope((i + 0.5) * h) + l.envelope((i + 1) * h));
+  return area;
+}
+
 class CohesiveLawShapes : public ::testing::TestWithParam<SofteningShape> {};
 
 TEST_P(CohesiveLawShapes, TheAreaUnderTheEnvelopeIsTheFractureEnergy) {
@@ -25,14 +35,7 @@ TEST_P(CohesiveLawShapes, TheAreaUnderTheEnvelopeIsTheFractureEnergy) {
   EXPECT_DOUBLE_EQ(l.envelope(0.0), kStrength);
   EXPECT_EQ(l.envelope(l.critical_opening()), 0.0);
   EXPECT_EQ(l.envelope(2.0 * l.critical_opening()), 0.0);
-  // Simpson on many panels: exact on each linear piece, the kink costs O(panel^2).
-  const int n = 200000;
-  const double h = l.critical_opening() / n;
-  double area = 0.0;
-  for (int i = 0; i < n; ++i)
-    area +=
-        h / 6.0 * (l.envelope(i * h) + 4.0 * l.envelope((i + 0.5) * h) + l.envelope((i + 1) * h));
-  EXPECT_NEAR(area, kEnergy, 1e-9 * kEnergy);
+  EXPECT_NEAR(area_under_envelope(l, 200000), kEnergy, 1e-9 * kEnergy);
   EXPECT_DOUBLE_EQ(l.dissipated_energy(l.critical_opening()), kEnergy);
 }
 
@@ -146,7 +149,37 @@ TEST(CohesiveLaw, BilinearKinksAtAThirdOfTheStrength) {
   EXPECT_NEAR(law(SofteningShape::linear).critical_opening(), 2.0 * kEnergy / kStrength, 1e-15);
 }
 
+class IntrinsicLaw : public ::testing::TestWithParam<SofteningShape> {};
+
+TEST_P(IntrinsicLaw, ElasticUpToThePeakThenSoftensWithTheSameArea) {
+  const double k0 = 1e3 * kStrength / (kEnergy / kStrength);  // peak at 1e-3 G / sigma_c
+  const CohesiveLaw l({kStrength, kEnergy, 1.0, GetParam(), k0});
+  const double d0 = kStrength / k0;
+  EXPECT_EQ(l.envelope(0.0), 0.0);
+  EXPECT_NEAR(l.envelope(0.5 * d0), 0.5 * kStrength, 1e-12 * kStrength);
+  EXPECT_NEAR(l.envelope(d0), kStrength, 1e-9 * kStrength);
+  // The elastic branch stores and gives back: nothing is dissipated before the peak.
+  EXPECT_EQ(l.dissipated_energy(0.9 * d0), 0.0);
+  // The area under the whole envelope is still G.
+  EXPECT_NEAR(area_under_envelope(l, 400000), kEnergy, 1e-8 * kEnergy);
+  EXPECT_DOUBLE_EQ(l.dissipated_energy(l.critical_opening()), kEnergy);
+  // At zero opening the tangent is the initial stiffness in both directions (beta = 1).
+  CohesiveLaw::State state;
+  const auto r = l.respond(Eigen::Vector2d::Zero(), state);
+  EXPECT_EQ(r.traction.norm(), 0.0);
+  EXPECT_DOUBLE_EQ(r.tangent(1, 1), k0);
+  EXPECT_EQ(r.tangent(0, 0), 0.0);  // closed: the normal stiffness is contact's
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, IntrinsicLaw,
+                         ::testing::Values(SofteningShape::linear, SofteningShape::bilinear),
+                         [](const auto& info) {
+                           return info.param == SofteningShape::linear ? "linear" : "bilinear";
+                         });
+
 TEST(CohesiveLaw, RefusesBadParametersAndNonFiniteOpenings) {
+  // An intrinsic law so soft that its peak comes after the critical opening.
+  EXPECT_THROW(CohesiveLaw({kStrength, kEnergy, 1.0, SofteningShape::linear, 1.0}), InputError);
   EXPECT_THROW(CohesiveLaw({0.0, kEnergy, 1.0, SofteningShape::linear}), InputError);
   EXPECT_THROW(CohesiveLaw({kStrength, -1.0, 1.0, SofteningShape::linear}), InputError);
   EXPECT_THROW(CohesiveLaw({kStrength, kEnergy, -0.1, SofteningShape::linear}), InputError);

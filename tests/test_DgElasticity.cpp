@@ -519,9 +519,9 @@ TEST(DgElasticity, ReportAndGaps) {
     double expected = 0.0;
     for (int end = 0; end < 2; ++end) {
       const Eigen::Vector2d u1 = dg.cell_dofs(f.cell[0]).segment<2>(
-          (end ? f.dof_v1[0] : f.dof_v0[0]) - dg.space().cell_offset(f.cell[0]));
+          (end ? f.dof_v1[0] : f.dof_v0[0]) - dg.space().dof(f.cell[0], 0));
       const Eigen::Vector2d u2 = dg.cell_dofs(f.cell[1]).segment<2>(
-          (end ? f.dof_v1[1] : f.dof_v0[1]) - dg.space().cell_offset(f.cell[1]));
+          (end ? f.dof_v1[1] : f.dof_v0[1]) - dg.space().dof(f.cell[1], 0));
       expected = std::max(expected, (u1 - u2).norm());
     }
     EXPECT_DOUBLE_EQ(gaps[f.edge], expected) << "edge " << f.edge;

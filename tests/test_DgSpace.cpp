@@ -43,15 +43,15 @@ TEST_P(DgSpaceFamilies, TwoDofsPerVertexCopy) {
   int copies = 0;
   for (int c = 0; c < mesh.num_cells(); ++c) {
     EXPECT_EQ(space.cell_dof_count(c), 2 * mesh.cell_size(c)) << "cell " << c;
-    EXPECT_EQ(space.cell_offset(c), 2 * copies) << "cell " << c;
+    EXPECT_EQ(space.dof(c, 0), 2 * copies) << "cell " << c;
     copies += mesh.cell_size(c);
   }
   EXPECT_EQ(space.num_dofs(), 2 * copies);
   EXPECT_EQ(space.num_dofs(), 2 * static_cast<int>(mesh.cell_vertex_list().size()));
   EXPECT_GT(space.num_dofs(), 2 * mesh.num_vertices());  // copies: more DOFs than CG
-  EXPECT_EQ(space.cell_offset(0), 0);
+  EXPECT_EQ(space.dof(0, 0), 0);
   const int last = mesh.num_cells() - 1;
-  EXPECT_EQ(space.cell_offset(last) + space.cell_dof_count(last), space.num_dofs());
+  EXPECT_EQ(space.dof(last, 0) + space.cell_dof_count(last), space.num_dofs());
 }
 
 TEST_P(DgSpaceFamilies, InterfacesAreTheInteriorEdges) {
@@ -82,7 +82,7 @@ TEST_P(DgSpaceFamilies, InterfaceDofsAreTheEndVerticesCopies) {
   for (const Interface& f : space.interfaces()) {
     const MeshEdge& e = mesh.edge(f.edge);
     for (int s = 0; s < 2; ++s) {
-      const int c = f.cell[s], first = space.cell_offset(c);
+      const int c = f.cell[s], first = space.dof(c, 0);
       for (const auto& [dof, v] : {std::pair{f.dof_v0[s], e.v0}, std::pair{f.dof_v1[s], e.v1}}) {
         ASSERT_GE(dof, first) << "edge " << f.edge << " side " << s;
         ASSERT_LT(dof + 1, first + space.cell_dof_count(c)) << "edge " << f.edge << " side " << s;
@@ -138,8 +138,8 @@ TEST(DgSpace, TwoSquares) {
   const PolygonMesh mesh(Rectangle(0, 0, 2, 1), p, {0, 4, 8}, {0, 1, 4, 3, 1, 2, 5, 4});
   const DgSpace space(mesh);
   EXPECT_EQ(space.num_dofs(), 16);
-  EXPECT_EQ(space.cell_offset(0), 0);
-  EXPECT_EQ(space.cell_offset(1), 8);
+  EXPECT_EQ(space.dof(0, 0), 0);
+  EXPECT_EQ(space.dof(1, 0), 8);
   EXPECT_EQ(space.cell_dof_count(0), 8);
   EXPECT_EQ(space.cell_dof_count(1), 8);
   ASSERT_EQ(space.interfaces().size(), 1u);

@@ -95,8 +95,8 @@ TEST_P(InterfaceOperatorsFamilies, DofsAreCellOneThenCellTwo) {
     const std::vector<int> dofs = ops_.dofs(f);
     const int m1 = space_.cell_dof_count(f.cell[0]), m2 = space_.cell_dof_count(f.cell[1]);
     ASSERT_EQ(static_cast<int>(dofs.size()), m1 + m2);
-    for (int i = 0; i < m1; ++i) EXPECT_EQ(dofs[i], space_.cell_offset(f.cell[0]) + i);
-    for (int i = 0; i < m2; ++i) EXPECT_EQ(dofs[m1 + i], space_.cell_offset(f.cell[1]) + i);
+    for (int i = 0; i < m1; ++i) EXPECT_EQ(dofs[i], space_.dof(f.cell[0], 0) + i);
+    for (int i = 0; i < m2; ++i) EXPECT_EQ(dofs[m1 + i], space_.dof(f.cell[1], 0) + i);
     const InterfaceOperator J = ops_.jump(f, 0.3);
     EXPECT_EQ(J.rows(), 2);
     EXPECT_EQ(J.cols(), m1 + m2);
@@ -135,7 +135,7 @@ TEST_P(InterfaceOperatorsFamilies, JumpOfAOneSidedFieldIsTheField) {
     // Only the copies of the edge's two end vertices enter.
     const InterfaceOperator J = ops_.jump(f, 0.3);
     const int m1 = space_.cell_dof_count(f.cell[0]);
-    const int o1 = space_.cell_offset(f.cell[0]), o2 = space_.cell_offset(f.cell[1]);
+    const int o1 = space_.dof(f.cell[0], 0), o2 = space_.dof(f.cell[1], 0);
     const int nonzero_columns[] = {f.dof_v0[0] - o1,      f.dof_v0[0] - o1 + 1,
                                    f.dof_v1[0] - o1,      f.dof_v1[0] - o1 + 1,
                                    m1 + f.dof_v0[1] - o2, m1 + f.dof_v0[1] - o2 + 1,

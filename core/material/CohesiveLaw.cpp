@@ -23,32 +23,51 @@ CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) 
           p_.fracture_energy, "> 0");
   require(std::isfinite(p_.shear_factor) && p_.shear_factor >= 0, "shear_factor", p_.shear_factor,
           ">= 0");
+  require(std::isfinite(p_.initial_stiffness) && p_.initial_stiffness >= 0, "initial_stiffness",
+          p_.initial_stiffness, ">= 0");
+  const double sc = p_.strength, scale = p_.fracture_energy / sc;
+  const double d0 = intrinsic() ? sc / p_.initial_stiffness : 0.0;
+  if (intrinsic()) knots_.emplace_back(0.0, 0.0);
+  knots_.emplace_back(d0, sc);
+  if (p_.shape == SofteningShape::linear) {
+    knots_.emplace_back(2.0 * scale, 0.0);
+  } else {  // the kink keeps the area G: 0.8 G / sigma_c extrinsic, moved by delta_0 / 3
+    knots_.emplace_back(0.8 * scale + d0 / 3.0, sc / 3.0);
+    knots_.emplace_back(3.6 * scale, 0.0);
+  }
+  for (std::size_t k = 1; k < knots_.size(); ++k)
+    require(knots_[k].x() > knots_[k - 1].x(), "initial_stiffness", p_.initial_stiffness,
+            "large enough that the peak comes before the critical opening");
 }
 
 double CohesiveLaw::critical_opening() const {
-  const double scale = p_.fracture_energy / p_.strength;
-  return p_.shape == SofteningShape::linear ? 2.0 * scale : 3.6 * scale;
+  return knots_.back().x();
 }
 
-double CohesiveLaw::kink_opening() const {
-  return 0.8 * p_.fracture_energy / p_.strength;
+int CohesiveLaw::segment(double opening) const {
+  for (std::size_t k = 1; k < knots_.size(); ++k)
+    if (opening < knots_[k].x()) return static_cast<int>(k) - 1;
+  return -1;
+}
+
+double CohesiveLaw::next_kink(double opening) const {
+  for (const Eigen::Vector2d& k : knots_)
+    if (k.x() > opening) return k.x();
+  return INFINITY;
 }
 
 double CohesiveLaw::envelope_slope(double opening) const {
-  const double sc = p_.strength, dc = critical_opening();
-  if (opening >= dc) return 0.0;
-  if (p_.shape == SofteningShape::linear) return -sc / dc;
-  const double d1 = kink_opening();
-  return opening < d1 ? -(2.0 / 3.0) * sc / d1 : -(sc / 3.0) / (dc - d1);
+  const int k = segment(std::max(opening, 0.0));
+  if (k < 0) return 0.0;
+  const Eigen::Vector2d d = knots_[k + 1] - knots_[k];
+  return d.y() / d.x();
 }
 
 double CohesiveLaw::envelope(double opening) const {
-  const double sc = p_.strength, dc = critical_opening();
-  if (opening >= dc) return 0.0;
-  if (p_.shape == SofteningShape::linear) return sc * (1.0 - opening / dc);
-  const double d1 = kink_opening();
-  return opening < d1 ? sc * (1.0 - (2.0 / 3.0) * opening / d1)
-                      : (sc / 3.0) * (dc - opening) / (dc - d1);
+  opening = std::max(opening, 0.0);
+  const int k = segment(opening);
+  if (k < 0) return 0.0;
+  return knots_[k].y() + envelope_slope(opening) * (opening - knots_[k].x());
 }
 
 CohesiveLaw::Response CohesiveLaw::respond(const Eigen::Vector2d& opening, State& state) const {
@@ -64,7 +83,12 @@ CohesiveLaw::Response CohesiveLaw::respond(const Eigen::Vector2d& opening, State
   r.effective_opening = delta;
   r.traction.setZero();
   r.tangent.setZero();
-  if (delta <= 0.0) return r;  // no opening: the traction's direction is undefined, take none
+  if (delta <= 0.0) {
+    // No opening: an intrinsic law is on its elastic branch; an extrinsic one's traction has no
+    // direction yet, so it takes none.
+    if (intrinsic() && state.max_opening <= knots_[1].x()) r.tangent = p_.initial_stiffness * W;
+    return r;
+  }
   r.loading = delta >= state.max_opening;
   if (r.loading) {
     state.max_opening = delta;
@@ -82,20 +106,16 @@ CohesiveLaw::Response CohesiveLaw::respond(const Eigen::Vector2d& opening, State
 }
 
 double CohesiveLaw::dissipated_energy(double max_opening) const {
-  const double dc = critical_opening();
-  if (max_opening >= dc) return p_.fracture_energy;
+  if (max_opening >= critical_opening()) return p_.fracture_energy;
   if (max_opening <= 0.0) return 0.0;
   // Area under the envelope up to max_opening (trapezoids on its linear pieces), less the
   // triangle that unloading to the origin gives back.
   double area = 0.0;
-  if (p_.shape == SofteningShape::bilinear && max_opening > kink_opening()) {
-    const double d1 = kink_opening();
-    area = 0.5 * (p_.strength + envelope(d1)) * d1 +
-           0.5 * (envelope(d1) + envelope(max_opening)) * (max_opening - d1);
-  } else {
-    area = 0.5 * (p_.strength + envelope(max_opening)) * max_opening;
+  for (std::size_t k = 1; k < knots_.size() && knots_[k - 1].x() < max_opening; ++k) {
+    const double right = std::min(knots_[k].x(), max_opening);
+    area += 0.5 * (knots_[k - 1].y() + envelope(right)) * (right - knots_[k - 1].x());
   }
-  return area - 0.5 * envelope(max_opening) * max_opening;
+  return std::max(area - 0.5 * envelope(max_opening) * max_opening, 0.0);
 }
 
 }  // namespace vorodg

@@ -12,8 +12,12 @@
 //   linear:   T = sigma_c (1 - delta / delta_c),  delta_c = 2 G / sigma_c
 //   bilinear: the usual concrete law, kink at sigma_c / 3: T falls from sigma_c to sigma_c / 3 at
 //             delta_1 = 0.8 G / sigma_c, then to zero at delta_c = 3.6 G / sigma_c (area G)
+// An intrinsic law (initial_stiffness K0 > 0) puts an elastic branch T = K0 delta before the
+// peak, reached at delta_0 = sigma_c / K0; the softening keeps the area G: linear from
+// (delta_0, sigma_c) to (delta_c, 0), bilinear with its kink moved to delta_1 + delta_0 / 3.
 // The law is the same for quasi-static fracture and for dynamic fragmentation.
 #include <Eigen/Core>
+#include <vector>
 
 namespace vorodg {
 
@@ -24,18 +28,24 @@ struct CohesiveParameters {
   double fracture_energy = 0.0;  // G > 0: the area under the envelope
   double shear_factor = 1.0;     // beta >= 0
   SofteningShape shape = SofteningShape::linear;
+  double initial_stiffness = 0.0;  // K0: 0 for an extrinsic law, > 0 for an intrinsic one
 };
 
 class CohesiveLaw {
  public:
-  /// Throws InputError naming the parameter unless sigma_c > 0, G > 0 and beta >= 0 (finite).
+  /// Throws InputError naming the parameter unless sigma_c > 0, G > 0, beta >= 0 and K0 >= 0
+  /// (finite), and an intrinsic law's peak comes before its critical opening.
   explicit CohesiveLaw(const CohesiveParameters& parameters);
 
   const CohesiveParameters& parameters() const { return p_; }
   /// delta_c: the effective opening at which the traction vanishes for good.
   double critical_opening() const;
-  /// T(delta) on the softening envelope (0 beyond delta_c).
+  bool intrinsic() const { return p_.initial_stiffness > 0.0; }
+  /// T(delta) on the envelope (0 beyond delta_c).
   double envelope(double opening) const;
+  /// The first kink of the envelope beyond `opening` (the peak, the bilinear kink, delta_c), or
+  /// infinity past delta_c: between kinks a loading point's traction is linear in its opening.
+  double next_kink(double opening) const;
   /// dT/d(delta) on the envelope (the slope of the segment delta lies on; 0 beyond delta_c).
   double envelope_slope(double opening) const;
 
@@ -57,8 +67,10 @@ class CohesiveLaw {
   double dissipated_energy(double max_opening) const;
 
  private:
-  double kink_opening() const;  // bilinear: delta_1
+  int segment(double opening) const;  // the envelope piece opening lies on, or -1 beyond it
   CohesiveParameters p_;
+  // The envelope as a polyline (opening, traction), ending at (delta_c, 0).
+  std::vector<Eigen::Vector2d> knots_;
 };
 
 }  // namespace vorodg

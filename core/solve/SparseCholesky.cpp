@@ -153,13 +153,24 @@ FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>&
     throw NumericalError("internal: factorize needs a square compressed matrix");
   FactorizationReport report;
   Stopwatch clock;
-  impl_->analyze(lower, options);
+  const int mode = options.indefinite ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
+  const bool reuse = options.reuse_analysis && impl_->factor && impl_->common.supernodal == mode &&
+                     impl_->factor->n == static_cast<size_t>(lower.rows());
+  if (!reuse) {
+    impl_->common.supernodal = mode;
+    impl_->common.final_ll = options.indefinite ? 0 : 1;
+    impl_->analyze(lower, options);
+  }
   report.seconds_analyze = clock.seconds();
   clock.restart();
   cholmod_sparse a = view_of(lower, -1);
   cholmod_factorize(&a, impl_->factor, &impl_->common);
   report.seconds_factorize = clock.seconds();
-  if (impl_->common.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n)
+  const bool failed =
+      impl_->common.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n;
+  if (failed && options.indefinite)
+    throw NumericalError("the tangent matrix met a zero pivot in its LDL^T factorization");
+  if (failed)
     throw NumericalError(
         "the stiffness matrix is not positive definite: the system is singular or indefinite "
         "(rigid-body motions left free, or a material so close to incompressible that the "

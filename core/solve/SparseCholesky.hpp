@@ -31,6 +31,12 @@ struct FactorizationOptions {
   FillOrdering ordering = FillOrdering::node_metis;
   int block_size = 2;        // DOFs per node, numbered consecutively (2k, 2k+1 in 2D)
   double min_rcond = 1e-15;  // below this the matrix counts as numerically singular
+  /// Simplicial LDL^T (no pivoting) instead of supernodal LL^T: for symmetric matrices that a
+  /// softening law can make indefinite (the tangent of cohesive fracture past the peak).
+  bool indefinite = false;
+  /// Keep the ordering and symbolic factor of the previous call, whose matrix had the same
+  /// pattern (Newton iterations, load steps): only the numeric factorization is redone.
+  bool reuse_analysis = false;
 };
 
 class SparseCholesky {
@@ -41,8 +47,8 @@ class SparseCholesky {
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 
   /// Factors the symmetric matrix whose lower triangle is given. Throws NumericalError if it is
-  /// not positive definite (a singular system: rigid motions left free by missing Dirichlet
-  /// data) or its condition estimate is below `options.min_rcond`.
+  /// not positive definite (LL^T) or meets a zero pivot (LDL^T) (a singular system: rigid motions
+  /// left free by missing Dirichlet data) or its condition estimate is below `options.min_rcond`.
   FactorizationReport factorize(const Eigen::SparseMatrix<double>& lower,
                                 const FactorizationOptions& options = {});
   /// Solves with the current factor. Throws NumericalError on a non-finite result.

@@ -1,0 +1,201 @@
+#include "dg/CohesiveFracture.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+CrackingMode parse_cracking_mode(const std::string& name) {
+  for (CrackingMode m : {CrackingMode::pre_inserted, CrackingMode::restricted,
+                         CrackingMode::contiguous, CrackingMode::arbitrary})
+    if (cracking_mode_name(m) == name) return m;
+  throw InputError("cracking mode '" + name +
+                   "': expected pre-inserted, restricted, contiguous or arbitrary");
+}
+
+std::string cracking_mode_name(CrackingMode mode) {
+  switch (mode) {
+    case CrackingMode::pre_inserted: return "pre-inserted";
+    case CrackingMode::restricted: return "restricted";
+    case CrackingMode::contiguous: return "contiguous";
+    case CrackingMode::arbitrary: break;
+  }
+  return "arbitrary";
+}
+
+CohesiveFracture::CohesiveFracture(const ElementTable& table,
+                                   const ElasticityIntegrator& integrator,
+                                   const FractureSetup& setup, const CohesiveParameters& law,
+                                   const MohrCoulombParameters& criterion,
+                                   const DgOptions& coupling, int threads)
+    : table_(table),
+      integrator_(integrator),
+      setup_(setup),
+      law_(law),
+      criterion_(criterion),
+      coupling_(coupling),
+      threads_(std::max(threads, 1)) {
+  const int edges = table.mesh().num_edges();
+  if (static_cast<int>(setup.line.size()) != edges || static_cast<int>(setup.notch.size()) != edges)
+    throw InputError("fracture setup: line and notch flags must have one entry per mesh edge");
+  if ((setup.mode == CrackingMode::pre_inserted) != law_.intrinsic())
+    throw InputError(setup.mode == CrackingMode::pre_inserted
+                         ? "cracking mode pre-inserted: the law needs an initial stiffness > 0"
+                         : "an initial stiffness belongs to pre-inserted faces only");
+  if (!(setup.thickness > 0.0)) throw InputError("thickness: expected > 0");
+}
+
+/// Edges across which the DOFs split: the notch and wherever the mode lets a crack form.
+std::vector<char> CohesiveFracture::crack_capable() const {
+  const PolygonMesh& mesh = table_.mesh();
+  std::vector<char> capable(mesh.num_edges(), 0);
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    capable[e] = !mesh.edge(e).on_boundary() &&
+                 (setup_.notch[e] || setup_.line[e] || cracks_anywhere(setup_.mode));
+  return capable;
+}
+
+void CohesiveFracture::setup_system() {
+  Stopwatch clock;
+  const PolygonMesh& mesh = table_.mesh();
+  std::vector<char> connected = crack_capable();
+  for (char& c : connected) c = !c;
+  map_.emplace(mesh, connected);
+  space_ = std::make_unique<DgSpace>(mesh, *map_);
+  ops_ = std::make_unique<InterfaceOperators>(*space_, integrator_, table_);
+  seconds_["dof_map"] = clock.seconds();
+
+  clock.restart();
+  const auto cells = integrator_.all_cell_matrices(threads_);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const int m = space_->cell_dof_count(c);
+    const std::vector<int> dofs = space_->cell_dofs(c);
+    const auto Kc = cells.block(c, m);
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) triplets.emplace_back(dofs[i], dofs[j], Kc(i, j));
+  }
+  bulk_.resize(num_dofs(), num_dofs());
+  bulk_.setFromTriplets(triplets.begin(), triplets.end());
+  seconds_["cell_matrices"] = clock.seconds();
+
+  clock.restart();
+  coupling_.method = DgMethod::sipg;
+  penalty_ = std::make_unique<InterfacePenalty>(
+      *ops_, integrator_, cells, penalty_scaling(coupling_), penalty_multiplier(coupling_),
+      coupling_.weighted_average, interface_traction(coupling_), threads_);
+  interfaces_ = std::make_unique<CohesiveInterfaces>(
+      *ops_, *penalty_, interface_traction(coupling_), law_, criterion_);
+  initial_points_.assign(interfaces_->num_points(), InterfacePoint{});
+  for (int p = 0; p < interfaces_->num_points(); ++p) {
+    const int e = interfaces_->face(p).edge;
+    if (setup_.notch[e])
+      initial_points_[p].state = PointState::open;
+    else if (setup_.line[e] && setup_.mode == CrackingMode::pre_inserted)
+      initial_points_[p].state = PointState::cohesive;
+  }
+  seconds_["interfaces"] = clock.seconds();
+  build_constraints();
+  build_gauge();
+}
+
+void CohesiveFracture::build_constraints() {
+  const PolygonMesh& mesh = table_.mesh();
+  std::vector<PrescribedDof> prescribed;
+  for (const VertexConstraint& c : setup_.constraints) {
+    if (c.vertex < 0 || c.vertex >= mesh.num_vertices() || c.component < 0 || c.component > 1)
+      throw InputError("fracture setup: constraint on vertex " + std::to_string(c.vertex) +
+                       ", component " + std::to_string(c.component) + " is out of range");
+    for (int node : map_->vertex_nodes(c.vertex))
+      prescribed.push_back({2 * node + c.component, c.reference});
+  }
+  constraints_.emplace(prescribed, num_dofs());
+}
+
+void CohesiveFracture::build_gauge() {
+  gauge_ = Eigen::VectorXd::Zero(num_dofs());
+  const PolygonMesh& mesh = table_.mesh();
+  const MouthGauge& g = setup_.mouth;
+  for (std::size_t i = 0; i < g.vertices.size(); ++i) {
+    const int v = g.vertices[i];
+    int left = -1, right = -1;
+    double x_left = INFINITY, x_right = -INFINITY;
+    for (int c : mesh.vertex_cells(v)) {
+      const auto loop = mesh.cell_vertices(c);
+      const int k = static_cast<int>(std::find(loop.begin(), loop.end(), v) - loop.begin());
+      const double x = mesh.cell_centroid(c).x();
+      if (x < x_left) x_left = x, left = space_->dof(c, k);
+      if (x > x_right) x_right = x, right = space_->dof(c, k);
+    }
+    if (left == right) continue;  // not split here
+    gauge_[right] += g.weights[i];
+    gauge_[left] -= g.weights[i];
+  }
+}
+
+Eigen::VectorXd CohesiveFracture::forces(const Eigen::VectorXd& u,
+                                         std::vector<InterfacePoint>& points,
+                                         Eigen::SparseMatrix<double>* tangent) const {
+  Eigen::VectorXd f = bulk_ * u;
+  std::vector<Eigen::Triplet<double>> triplets;
+  interfaces_->add(u, points, f, tangent ? &triplets : nullptr);
+  if (tangent) {
+    Eigen::SparseMatrix<double> interface(num_dofs(), num_dofs());
+    interface.setFromTriplets(triplets.begin(), triplets.end());
+    *tangent = bulk_ + interface;
+  }
+  return f;
+}
+
+double CohesiveFracture::load(const Eigen::VectorXd& force) const {
+  return setup_.thickness * constraints_->conjugate(force);
+}
+
+double CohesiveFracture::stroke(double lambda) const {
+  for (const VertexConstraint& c : setup_.constraints)
+    if (c.reference != 0.0) return lambda * std::abs(c.reference);
+  return lambda;
+}
+
+FractureEnergies CohesiveFracture::energies(const Eigen::VectorXd& u,
+                                            const std::vector<InterfacePoint>& points) const {
+  const InterfaceEnergies e = interfaces_->energies(u, points);
+  const double t = setup_.thickness;
+  FractureEnergies out;
+  out.elastic = t * 0.5 * u.dot(bulk_ * u);
+  out.coupling = t * e.coupling;
+  out.cohesive = t * e.cohesive;
+  out.dissipated = t * e.dissipated;
+  out.crack_length = e.crack_length;
+  return out;
+}
+
+std::vector<int> CohesiveFracture::eligible_points(
+    const std::vector<InterfacePoint>& points) const {
+  std::vector<int> out;
+  if (setup_.mode == CrackingMode::pre_inserted) return out;
+  const PolygonMesh& mesh = table_.mesh();
+  // Contiguous: a face may crack only if it touches a vertex of the notch or of a cracked face.
+  std::vector<char> crack_vertex(mesh.num_vertices(), 0);
+  if (setup_.mode == CrackingMode::contiguous)
+    for (int p = 0; p < interfaces_->num_points(); ++p)
+      if (points[p].state != PointState::intact) {
+        const MeshEdge& edge = mesh.edge(interfaces_->face(p).edge);
+        crack_vertex[edge.v0] = crack_vertex[edge.v1] = 1;
+      }
+  for (int p = 0; p < interfaces_->num_points(); ++p) {
+    if (points[p].state != PointState::intact) continue;
+    const MeshEdge& edge = mesh.edge(interfaces_->face(p).edge);
+    const bool allowed =
+        setup_.mode == CrackingMode::arbitrary ||
+        (setup_.mode == CrackingMode::restricted && setup_.line[interfaces_->face(p).edge]) ||
+        (setup_.mode == CrackingMode::contiguous &&
+         (crack_vertex[edge.v0] || crack_vertex[edge.v1]));
+    if (allowed) out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,176 @@
+#include "dg/CohesiveInterfaces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/quadrature/TriangleRule.hpp"
+
+namespace vorodg {
+namespace {
+
+// A separated piece held only by contact would make the tangent singular: open points keep this
+// fraction of eps in the tangent (not in the residual, so converged states are unchanged).
+constexpr double kOpenTangentFraction = 1e-9;
+
+}  // namespace
+
+CohesiveInterfaces::CohesiveInterfaces(const InterfaceOperators& ops,
+                                       const InterfacePenalty& penalty, TractionKind kind,
+                                       const CohesiveLaw& law, const MohrCoulomb& criterion)
+    : ops_(ops), penalty_(penalty), law_(law), criterion_(criterion) {
+  const auto& faces = ops.space().interfaces();
+  const SegmentRule& rule = gauss2_segment();
+  dofs_.reserve(faces.size());
+  traction_.reserve(2 * faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    dofs_.push_back(ops.dofs(faces[i]));
+    const bool constant = kind != TractionKind::point;
+    for (int q = 0; q < 2; ++q)
+      if (q == 0 || !constant)
+        traction_.push_back(
+            ops.traction(faces[i], constant ? 0.5 : rule.t[q], kind, penalty.weights(int(i))));
+      else
+        traction_.push_back(traction_.back());
+  }
+}
+
+double CohesiveInterfaces::weight(int p) const {
+  return gauss2_segment().weights[p % 2] * face(p).length;
+}
+
+InterfaceOperator CohesiveInterfaces::jump(int p) const {
+  return ops_.jump(face(p), gauss2_segment().t[p % 2]);
+}
+
+Eigen::VectorXd CohesiveInterfaces::local(const Eigen::VectorXd& u, int i) const {
+  return u(dofs_[i]);
+}
+
+Eigen::Matrix2d CohesiveInterfaces::frame(int i) const {
+  const Eigen::Vector2d n = ops_.space().interfaces()[i].normal;
+  Eigen::Matrix2d R;
+  R << n.x(), n.y(), -n.y(), n.x();
+  return R;
+}
+
+Eigen::Vector2d CohesiveInterfaces::opening(const Eigen::VectorXd& u, int p) const {
+  return -frame(p / 2) * (jump(p) * local(u, p / 2));  // g = u_2 - u_1 = -[u]
+}
+
+Eigen::Vector2d CohesiveInterfaces::cell_traction(const Eigen::VectorXd& u, int p) const {
+  return frame(p / 2) * (traction_[p] * local(u, p / 2));
+}
+
+double CohesiveInterfaces::utilization(const Eigen::VectorXd& u, int p) const {
+  const Eigen::Vector2d t = cell_traction(u, p);
+  return criterion_.utilization(t[0], t[1]);
+}
+
+void CohesiveInterfaces::face_law(int p, const Eigen::Vector2d& g, InterfacePoint& point,
+                                  Eigen::Vector2d& tau, Eigen::Matrix2d& C) const {
+  const double eps = penalty_.eps(p / 2);
+  tau.setZero();
+  C.setZero();
+  if (point.state == PointState::cohesive) {
+    const bool fresh = !law_.intrinsic() && point.history.max_opening == 0.0;
+    if (fresh && g[0] <= 0.0) {
+      // Inserted but not yet opened: the face sticks, stiff as the coupling, and its normal
+      // traction meets the law's sigma_c continuously at g_n = 0 (where opening starts).
+      tau = Eigen::Vector2d(law_.parameters().strength + eps * g[0], eps * g[1]);
+      C = eps * Eigen::Matrix2d::Identity();
+      return;
+    }
+    const auto r = law_.respond(g, point.history);
+    tau = r.traction;
+    C = r.tangent;
+    // The secant stiffness of sliding, beta^2 T / delta, grows without bound as the effective
+    // opening vanishes; above eps (the coupling's stiffness) sliding is held by eps instead, in
+    // the traction and in its tangent alike, so the iteration stays consistent.
+    const double beta2 = law_.parameters().shear_factor * law_.parameters().shear_factor;
+    if (r.effective_opening > 0.0) {
+      const double sliding = beta2 * law_.envelope(point.history.max_opening) /
+                             std::max(point.history.max_opening, r.effective_opening);
+      if (sliding > eps) {
+        tau[1] = eps * g[1];
+        C(1, 1) = eps, C(0, 1) = C(1, 0) = 0.0;
+      }
+    }
+    if (law_.envelope(point.history.max_opening) == 0.0 && point.history.max_opening > 0.0)
+      point.state = PointState::open;  // fully softened: nothing left to carry
+  }
+  if (point.state == PointState::open)
+    C += kOpenTangentFraction * eps * Eigen::Matrix2d::Identity();
+  if (g[0] < 0.0) {  // overclosure: the contact penalty
+    tau[0] += eps * g[0];
+    C(0, 0) += eps;
+  }
+}
+
+void CohesiveInterfaces::add(const Eigen::VectorXd& u, std::vector<InterfacePoint>& points,
+                             Eigen::VectorXd& force,
+                             std::vector<Eigen::Triplet<double>>* tangent) const {
+  const auto& faces = ops_.space().interfaces();
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const std::vector<int>& dofs = dofs_[i];
+    const Eigen::VectorXd ui = u(dofs);
+    const int m = static_cast<int>(dofs.size());
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
+    const Eigen::Matrix2d R = frame(int(i));
+    for (int q = 0; q < 2; ++q) {
+      const int p = 2 * int(i) + q;
+      const double w = weight(p), eps = penalty_.eps(int(i));
+      const InterfaceOperator J = jump(p);
+      if (points[p].state == PointState::intact) {
+        // w (eps [u].[v] - {sigma(u)}n.[v] - {sigma(v)}n.[u]): symmetric interior penalty.
+        const Eigen::MatrixXd JT = J.transpose() * traction_[p];
+        const Eigen::MatrixXd M = w * (eps * J.transpose() * J - JT - JT.transpose());
+        K += M;
+        f += M * ui;
+        continue;
+      }
+      // w t(g).dg with dg = -R J du: the face law's work on the opening.
+      const Eigen::Vector2d g = -R * (J * ui);
+      Eigen::Vector2d tau;
+      Eigen::Matrix2d C;
+      face_law(p, g, points[p], tau, C);
+      const Eigen::MatrixXd RJ = R * J;
+      f -= w * RJ.transpose() * tau;
+      K += w * RJ.transpose() * C * RJ;
+    }
+    for (int a = 0; a < m; ++a) force[dofs[a]] += f[a];
+    if (tangent)
+      for (int b = 0; b < m; ++b)
+        for (int a = 0; a < m; ++a) tangent->emplace_back(dofs[a], dofs[b], K(a, b));
+  }
+}
+
+InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
+                                               const std::vector<InterfacePoint>& points) const {
+  InterfaceEnergies e;
+  for (int p = 0; p < num_points(); ++p) {
+    const double w = weight(p), eps = penalty_.eps(p / 2);
+    const Eigen::VectorXd ui = local(u, p / 2);
+    const InterfaceOperator J = jump(p);
+    if (points[p].state == PointState::intact) {
+      const Eigen::Vector2d jump_u = J * ui, t = traction_[p] * ui;
+      e.coupling += w * (0.5 * eps * jump_u.squaredNorm() - jump_u.dot(t));
+      continue;
+    }
+    e.crack_length += w;
+    const Eigen::Vector2d g = opening(u, p);
+    const double dmax = points[p].history.max_opening;
+    const double beta = law_.parameters().shear_factor;
+    const double delta = std::hypot(std::max(g[0], 0.0), beta * g[1]);
+    // On the unloading line through the origin the stored energy is (T(dmax) / dmax) delta^2 / 2;
+    // an intrinsic law below its peak is on that line with slope K0.
+    const double secant = dmax > 0.0         ? law_.envelope(dmax) / dmax
+                          : law_.intrinsic() ? law_.parameters().initial_stiffness
+                                             : 0.0;
+    e.cohesive += w * (0.5 * secant * delta * delta + 0.5 * eps * std::pow(std::min(g[0], 0.0), 2));
+    e.dissipated += w * law_.dissipated_energy(dmax);
+  }
+  return e;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,81 @@
+#pragma once
+// The interface terms of cohesive fracture in the DG form. Each interface carries two Gauss
+// points, and each point a state (docs/fracture.md "Interface states"):
+//   intact:   coupled as in dg-sipg: w (eps [u].[v] - {sigma(u)}n.[v] - {sigma(v)}n.[u]), which
+//             is consistent, so the jump vanishes wherever the exact solution is continuous;
+//   cohesive: the traction of the cohesive law on the opening g = u_2 - u_1 in the face frame
+//             (normal n from cell 1 to cell 2, tangent (-n_y, n_x)), tension resisting opening;
+//   open:     traction-free (a notch, a fully softened crack);
+// and in the two non-intact states a penalty eps <g_n>_- against overclosure (contact, which the
+// cohesive law leaves alone). An intact point whose traction {sigma}n, from the two cells'
+// stresses, meets the Mohr-Coulomb criterion may turn cohesive; which points are eligible is the
+// cracking mode's business, not this object's.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <vector>
+
+#include "core/material/CohesiveLaw.hpp"
+#include "core/material/MohrCoulomb.hpp"
+#include "dg/InterfaceOperators.hpp"
+#include "dg/InterfacePenalty.hpp"
+
+namespace vorodg {
+
+enum class PointState : std::uint8_t { intact, cohesive, open };
+
+struct InterfacePoint {
+  PointState state = PointState::intact;
+  CohesiveLaw::State history;  // the largest effective opening so far (cohesive, open)
+};
+
+/// Energies per unit thickness.
+struct InterfaceEnergies {
+  double coupling = 0.0;      // intact points: the quadratic form of the SIPG terms
+  double cohesive = 0.0;      // recoverable: unloading lines and the overclosure penalty
+  double dissipated = 0.0;    // the law's dissipation, summed over the points
+  double crack_length = 0.0;  // length of the faces whose points are not intact
+};
+
+class CohesiveInterfaces {
+ public:
+  CohesiveInterfaces(const InterfaceOperators& ops, const InterfacePenalty& penalty,
+                     TractionKind kind, const CohesiveLaw& law, const MohrCoulomb& criterion);
+
+  int num_points() const { return 2 * static_cast<int>(ops_.space().interfaces().size()); }
+  /// Adds the interface forces of u to `force` and, if `tangent` is given, their derivative as
+  /// triplets (one per entry of every interface block, whatever the state: the pattern is fixed).
+  /// Cohesive points advance their history in `points` (pass a trial copy while iterating).
+  void add(const Eigen::VectorXd& u, std::vector<InterfacePoint>& points, Eigen::VectorXd& force,
+           std::vector<Eigen::Triplet<double>>* tangent) const;
+  /// The opening (normal, tangential) at point p: g = u_2 - u_1 in the face frame.
+  Eigen::Vector2d opening(const Eigen::VectorXd& u, int p) const;
+  /// The traction (normal, shear) from the cells' stresses at point p, in the face frame.
+  Eigen::Vector2d cell_traction(const Eigen::VectorXd& u, int p) const;
+  /// The Mohr-Coulomb utilization of that traction (>= 1: the point fails).
+  double utilization(const Eigen::VectorXd& u, int p) const;
+  InterfaceEnergies energies(const Eigen::VectorXd& u,
+                             const std::vector<InterfacePoint>& points) const;
+  const Interface& face(int p) const { return ops_.space().interfaces()[p / 2]; }
+  /// Quadrature weight (length included) of point p.
+  double weight(int p) const;
+  const CohesiveLaw& law() const { return law_; }
+
+ private:
+  Eigen::VectorXd local(const Eigen::VectorXd& u, int i) const;
+  Eigen::Matrix2d frame(int i) const;  // rows n^T and t^T
+  InterfaceOperator jump(int p) const;
+  /// The law plus the overclosure penalty at a non-intact point: traction and tangent in the
+  /// face frame.
+  void face_law(int p, const Eigen::Vector2d& g, InterfacePoint& point, Eigen::Vector2d& tau,
+                Eigen::Matrix2d& C) const;
+
+  const InterfaceOperators& ops_;
+  const InterfacePenalty& penalty_;
+  const CohesiveLaw& law_;
+  const MohrCoulomb& criterion_;
+  std::vector<std::vector<int>> dofs_;       // per interface
+  std::vector<InterfaceOperator> traction_;  // per point: {sigma}_w n
+};
+
+}  // namespace vorodg

@@ -1,0 +1,103 @@
+#pragma once
+// Quasi-static path following for cohesive fracture (docs/fracture.md "Path following"). The
+// machine's stroke is a load parameter lambda (ProportionalConstraints); each step solves the
+// equilibrium R(u, lambda) = 0 with Newton on the consistent tangent and one extra equation that
+// says how far the step goes:
+//   displacement: lambda = lambda_0 + d lambda (snap-back cannot be followed);
+//   cmod:         the crack mouth opening gauge . u = cmod_0 + d cmod (indirect displacement
+//                 control: the opening grows monotonically through snap-back);
+//   arc-length:   |x - x_0| = ds over the free DOFs (cylindrical, Crisfield's root choice).
+// The extra equation is solved by bordering: two back-solves with one factor per iteration. The
+// symbolic factorization is kept for the run (the pattern never changes); the factor is LL^T
+// until the tangent is indefinite, LDL^T after. A step that fails is halved, up to max_cuts
+// times; a run that still fails keeps every converged step and says so.
+// Before anything softens the response is linear, and cmod or arc-length control may have
+// nothing to hold on to (an intact crack line does not open): steps are displacement-controlled
+// until the first point softens. Extrinsic insertion is an event located inside the step: the
+// step is shortened (regula falsi) until the largest Mohr-Coulomb utilization of the eligible
+// intact points lies in [1, 1 + event_tolerance], and the points at or above 1 turn cohesive there.
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/solve/SparseCholesky.hpp"
+#include "dg/CohesiveFracture.hpp"
+
+namespace vorodg {
+
+enum class LoadControl { displacement, cmod, arc_length };
+/// Parses displacement, cmod, arc-length; throws InputError otherwise.
+LoadControl parse_load_control(const std::string& name);
+std::string load_control_name(LoadControl control);
+
+struct PathOptions {
+  LoadControl control = LoadControl::displacement;
+  double max_stroke = 0.0;  // end of the path in stroke (displacement, arc-length), if > 0
+  double max_cmod = 0.0;    // end of the path in crack mouth opening (cmod, arc-length), if > 0
+  int steps = 100;          // nominal steps to the end of the path
+  int max_iterations = 30;
+  double tolerance = 1e-10;  // residual norm relative to the force scale
+  int max_cuts = 10;
+  double event_tolerance = 1e-9;
+};
+
+/// One converged point of the path; forces in newtons and energies in joules (thickness in).
+struct PathPoint {
+  int step = 0;
+  double stroke = 0.0, cmod = 0.0, load = 0.0;
+  double external_work = 0.0;
+  FractureEnergies energy;
+  int iterations = 0;
+  int inserted = 0;  // points that turned cohesive at this point
+  /// |W - stored - dissipated| / W (0 before any work is done).
+  double balance_error() const;
+};
+
+class QuasiStaticPath {
+ public:
+  QuasiStaticPath(const CohesiveFracture& model, const PathOptions& options);
+  using Observer = std::function<void(const PathPoint&, const Eigen::VectorXd& u,
+                                      const std::vector<InterfacePoint>& points)>;
+  /// Follows the path, reporting every converged point (step 0 is the unloaded state). Returns
+  /// false if a step failed after every cut; failure() says why.
+  bool run(const Observer& observe);
+  const std::string& failure() const { return failure_; }
+  int factorizations() const { return factorizations_; }
+
+ private:
+  struct State {
+    Eigen::VectorXd x;  // free DOFs
+    double lambda = 0.0;
+    std::vector<InterfacePoint> points;
+    Eigen::VectorXd force;  // internal forces on all DOFs
+  };
+  struct Target {
+    LoadControl control;
+    double value;  // lambda, cmod or arc length
+  };
+  bool newton(const State& start, const Target& target, State& out, int& iterations);
+  Target step_target(const State& start, LoadControl control, double fraction) const;
+  double max_utilization(const State& s, const Eigen::VectorXd& u) const;
+  Eigen::VectorXd full(const State& s) const { return model_.constraints().expand(s.x, s.lambda); }
+  double cmod(const State& s) const { return model_.mouth_gauge().dot(full(s)); }
+  bool softened(const State& s) const;
+  bool finished(const State& s) const;
+  void factor(const Eigen::SparseMatrix<double>& tangent, Eigen::VectorXd& q);
+  PathPoint point_of(const State& s, int step, const PathPoint& previous) const;
+  bool take_step(State& state, int& iterations, int& inserted);
+  double event_excess(const State& start, const State& trial) const;
+
+  const CohesiveFracture& model_;
+  PathOptions options_;
+  SparseCholesky solver_;
+  bool indefinite_ = false, analysed_ = false;
+  int factorizations_ = 0;
+  double force_scale_ = 1.0;
+  double elastic_step_ = 0.0;  // stroke per step before anything softens (cmod, arc-length)
+  double arc_ = 0.0;           // arc-length: the current step's radius
+  Eigen::VectorXd previous_increment_;  // arc-length: the last step's dx, for the root choice
+  std::string failure_;
+};
+
+}  // namespace vorodg

@@ -29,7 +29,12 @@ struct FractureEnergies {
   double cohesive = 0.0;      // recoverable energy of cohesive faces and overclosure
   double dissipated = 0.0;    // the cohesive law's dissipation
   double crack_length = 0.0;  // faces past the strength (not the notch)
+  // What the bookkeeping loses when intact points turn cohesive: their coupling energy less
+  // the law's energy at their opening (nonzero where the weakly continuous field had a jump).
+  double switched = 0.0;
   double stored() const { return elastic + coupling + cohesive; }
+  /// Everything the external work went into.
+  double accounted() const { return stored() + dissipated + switched; }
 };
 
 class CohesiveFracture {

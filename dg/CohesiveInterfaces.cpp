@@ -57,13 +57,43 @@ Eigen::Vector2d CohesiveInterfaces::opening(const Eigen::VectorXd& u, int p) con
   return -frame(p / 2) * (jump(p) * local(u, p / 2));  // g = u_2 - u_1 = -[u]
 }
 
-Eigen::Vector2d CohesiveInterfaces::cell_traction(const Eigen::VectorXd& u, int p) const {
-  return frame(p / 2) * (traction_[p] * local(u, p / 2));
+Eigen::Vector2d CohesiveInterfaces::flux_traction(const Eigen::VectorXd& u, int p) const {
+  // R ({sigma}n - eps [u]) with [u] = -R^T g: the cells' traction plus eps times the opening.
+  return frame(p / 2) * (traction_[p] * local(u, p / 2)) + penalty_.eps(p / 2) * opening(u, p);
 }
 
 double CohesiveInterfaces::utilization(const Eigen::VectorXd& u, int p) const {
-  const Eigen::Vector2d t = cell_traction(u, p);
+  const Eigen::Vector2d t = flux_traction(u, p);
   return criterion_.utilization(t[0], t[1]);
+}
+
+void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, InterfacePoint& point,
+                                      Eigen::Vector2d& tau, Eigen::Matrix2d& C) const {
+  const Eigen::Vector2d d = g - point.offset;
+  if (!law_.intrinsic() && point.history.max_opening == 0.0 && d[0] <= 0.0) {
+    // Inserted but not yet opened: the face sticks, stiff as the coupling, and its normal
+    // traction meets the law's sigma_c continuously where opening starts.
+    tau = Eigen::Vector2d(law_.parameters().strength + eps * d[0], eps * d[1]);
+    C = eps * Eigen::Matrix2d::Identity();
+    return;
+  }
+  const auto r = law_.respond(d, point.history);
+  tau = r.traction;
+  C = r.tangent;
+  // The secant stiffness of sliding, beta^2 T / delta, grows without bound as the effective
+  // opening vanishes; above eps (the coupling's stiffness) sliding is held by eps instead, in
+  // the traction and in its tangent alike, so the iteration stays consistent.
+  const double beta2 = law_.parameters().shear_factor * law_.parameters().shear_factor;
+  if (r.effective_opening > 0.0) {
+    const double sliding = beta2 * law_.envelope(point.history.max_opening) /
+                           std::max(point.history.max_opening, r.effective_opening);
+    if (sliding > eps) {
+      tau[1] = eps * d[1];
+      C(1, 1) = eps, C(0, 1) = C(1, 0) = 0.0;
+    }
+  }
+  if (law_.envelope(point.history.max_opening) == 0.0 && point.history.max_opening > 0.0)
+    point.state = PointState::open;  // fully softened: nothing left to carry
 }
 
 void CohesiveInterfaces::face_law(int p, const Eigen::Vector2d& g, InterfacePoint& point,
@@ -71,33 +101,7 @@ void CohesiveInterfaces::face_law(int p, const Eigen::Vector2d& g, InterfacePoin
   const double eps = penalty_.eps(p / 2);
   tau.setZero();
   C.setZero();
-  if (point.state == PointState::cohesive) {
-    const bool fresh = !law_.intrinsic() && point.history.max_opening == 0.0;
-    if (fresh && g[0] <= 0.0) {
-      // Inserted but not yet opened: the face sticks, stiff as the coupling, and its normal
-      // traction meets the law's sigma_c continuously at g_n = 0 (where opening starts).
-      tau = Eigen::Vector2d(law_.parameters().strength + eps * g[0], eps * g[1]);
-      C = eps * Eigen::Matrix2d::Identity();
-      return;
-    }
-    const auto r = law_.respond(g, point.history);
-    tau = r.traction;
-    C = r.tangent;
-    // The secant stiffness of sliding, beta^2 T / delta, grows without bound as the effective
-    // opening vanishes; above eps (the coupling's stiffness) sliding is held by eps instead, in
-    // the traction and in its tangent alike, so the iteration stays consistent.
-    const double beta2 = law_.parameters().shear_factor * law_.parameters().shear_factor;
-    if (r.effective_opening > 0.0) {
-      const double sliding = beta2 * law_.envelope(point.history.max_opening) /
-                             std::max(point.history.max_opening, r.effective_opening);
-      if (sliding > eps) {
-        tau[1] = eps * g[1];
-        C(1, 1) = eps, C(0, 1) = C(1, 0) = 0.0;
-      }
-    }
-    if (law_.envelope(point.history.max_opening) == 0.0 && point.history.max_opening > 0.0)
-      point.state = PointState::open;  // fully softened: nothing left to carry
-  }
+  if (point.state == PointState::cohesive) cohesive_law(eps, g, point, tau, C);
   if (point.state == PointState::open)
     C += kOpenTangentFraction * eps * Eigen::Matrix2d::Identity();
   if (g[0] < 0.0) {  // overclosure: the contact penalty
@@ -157,17 +161,26 @@ InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
       e.coupling += w * (0.5 * eps * jump_u.squaredNorm() - jump_u.dot(t));
       continue;
     }
-    e.crack_length += w;
     const Eigen::Vector2d g = opening(u, p);
     const double dmax = points[p].history.max_opening;
+    if (law_.dissipated_energy(dmax) > 0.0) e.crack_length += w;
+    const Eigen::Vector2d d = g - points[p].offset;
+    const double closure = 0.5 * eps * std::pow(std::min(g[0], 0.0), 2);
+    if (points[p].state == PointState::cohesive && !law_.intrinsic() && dmax == 0.0) {
+      // Inserted, not yet opened: the sticking branch's potential (see cohesive_law).
+      const double dn = std::min(d[0], 0.0);
+      e.cohesive +=
+          w * (law_.parameters().strength * dn + 0.5 * eps * (dn * dn + d[1] * d[1]) + closure);
+      continue;
+    }
     const double beta = law_.parameters().shear_factor;
-    const double delta = std::hypot(std::max(g[0], 0.0), beta * g[1]);
+    const double delta = std::hypot(std::max(d[0], 0.0), beta * d[1]);
     // On the unloading line through the origin the stored energy is (T(dmax) / dmax) delta^2 / 2;
     // an intrinsic law below its peak is on that line with slope K0.
     const double secant = dmax > 0.0         ? law_.envelope(dmax) / dmax
                           : law_.intrinsic() ? law_.parameters().initial_stiffness
                                              : 0.0;
-    e.cohesive += w * (0.5 * secant * delta * delta + 0.5 * eps * std::pow(std::min(g[0], 0.0), 2));
+    e.cohesive += w * (0.5 * secant * delta * delta + closure);
     e.dissipated += w * law_.dissipated_energy(dmax);
   }
   return e;

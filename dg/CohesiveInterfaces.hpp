@@ -27,6 +27,9 @@ enum class PointState : std::uint8_t { intact, cohesive, open };
 struct InterfacePoint {
   PointState state = PointState::intact;
   CohesiveLaw::State history;  // the largest effective opening so far (cohesive, open)
+  // The opening when the point turned cohesive: the weakly continuous field's jump there. The
+  // law acts on the opening beyond it, so that the traction does not jump at insertion.
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();
 };
 
 /// Energies per unit thickness.
@@ -50,8 +53,9 @@ class CohesiveInterfaces {
            std::vector<Eigen::Triplet<double>>* tangent) const;
   /// The opening (normal, tangential) at point p: g = u_2 - u_1 in the face frame.
   Eigen::Vector2d opening(const Eigen::VectorXd& u, int p) const;
-  /// The traction (normal, shear) from the cells' stresses at point p, in the face frame.
-  Eigen::Vector2d cell_traction(const Eigen::VectorXd& u, int p) const;
+  /// The traction (normal, shear) an intact point transmits, in the face frame: the interior
+  /// penalty flux {sigma}n - eps [u], the cells' stresses corrected by the penalty on the jump.
+  Eigen::Vector2d flux_traction(const Eigen::VectorXd& u, int p) const;
   /// The Mohr-Coulomb utilization of that traction (>= 1: the point fails).
   double utilization(const Eigen::VectorXd& u, int p) const;
   InterfaceEnergies energies(const Eigen::VectorXd& u,
@@ -69,6 +73,9 @@ class CohesiveInterfaces {
   /// face frame.
   void face_law(int p, const Eigen::Vector2d& g, InterfacePoint& point, Eigen::Vector2d& tau,
                 Eigen::Matrix2d& C) const;
+  /// The cohesive law's part of face_law, on the opening beyond the point's offset.
+  void cohesive_law(double eps, const Eigen::Vector2d& g, InterfacePoint& point,
+                    Eigen::Vector2d& tau, Eigen::Matrix2d& C) const;
 
   const InterfaceOperators& ops_;
   const InterfacePenalty& penalty_;

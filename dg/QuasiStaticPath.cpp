@@ -24,7 +24,7 @@ std::string load_control_name(LoadControl control) {
 
 double PathPoint::balance_error() const {
   if (!(external_work > 0.0)) return 0.0;
-  return std::abs(external_work - energy.stored() - energy.dissipated) / external_work;
+  return std::abs(external_work - energy.accounted()) / external_work;
 }
 
 QuasiStaticPath::QuasiStaticPath(const CohesiveFracture& model, const PathOptions& options)
@@ -202,7 +202,36 @@ PathPoint QuasiStaticPath::point_of(const State& s, int step, const PathPoint& p
   p.external_work =
       previous.external_work + 0.5 * (previous.load + p.load) * (p.stroke - previous.stroke);
   p.energy = model_.energies(full(s), s.points);
+  p.energy.switched = switched_;
   return p;
+}
+
+/// Turns the eligible intact points at or past the criterion cohesive, and books the jump in
+/// the accounted energy that switching their terms makes.
+int QuasiStaticPath::insert_failed_points(State& trial) {
+  if (model_.setup().mode == CrackingMode::pre_inserted) return 0;
+  const Eigen::VectorXd u = full(trial);
+  const double before = model_.energies(u, trial.points).accounted();
+  int inserted = 0;
+  for (int p : model_.eligible_points(trial.points))
+    if (model_.interfaces().utilization(u, p) >= 1.0) {
+      trial.points[p].state = PointState::cohesive;
+      trial.points[p].offset = model_.interfaces().opening(u, p);
+      ++inserted;
+    }
+  if (inserted == 0) return 0;
+  model_.forces(u, trial.points, nullptr);  // the switched points' law takes up their opening
+  switched_ += before - model_.energies(u, trial.points).accounted();
+  return inserted;
+}
+
+/// Whether the step keeps the energy balance: the trapezoids of the external work must not
+/// drift from the accounted energy by more than balance_tolerance of the work done so far.
+bool QuasiStaticPath::balance_acceptable(const State& trial) const {
+  const PathPoint after = point_of(trial, 0, last_);
+  const double drift = std::abs(after.external_work - after.energy.accounted()) -
+                       std::abs(last_.external_work - last_.energy.accounted());
+  return drift <= options_.balance_tolerance * std::max(after.external_work, 1e-300);
 }
 
 /// How far past its next event a trial state is: the largest of the Mohr-Coulomb utilization less
@@ -262,14 +291,11 @@ bool QuasiStaticPath::take_step(State& state, int& iterations, int& inserted) {
       }
       if (!ok || excess < 0.0) continue;
     }
-    inserted = 0;
-    if (model_.setup().mode != CrackingMode::pre_inserted) {
-      const Eigen::VectorXd u = full(trial);
-      for (int p : model_.eligible_points(trial.points))
-        if (model_.interfaces().utilization(u, p) >= 1.0) {
-          trial.points[p].state = PointState::cohesive;
-          ++inserted;
-        }
+    const double switched_before = switched_;
+    inserted = insert_failed_points(trial);
+    if (!balance_acceptable(trial) && fraction > kSmallestBalancedStep) {
+      switched_ = switched_before;
+      continue;
     }
     if (control == LoadControl::arc_length) previous_increment_ = trial.x - state.x;
     state = std::move(trial);
@@ -283,8 +309,8 @@ bool QuasiStaticPath::run(const Observer& observe) {
   state.x = Eigen::VectorXd::Zero(model_.num_free_dofs());
   state.points = model_.initial_points();
   state.force = Eigen::VectorXd::Zero(model_.num_dofs());
-  PathPoint last = point_of(state, 0, PathPoint{});
-  observe(last, full(state), state.points);
+  last_ = point_of(state, 0, PathPoint{});
+  observe(last_, full(state), state.points);
 
   // A linear probe at lambda = 1 gives the scale of the elastic response.
   State probe;
@@ -298,7 +324,7 @@ bool QuasiStaticPath::run(const Observer& observe) {
   const Eigen::VectorXd u1 = full(probe);
   double largest = 0.0;
   for (int p : model_.eligible_points(probe.points))
-    largest = std::max(largest, model_.interfaces().cell_traction(u1, p).norm());
+    largest = std::max(largest, model_.interfaces().flux_traction(u1, p).norm());
   const double lambda_scale =
       largest > 0.0 ? model_.interfaces().law().parameters().strength / largest : 1.0;
   double U1 = 0.0;
@@ -325,11 +351,11 @@ bool QuasiStaticPath::run(const Observer& observe) {
                  std::to_string(model_.stroke(state.lambda)) + ")";
       return false;
     }
-    PathPoint p = point_of(state, step, last);
+    PathPoint p = point_of(state, step, last_);
     p.iterations = iterations;
     p.inserted = inserted;
     observe(p, full(state), state.points);
-    last = p;
+    last_ = p;
     if (options_.control == LoadControl::arc_length)  // aim at about five iterations a step
       arc_ *= std::clamp(std::sqrt(5.0 / std::max(iterations, 1)), 0.5, 2.0);
   }

@@ -40,6 +40,9 @@ struct PathOptions {
   double tolerance = 1e-10;  // residual norm relative to the force scale
   int max_cuts = 10;
   double event_tolerance = 1e-9;
+  /// A step is halved (down to 1/64 of its length) while the energy balance drifts by more than
+  /// this fraction of the external work over it.
+  double balance_tolerance = 1e-4;
 };
 
 /// One converged point of the path; forces in newtons and energies in joules (thickness in).
@@ -87,6 +90,11 @@ class QuasiStaticPath {
   PathPoint point_of(const State& s, int step, const PathPoint& previous) const;
   bool take_step(State& state, int& iterations, int& inserted);
   double event_excess(const State& start, const State& trial) const;
+  int insert_failed_points(State& trial);
+  bool balance_acceptable(const State& trial) const;
+  static constexpr double kSmallestBalancedStep = 1.0 / 64.0;
+  PathPoint last_;         // the last converged point
+  double switched_ = 0.0;  // energy booked at insertions (PathPoint::energy.switched)
 
   const CohesiveFracture& model_;
   PathOptions options_;

@@ -57,8 +57,11 @@ TEST(SplitDofMap, ALineOfSplitEdgesDoublesItsVertices) {
   const SplitDofMap map(mesh, connected);
   EXPECT_EQ(map.num_nodes(), mesh.num_vertices() + static_cast<int>(on_line.size()));
   for (int v : on_line) EXPECT_EQ(map.vertex_nodes(v).size(), 2u) << "vertex " << v;
-  for (int e = 0; e < mesh.num_edges(); ++e)
-    if (!mesh.edge(e).on_boundary()) EXPECT_EQ(map.joins(mesh, e), bool(connected[e]));
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (!mesh.edge(e).on_boundary()) {
+      EXPECT_EQ(map.joins(mesh, e), bool(connected[e]));
+    }
+  }
 }
 
 TEST(SplitDofMap, ALoneSplitEdgeInsideTheBodyCannotOpen) {

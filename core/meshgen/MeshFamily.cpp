@@ -71,6 +71,48 @@ GeneratedMesh generate_rcp(const MeshSpec& spec) {
   return out;
 }
 
+/// The mesh and its mirror image about x = x_mid, glued along that line: vertices on it (which
+/// the half mesh keeps on its side) are shared, and mirrored loops are reversed to stay
+/// counter-clockwise.
+PolygonMesh mirrored_about(const PolygonMesh& half, const Rectangle& whole,
+                           const std::vector<double>& marks) {
+  const double x_mid = half.domain().x1();
+  const double tol = half.tag_tolerance() * half.domain().scale();
+  std::vector<Point> vertices = half.vertices();
+  for (double y : marks) {
+    int nearest = -1;
+    for (int v = 0; v < half.num_vertices(); ++v) {
+      const Point& p = vertices[v];
+      const bool inner = std::abs(p.x() - x_mid) <= tol && p.y() > half.domain().y0() + tol &&
+                         p.y() < half.domain().y1() - tol;
+      if (inner && (nearest < 0 || std::abs(p.y() - y) < std::abs(vertices[nearest].y() - y)))
+        nearest = v;
+    }
+    if (nearest < 0)
+      throw NumericalError("symmetric mesh: no vertex on the mid-line to move to height " + fmt(y));
+    vertices[nearest].y() = y;
+  }
+  std::vector<int> image(half.num_vertices());
+  for (int v = 0; v < half.num_vertices(); ++v) {
+    const Point& p = half.vertex(v);
+    if (std::abs(p.x() - x_mid) <= tol) {
+      vertices[v].x() = x_mid;
+      image[v] = v;
+    } else {
+      image[v] = static_cast<int>(vertices.size());
+      vertices.emplace_back(2.0 * x_mid - p.x(), p.y());
+    }
+  }
+  std::vector<int> offsets = half.offsets(), loops = half.cell_vertex_list();
+  for (int c = 0; c < half.num_cells(); ++c) {
+    const auto loop = half.cell_vertices(c);
+    for (auto it = loop.rbegin(); it != loop.rend(); ++it) loops.push_back(image[*it]);
+    offsets.push_back(static_cast<int>(loops.size()));
+  }
+  return PolygonMesh(whole, std::move(vertices), std::move(offsets), std::move(loops),
+                     half.tag_tolerance());
+}
+
 GeneratedMesh generate_tri(const MeshSpec& spec) {
   GeneratedMesh out;
   Stopwatch clock;
@@ -116,10 +158,23 @@ MeshFamily parse_family(const std::string& name) {
 }
 
 GeneratedMesh generate_mesh(const MeshSpec& spec) {
+  if (spec.symmetric && spec.family != MeshFamily::rcp)
+    throw InputError("symmetric: only the rcp family is mirrored (found " +
+                     std::string(family_name(spec.family)) + ")");
   GeneratedMesh out;
   Stopwatch clock;
   switch (spec.family) {
-    case MeshFamily::rcp: out = generate_rcp(spec); break;
+    case MeshFamily::rcp:
+      if (spec.symmetric) {
+        MeshSpec half = spec;
+        half.domain = Rectangle(spec.domain.x0(), spec.domain.y0(),
+                                0.5 * (spec.domain.x0() + spec.domain.x1()), spec.domain.y1());
+        out = generate_rcp(half);
+        out.mesh = mirrored_about(out.mesh, spec.domain, spec.line_marks);
+      } else {
+        out = generate_rcp(spec);
+      }
+      break;
     case MeshFamily::tri: out = generate_tri(spec); break;
     case MeshFamily::hex:
       out.mesh = hex_mesh(spec.domain, spec.size);

@@ -36,6 +36,12 @@ struct MeshSpec {
   double perturbation = 0.3;
   /// rcp: edges shorter than this x d are collapsed (0 keeps the raw Voronoi mesh).
   double regularization = 0.1;
+  /// rcp: mirror the left half's mesh about the domain's vertical mid-line, so that a straight
+  /// line of edges runs along it from bottom to top (a crack line for fracture scenes).
+  bool symmetric = false;
+  /// symmetric: heights at which the mid-line must have a vertex (a notch tip); the nearest
+  /// vertex on the line, not a corner, moves along it to each.
+  std::vector<double> line_marks;
   /// file: path of a .vtu mesh; its domain is `domain` if given, else its bounding box.
   std::string path;
   bool domain_given = true;

@@ -9,6 +9,7 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "verification/cli/CliSupport.hpp"
+#include "verification/fracture/FractureStudy.hpp"
 #include "verification/study/ExtremesReport.hpp"
 #include "verification/study/Scene.hpp"
 #include "verification/study/StudyReport.hpp"
@@ -60,6 +61,42 @@ void draw_plots(const fs::path& out) {
     std::cerr << "note: the plots could not be drawn (" << cmd << ")\n";
 }
 
+/// Draws the fracture study's pictures with scripts/fracture_plots.py (a note if it cannot).
+void draw_fracture_plots(const fs::path& out) {
+  const fs::path script = fs::path(VORODG_SOURCE_DIR) / "scripts" / "fracture_plots.py";
+  const char* python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string cmd =
+      std::string(python) + " '" + script.string() + "' '" + out.string() + "' >/dev/null";
+  if (!fs::exists(script) || std::system(cmd.c_str()) != 0)
+    std::cerr << "note: the fracture plots could not be drawn (" << cmd << ")\n";
+}
+
+/// A fracture study (each variant in its own subfolder). A run whose path could not be
+/// followed to its end keeps its converged points; the study then exits 3.
+int run_fracture(const fs::path& path, const StudyOptions& options, bool no_plots,
+                 const Stopwatch& clock) {
+  const FractureScene scene = read_fracture_scene(path);
+  std::vector<const FractureScene*> parts;
+  if (scene.variants.empty()) parts.push_back(&scene);
+  for (const FractureScene& v : scene.variants) parts.push_back(&v);
+  int incomplete = 0;
+  std::size_t runs = 0;
+  for (const FractureScene* part : parts) {
+    const fs::path out = part->label.empty() ? options.out : options.out / part->label;
+    if (!part->label.empty()) std::cout << "\n== " << part->label << "\n";
+    const FractureStudyResult r = run_fracture_study(*part, out, options.threads, options.progress);
+    incomplete += r.incomplete;
+    runs += r.records.size();
+    if (!no_plots) draw_fracture_plots(out);
+  }
+  std::cout << "\n" << scene.name << ": " << runs << " runs, " << clock.seconds() << " s\n";
+  if (incomplete > 0) {
+    std::cerr << "vorodg: " << incomplete << " fracture runs are incomplete (see report.md)\n";
+    return 3;
+  }
+  return 0;
+}
+
 /// An extremes study: each sweep runs (and reports) in its own subfolder, then every run gets
 /// its verdict. Broken runs are findings of the study, not a failure of the program: exit 0.
 int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots,
@@ -106,12 +143,14 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   if (o.out.empty()) throw InputError("run: expected an output folder (-o DIR)");
   if (o.threads < 1) throw InputError("--threads " + std::to_string(o.threads) + ": expected >= 1");
   echo_options("vorodg run", command);
-  const Scene scene = read_scene(resolve_scene(o.scene));
+  const fs::path scene_path = resolve_scene(o.scene);
   Stopwatch clock;
   StudyOptions options;
   options.out = o.out;
   options.threads = o.threads;
   options.progress = !o.quiet;
+  if (is_fracture_scene(scene_path)) return run_fracture(scene_path, options, o.no_plots, clock);
+  const Scene scene = read_scene(scene_path);
   if (scene.study == "extremes") return run_extremes(scene, options, o.no_plots, clock);
   const auto results = run_study(scene, options);
   const StudyReport report = write_study_report(scene, results, o.out);

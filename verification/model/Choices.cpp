@@ -110,6 +110,7 @@ penalty-sweep  the same, over a list of k_p per DG formulation
 patch-suite    every formulation on affine fields: pass or fail against the expected
 trade-off      error against wall time over the knobs; Pareto front
 extremes       sweeps to the numerical extremes, a verdict per run
+fracture       cohesive crack growth along a load path: curves, cracks, distributions per level
 )");
   return choices;
 }

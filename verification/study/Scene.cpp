@@ -31,6 +31,8 @@ void check_sizes(SceneObject& m, const std::vector<double>& sizes, const Rectang
   }
 }
 
+}  // namespace
+
 SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
   SceneMesh mesh;
   const std::string family = m.text("family", std::string(family_name(mesh.family)));
@@ -54,9 +56,14 @@ SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
   if (!(mesh.regularization >= 0 && mesh.regularization < kMaxRegularization))
     m.fail_value("regularization", "expected a fraction of d in [0, " + fmt(kMaxRegularization) +
                                        "), found " + fmt(mesh.regularization));
+  mesh.symmetric = m.flag("symmetric", mesh.symmetric);
+  if (mesh.symmetric && mesh.family != MeshFamily::rcp)
+    m.fail_value("symmetric", "only the rcp family is mirrored, found family " + family);
   m.finish();
   return mesh;
 }
+
+namespace {
 
 /// Reads the value of one schema setting from a scene object into `s` (absent: unchanged).
 void read_setting(SceneObject& object, const SettingSpec& spec, SolveSettings& s) {
@@ -242,6 +249,7 @@ MeshSpec SceneMesh::spec(const Rectangle& domain, int level, std::uint64_t reali
   out.seed = realization_seed;
   out.perturbation = perturbation;
   out.regularization = regularization;
+  out.symmetric = symmetric;
   return out;
 }
 

@@ -26,6 +26,7 @@ struct SceneMesh {
   std::uint64_t seed = MeshSpec{}.seed;
   double perturbation = MeshSpec{}.perturbation;
   double regularization = MeshSpec{}.regularization;
+  bool symmetric = false;  // rcp: mirrored about the vertical mid-line
 
   /// What the generator needs for one realization of one level.
   MeshSpec spec(const Rectangle& domain, int level, std::uint64_t realization_seed) const;
@@ -67,6 +68,10 @@ struct Scene {
   double degraded_factor = 3.0;   // error above this times the baseline: degraded
   double broken_factor = 30.0;    // error above this times the baseline: broken
 };
+
+class SceneObject;
+/// One entry of "meshes" (the keys of docs/scenes.md); every study kind reads its meshes so.
+SceneMesh read_mesh(SceneObject& m, const Rectangle& domain);
 
 /// Reads and validates a scene. Throws InputError naming the file and the key.
 Scene read_scene(const std::filesystem::path& path);

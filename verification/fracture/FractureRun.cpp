@@ -1,0 +1,149 @@
+#include "verification/fracture/FractureRun.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/element/ElementTable.hpp"
+#include "core/io/AtomicFile.hpp"
+#include "core/io/PvdCollection.hpp"
+#include "core/io/VtuMesh.hpp"
+#include "core/mesh/MeshValidator.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "dg/CohesiveFracture.hpp"
+#include "dg/QuasiStaticPath.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vorodg {
+namespace {
+
+/// The deformed mesh as disconnected cells (every cell its own vertex copies, moved by `scale`
+/// times the displacement), with each cell's worst interface state: 0 intact, 1 cohesive, 2 open.
+void write_deformed(const fs::path& path, const CohesiveFracture& model, const Eigen::VectorXd& u,
+                    const std::vector<InterfacePoint>& points, double scale) {
+  const PolygonMesh& mesh = model.space().mesh();
+  std::vector<Point> vertices;
+  std::vector<int> offsets{0}, loops;
+  VtuField displacement{"displacement", 2, {}}, state{"interface_state", 1, {}};
+  state.values.assign(mesh.num_cells(), 0.0);
+  for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+    const Interface& f = model.interfaces().face(p);
+    const double s = points[p].state == PointState::open       ? 2.0
+                     : points[p].state == PointState::cohesive ? 1.0
+                                                               : 0.0;
+    for (int c : f.cell) state.values[c] = std::max(state.values[c], s);
+  }
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const auto loop = mesh.cell_vertices(c);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int dof = model.space().dof(c, static_cast<int>(k));
+      const Eigen::Vector2d d(u[dof], u[dof + 1]);
+      loops.push_back(static_cast<int>(vertices.size()));
+      vertices.push_back(mesh.vertex(loop[k]) + scale * d);
+      displacement.values.push_back(d.x());
+      displacement.values.push_back(d.y());
+    }
+    offsets.push_back(static_cast<int>(loops.size()));
+  }
+  const PolygonMesh exploded(mesh.domain(), std::move(vertices), std::move(offsets),
+                             std::move(loops));
+  write_vtu(path, exploded, {{displacement}, {state}});
+}
+
+/// Faces past the strength (softening or open; not the notch) as segments x0,y0,x1,y1,state.
+std::string crack_faces(const CohesiveFracture& model, const std::vector<InterfacePoint>& points) {
+  std::ostringstream csv;
+  csv << "x0,y0,x1,y1,state\n";
+  const CohesiveLaw& law = model.interfaces().law();
+  for (int p = 0; p + 1 < static_cast<int>(points.size()); p += 2) {
+    const Interface& f = model.interfaces().face(p);
+    if (model.setup().notch[f.edge]) continue;
+    bool cracked = false, open = true;
+    for (int q = p; q < p + 2; ++q) {
+      cracked |= law.dissipated_energy(points[q].history.max_opening) > 0.0;
+      open &= points[q].state == PointState::open;
+    }
+    if (cracked)
+      csv << fmt(f.a.x(), 12) << ',' << fmt(f.a.y(), 12) << ',' << fmt(f.b.x(), 12) << ','
+          << fmt(f.b.y(), 12) << ',' << (open ? "open" : "cohesive") << '\n';
+  }
+  return csv.str();
+}
+
+}  // namespace
+
+FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run,
+                            const fs::path& out) {
+  Stopwatch clock;
+  FractureRecord r;
+  r.run = run;
+  const SceneMesh& sm = scene.meshes[run.mesh];
+  MeshSpec spec = sm.spec(scene.geometry.domain, run.level, run.seed);
+  if (spec.symmetric && scene.geometry.notch_depth > 0.0)  // the notch tip must be a vertex
+    spec.line_marks = {scene.geometry.domain.y0() + scene.geometry.notch_depth};
+  const GeneratedMesh generated = generate_mesh(spec);
+  const PolygonMesh& mesh = generated.mesh;
+  if (const auto report = validate_mesh(mesh); !report.ok())
+    throw NumericalError("invalid mesh: " + report.defects.front().what);
+  r.cells = mesh.num_cells();
+  r.full_dg_dofs = 2 * mesh.offsets().back();
+  r.h_avg = mesh.h_avg();
+  const ElementTable table(mesh, ElementOptions{});
+  const IsotropicElasticity material(scene.E, scene.nu, scene.plane);
+  const ElasticityIntegrator integrator(table, material, false);
+  const FractureSetup setup = fracture_setup(mesh, scene.geometry, scene.mode, scene.thickness);
+  CohesiveParameters law = scene.law;
+  if (scene.mode == CrackingMode::pre_inserted)
+    law.initial_stiffness = scene.initial_stiffness * scene.E / mesh.h_avg();
+  CohesiveFracture model(table, integrator, setup, law, scene.criterion, DgOptions{});
+  model.setup_system();
+  r.dofs = model.num_dofs();
+
+  const std::string id = run.id();
+  fs::create_directories(out / "curves");
+  fs::create_directories(out / "cracks");
+  std::ostringstream curve;
+  curve << "step,displacement,cmod,load,external_work,elastic_energy,dissipated_energy,"
+           "coupling_energy,cohesive_energy,switched_energy,crack_length,inserted,newton_"
+           "iterations\n";
+  PvdCollection series(out / "vtu" / (id + ".pvd"));
+  // Displacements are tiny against the body: magnify them to a twentieth of the body's size.
+  const double magnify = 0.05 * scene.geometry.domain.scale() /
+                         std::max(scene.loading.max_stroke, scene.loading.max_cmod);
+  std::vector<InterfacePoint> last_points;
+  QuasiStaticPath path(model, scene.loading);
+  const bool complete = path.run([&](const PathPoint& p, const Eigen::VectorXd& u,
+                                     const std::vector<InterfacePoint>& points) {
+    curve << p.step << ',' << fmt(p.stroke, 12) << ',' << fmt(p.cmod, 12) << ',' << fmt(p.load, 12)
+          << ',' << fmt(p.external_work, 12) << ',' << fmt(p.energy.elastic, 12) << ','
+          << fmt(p.energy.dissipated, 12) << ',' << fmt(p.energy.coupling, 12) << ','
+          << fmt(p.energy.cohesive, 12) << ',' << fmt(p.energy.switched, 12) << ','
+          << fmt(p.energy.crack_length, 12) << ',' << p.inserted << ',' << p.iterations << '\n';
+    if (p.load > r.peak_load) r.peak_load = p.load, r.displacement_at_peak = p.stroke;
+    r.dissipated_energy = p.energy.dissipated;
+    r.crack_length = p.energy.crack_length;
+    r.energy_balance_error = std::max(r.energy_balance_error, p.balance_error());
+    r.newton_iterations += p.iterations;
+    ++r.points;
+    if (scene.vtu_every > 0 && p.step % scene.vtu_every == 0) {
+      const fs::path file = out / "vtu" / id / ("step_" + std::to_string(p.step) + ".vtu");
+      fs::create_directories(file.parent_path());
+      write_deformed(file, model, u, points, magnify);
+      series.add(p.stroke, file);
+    }
+    last_points = points;
+  });
+  write_file_atomically(out / "curves" / (id + ".csv"), curve.str());
+  write_file_atomically(out / "cracks" / (id + ".csv"), crack_faces(model, last_points));
+  r.complete = complete;
+  r.failure = path.failure();
+  r.factorizations = path.factorizations();
+  r.seconds = clock.seconds();
+  return r;
+}
+
+}  // namespace vorodg

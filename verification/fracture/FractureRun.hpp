@@ -1,0 +1,38 @@
+#pragma once
+// One run of a fracture study: a mesh realization at one level, followed along the load path.
+// Its curve, its crack faces and its deformed-mesh series are written as it goes (curves and
+// .vtu atomically, so a stopped run leaves only whole files); its summary becomes one record.
+#include <filesystem>
+#include <string>
+
+#include "verification/fracture/FractureScene.hpp"
+
+namespace vorodg {
+
+struct FractureRunId {
+  int mesh = 0, level = 0, realization = 0;
+  std::string label;  // family label
+  std::uint64_t seed = 0;
+  std::string id() const {
+    return label + "-L" + std::to_string(level) + "-R" + std::to_string(realization);
+  }
+};
+
+struct FractureRecord {
+  FractureRunId run;
+  int cells = 0, dofs = 0, full_dg_dofs = 0;
+  double h_avg = 0.0;
+  double peak_load = 0.0, displacement_at_peak = 0.0;
+  double dissipated_energy = 0.0, crack_length = 0.0;
+  double energy_balance_error = 0.0;  // the largest over the converged points
+  int points = 0, newton_iterations = 0, factorizations = 0;
+  bool complete = false;
+  std::string failure;
+  double seconds = 0.0;
+};
+
+/// Runs one realization, writing curves/<id>.csv, cracks/<id>.csv and vtu/<id>.pvd under `out`.
+FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run,
+                            const std::filesystem::path& out);
+
+}  // namespace vorodg

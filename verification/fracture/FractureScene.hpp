@@ -1,0 +1,42 @@
+#pragma once
+// The scene of a `fracture` study (keys in docs/scenes.md "Fracture scenes"): one problem, one
+// material, one cohesive law and criterion, one cracking mode and loading, over mesh families with
+// levels and realizations. `variants` (a list of objects merged over the top-level keys, each
+// with a `label`) runs several such studies side by side, each into its own subfolder.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/material/CohesiveLaw.hpp"
+#include "core/material/IsotropicElasticity.hpp"
+#include "core/material/MohrCoulomb.hpp"
+#include "dg/QuasiStaticPath.hpp"
+#include "verification/problems/FractureProblem.hpp"
+#include "verification/study/Scene.hpp"
+
+namespace vorodg {
+
+struct FractureScene {
+  std::filesystem::path path;
+  std::string name, description, label;  // label: the variant's (empty at the top level)
+  FractureGeometry geometry;
+  double E = 30e9, nu = 0.2;
+  PlaneModel plane = PlaneModel::stress;
+  double thickness = 1.0;
+  CohesiveParameters law;           // initial_stiffness set per mesh for pre-inserted faces
+  MohrCoulombParameters criterion;  // cohesion, friction, tensile cutoff (default: strength)
+  double initial_stiffness = 1e3;   // pre-inserted: K0 = this x E / h_avg
+  CrackingMode mode = CrackingMode::restricted;
+  PathOptions loading;
+  std::vector<SceneMesh> meshes;
+  int vtu_every = 10;  // a .vtu of the deformed mesh every this many steps (0: none)
+  std::vector<FractureScene> variants;
+};
+
+/// Reads a fracture scene from its JSON text; throws InputError naming the key.
+FractureScene parse_fracture_scene(const std::string& text, const std::string& source);
+/// True if the scene file's study is `fracture`.
+bool is_fracture_scene(const std::filesystem::path& path);
+FractureScene read_fracture_scene(const std::filesystem::path& path);
+
+}  // namespace vorodg

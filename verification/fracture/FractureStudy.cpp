@@ -1,0 +1,248 @@
+#include "verification/fracture/FractureStudy.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "core/io/AtomicFile.hpp"
+#include "core/util/Format.hpp"
+#include "core/util/Random.hpp"
+#include "verification/report/KolmogorovSmirnov.hpp"
+#include "verification/report/SampleStatistics.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace vorodg {
+namespace {
+
+std::vector<FractureRunId> expand(const FractureScene& scene) {
+  std::vector<FractureRunId> runs;
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const SceneMesh& mesh = scene.meshes[m];
+    for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
+      for (int r = 0; r < mesh.realizations; ++r) {
+        FractureRunId id;
+        id.mesh = static_cast<int>(m), id.level = level, id.realization = r;
+        id.label = mesh.label;
+        id.seed = derive_seed(derive_seed(mesh.seed, level), r);
+        runs.push_back(id);
+      }
+  }
+  return runs;
+}
+
+json to_json(const FractureRecord& r) {
+  return {{"id", r.run.id()},
+          {"mesh", r.run.label},
+          {"level", r.run.level},
+          {"realization", r.run.realization},
+          {"seed", r.run.seed},
+          {"cells", r.cells},
+          {"dofs", r.dofs},
+          {"full_dg_dofs", r.full_dg_dofs},
+          {"h_avg", r.h_avg},
+          {"peak_load", r.peak_load},
+          {"displacement_at_peak", r.displacement_at_peak},
+          {"dissipated_energy", r.dissipated_energy},
+          {"crack_length", r.crack_length},
+          {"energy_balance_error", r.energy_balance_error},
+          {"points", r.points},
+          {"newton_iterations", r.newton_iterations},
+          {"factorizations", r.factorizations},
+          {"complete", r.complete},
+          {"failure", r.failure},
+          {"seconds", r.seconds}};
+}
+
+FractureRecord from_json(const json& j, const FractureRunId& id) {
+  FractureRecord r;
+  r.run = id;
+  r.cells = j.at("cells"), r.dofs = j.at("dofs"), r.full_dg_dofs = j.at("full_dg_dofs");
+  r.h_avg = j.at("h_avg"), r.peak_load = j.at("peak_load");
+  r.displacement_at_peak = j.at("displacement_at_peak");
+  r.dissipated_energy = j.at("dissipated_energy"), r.crack_length = j.at("crack_length");
+  r.energy_balance_error = j.at("energy_balance_error");
+  r.points = j.at("points"), r.newton_iterations = j.at("newton_iterations");
+  r.factorizations = j.at("factorizations");
+  r.complete = j.at("complete"), r.failure = j.at("failure"), r.seconds = j.at("seconds");
+  return r;
+}
+
+std::map<std::string, json> read_done(const fs::path& file) {
+  std::map<std::string, json> done;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    try {
+      const json j = json::parse(line);
+      done[j.at("id")] = j;
+    } catch (const json::exception&) {  // a line cut short by a stop: that run runs again
+    }
+  }
+  return done;
+}
+
+struct LevelStats {
+  std::string mesh;
+  int level = 0;
+  double h_avg = 0.0;
+  std::vector<double> peak, dissipated, crack;
+};
+
+std::vector<LevelStats> by_level(const std::vector<FractureRecord>& records) {
+  std::vector<LevelStats> levels;
+  for (const FractureRecord& r : records) {
+    if (!r.complete) continue;
+    if (levels.empty() || levels.back().mesh != r.run.label || levels.back().level != r.run.level)
+      levels.push_back({r.run.label, r.run.level, 0.0, {}, {}, {}});
+    LevelStats& l = levels.back();
+    l.h_avg += r.h_avg;
+    l.peak.push_back(r.peak_load);
+    l.dissipated.push_back(r.dissipated_energy);
+    l.crack.push_back(r.crack_length);
+  }
+  for (LevelStats& l : levels) l.h_avg /= static_cast<double>(l.peak.size());
+  return levels;
+}
+
+json stats_json(const std::vector<double>& v) {
+  const SampleStatistics s = sample_statistics(v);
+  json j = {{"mean", s.mean}, {"min", s.min}, {"max", s.max}, {"values", v}};
+  if (s.std_dev) j["std_dev"] = *s.std_dev;
+  return j;
+}
+
+void write_reports(const FractureScene& scene, const FractureStudyResult& result,
+                   const fs::path& out) {
+  std::ostringstream csv;
+  csv << "id,mesh,level,realization,cells,dofs,full_dg_dofs,h_avg,peak_load,displacement_at_peak,"
+         "dissipated_energy,crack_length,energy_balance_error,complete,seconds\n";
+  for (const FractureRecord& r : result.records)
+    csv << r.run.id() << ',' << r.run.label << ',' << r.run.level << ',' << r.run.realization << ','
+        << r.cells << ',' << r.dofs << ',' << r.full_dg_dofs << ',' << fmt(r.h_avg, 12) << ','
+        << fmt(r.peak_load, 12) << ',' << fmt(r.displacement_at_peak, 12) << ','
+        << fmt(r.dissipated_energy, 12) << ',' << fmt(r.crack_length, 12) << ','
+        << fmt(r.energy_balance_error, 6) << ',' << (r.complete ? 1 : 0) << ',' << fmt(r.seconds, 6)
+        << '\n';
+  write_file_atomically(out / "results.csv", csv.str());
+
+  const std::vector<LevelStats> levels = by_level(result.records);
+  json summary = {{"scene", scene.name},
+                  {"study", "fracture"},
+                  {"problem", fracture_problem_name(scene.geometry.kind)},
+                  {"mode", cracking_mode_name(scene.mode)},
+                  {"control", load_control_name(scene.loading.control)},
+                  {"runs", result.records.size()},
+                  {"incomplete", result.incomplete}};
+  // The expected dissipation once the ligament is fully cracked: G x ligament x thickness.
+  const double ligament = scene.geometry.domain.height() - scene.geometry.notch_depth;
+  summary["full_separation_energy"] = scene.law.fracture_energy * ligament * scene.thickness;
+  std::ostringstream md;
+  md << "# " << scene.name << (scene.label.empty() ? "" : " / " + scene.label) << "\n\n"
+     << scene.description << "\n\nProblem " << fracture_problem_name(scene.geometry.kind)
+     << ", cracking " << cracking_mode_name(scene.mode) << ", control "
+     << load_control_name(scene.loading.control) << "; " << result.records.size() << " runs, "
+     << result.incomplete << " incomplete.\n\n"
+     << "| mesh | level | h_avg | runs | peak load [N] (mean ± sd) | dissipated [J] | crack "
+        "length [m] | KS(peak) vs previous level (D, p) |\n|---|---|---|---|---|---|---|---|\n";
+  json out_levels = json::array();
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const LevelStats& l = levels[i];
+    json j = {{"mesh", l.mesh},
+              {"level", l.level},
+              {"h_avg", l.h_avg},
+              {"peak_load", stats_json(l.peak)},
+              {"dissipated_energy", stats_json(l.dissipated)},
+              {"crack_length", stats_json(l.crack)}};
+    std::string ks_text = "-";
+    if (i > 0 && levels[i - 1].mesh == l.mesh) {
+      json ks = json::object();
+      for (const auto& [name, now, before] :
+           {std::tuple{"peak_load", &l.peak, &levels[i - 1].peak},
+            std::tuple{"dissipated_energy", &l.dissipated, &levels[i - 1].dissipated},
+            std::tuple{"crack_length", &l.crack, &levels[i - 1].crack}}) {
+        const KsResult k = ks_two_sample(*now, *before);
+        ks[name] = {{"distance", k.distance}, {"p_value", k.p_value}};
+      }
+      j["ks_to_previous"] = ks;
+      ks_text = fmt(ks["peak_load"]["distance"].get<double>(), 3) + ", " +
+                fmt(ks["peak_load"]["p_value"].get<double>(), 3);
+    }
+    out_levels.push_back(j);
+    const SampleStatistics p = sample_statistics(l.peak);
+    md << "| " << l.mesh << " | " << l.level << " | " << fmt(l.h_avg, 4) << " | " << l.peak.size()
+       << " | " << fmt(p.mean, 5) << (p.std_dev ? " ± " + fmt(*p.std_dev, 3) : "") << " | "
+       << fmt(sample_statistics(l.dissipated).mean, 5) << " | "
+       << fmt(sample_statistics(l.crack).mean, 4) << " | " << ks_text << " |\n";
+  }
+  summary["levels"] = out_levels;
+  double worst = 0.0;
+  for (const FractureRecord& r : result.records) worst = std::max(worst, r.energy_balance_error);
+  summary["worst_energy_balance_error"] = worst;
+  md << "\nWorst energy balance error over every converged point of every run: " << fmt(worst, 3)
+     << " of the external work.\n\nFiles: results.csv (one row per run), curves/<run>.csv "
+        "(one row per converged point), cracks/<run>.csv (faces past the strength), "
+        "vtu/<run>.pvd (deformed mesh, magnified, with interface states).\n";
+  for (const FractureRecord& r : result.records)
+    if (!r.complete) md << "\n- " << r.run.id() << " is incomplete: " << r.failure << "\n";
+  write_file_atomically(out / "summary.json", summary.dump(1) + "\n");
+  write_file_atomically(out / "report.md", md.str());
+}
+
+}  // namespace
+
+FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::path& out, int threads,
+                                       bool progress) {
+  fs::create_directories(out);
+  const std::vector<FractureRunId> runs = expand(scene);
+  const fs::path jsonl = out / "results.jsonl";
+  std::map<std::string, json> done = read_done(jsonl);
+  std::mutex lock;
+  std::ofstream append(jsonl, std::ios::app);
+  std::atomic<std::size_t> next{0};
+  std::atomic<int> finished{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next++) < runs.size();) {
+      {
+        std::lock_guard<std::mutex> guard(lock);
+        if (done.count(runs[i].id())) continue;
+      }
+      FractureRecord r;
+      try {
+        r = run_fracture(scene, runs[i], out);
+      } catch (const std::exception& e) {
+        r.run = runs[i];
+        r.failure = e.what();
+      }
+      std::lock_guard<std::mutex> guard(lock);
+      const json j = to_json(r);
+      append << j.dump() << '\n' << std::flush;
+      done[runs[i].id()] = j;
+      if (progress)
+        std::cout << "  " << r.run.id() << ": peak " << fmt(r.peak_load, 5) << " N, " << r.points
+                  << " points, " << fmt(r.seconds, 3) << " s"
+                  << (r.complete ? "" : " (incomplete: " + r.failure + ")") << "\n"
+                  << std::flush;
+      ++finished;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < std::max(threads, 1); ++t) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+  FractureStudyResult result;
+  for (const FractureRunId& id : runs) {
+    result.records.push_back(from_json(done.at(id.id()), id));
+    if (!result.records.back().complete) ++result.incomplete;
+  }
+  write_reports(scene, result, out);
+  return result;
+}
+
+}  // namespace vorodg

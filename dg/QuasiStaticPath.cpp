@@ -312,16 +312,18 @@ bool QuasiStaticPath::run(const Observer& observe) {
   last_ = point_of(state, 0, PathPoint{});
   observe(last_, full(state), state.points);
 
-  // A linear probe at lambda = 1 gives the scale of the elastic response.
+  // A probe at a stroke far below anything that softens gives the linear response per unit
+  // lambda, and with it the scale of the path.
+  const double lambda_probe = 1e-9 * model_.space().mesh().domain().scale() / model_.stroke(1.0);
   State probe;
   int its = 0;
-  if (!newton(state, {LoadControl::displacement, 1.0}, probe, its)) {
+  if (!newton(state, {LoadControl::displacement, lambda_probe}, probe, its)) {
     failure_ = "the elastic probe did not converge";
     return false;
   }
   // The response is linear until something softens: scale the probe so that the largest interface
   // traction is the strength, and estimate the first event from the utilization there.
-  const Eigen::VectorXd u1 = full(probe);
+  const Eigen::VectorXd u1 = full(probe) / lambda_probe;
   double largest = 0.0;
   for (int p : model_.eligible_points(probe.points))
     largest = std::max(largest, model_.interfaces().flux_traction(u1, p).norm());
@@ -335,7 +337,7 @@ bool QuasiStaticPath::run(const Observer& observe) {
   if (options_.control == LoadControl::cmod && gauge_silent) elastic_step_ = 1.5 * lambda_event;
   const double lambda_span =
       options_.max_stroke > 0.0 ? options_.max_stroke / model_.stroke(1.0) : 2.0 * lambda_event;
-  arc_ = probe.x.norm() * lambda_span / options_.steps;
+  arc_ = probe.x.norm() / lambda_probe * lambda_span / options_.steps;
   if (options_.control == LoadControl::arc_length) elastic_step_ = 1.5 * lambda_event;
 
   const int limit = 20 * options_.steps + 1000;

@@ -1,5 +1,6 @@
 #include "verification/fracture/FractureStudy.hpp"
 
+#include <omp.h>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/util/BlasInfo.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
 #include "verification/report/KolmogorovSmirnov.hpp"
@@ -209,6 +211,7 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
   std::atomic<std::size_t> next{0};
   std::atomic<int> finished{0};
   auto worker = [&] {
+    omp_set_num_threads(1);  // each run on its own thread: no nested OpenMP teams to spin
     for (std::size_t i; (i = next++) < runs.size();) {
       {
         std::lock_guard<std::mutex> guard(lock);
@@ -233,9 +236,12 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
       ++finished;
     }
   };
+  // One run per thread: OpenBLAS's own threads would only spin against them.
+  const int blas_threads = set_blas_threads(1);
   std::vector<std::thread> pool;
   for (int t = 0; t < std::max(threads, 1); ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
+  set_blas_threads(blas_threads);
   FractureStudyResult result;
   for (const FractureRunId& id : runs) {
     result.records.push_back(from_json(done.at(id.id()), id));

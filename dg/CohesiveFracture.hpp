@@ -70,10 +70,6 @@ class CohesiveFracture {
                             const std::vector<InterfacePoint>& points) const;
   /// Intact points that the cracking mode lets crack now.
   std::vector<int> eligible_points(const std::vector<InterfacePoint>& points) const;
-  /// Cell c's DOF values.
-  Eigen::VectorXd cell_values(const Eigen::VectorXd& u, int c) const {
-    return u(space_->cell_dofs(c));
-  }
   const StageTimes& seconds() const { return seconds_; }
 
  private:

@@ -209,7 +209,6 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
   std::mutex lock;
   std::ofstream append(jsonl, std::ios::app);
   std::atomic<std::size_t> next{0};
-  std::atomic<int> finished{0};
   auto worker = [&] {
     omp_set_num_threads(1);  // each run on its own thread: no nested OpenMP teams to spin
     for (std::size_t i; (i = next++) < runs.size();) {
@@ -233,7 +232,6 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
                   << " points, " << fmt(r.seconds, 3) << " s"
                   << (r.complete ? "" : " (incomplete: " + r.failure + ")") << "\n"
                   << std::flush;
-      ++finished;
     }
   };
   // One run per thread: OpenBLAS's own threads would only spin against them.

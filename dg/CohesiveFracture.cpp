@@ -69,18 +69,7 @@ void CohesiveFracture::setup_system() {
 
   clock.restart();
   const auto cells = integrator_.all_cell_matrices(threads_);
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    const int m = space_->cell_dof_count(c);
-    const std::vector<int> dofs = space_->cell_dofs(c);
-    const auto Kc = cells.block(c, m);
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i) triplets.emplace_back(dofs[i], dofs[j], Kc(i, j));
-  }
-  bulk_.resize(num_dofs(), num_dofs());
-  bulk_.setFromTriplets(triplets.begin(), triplets.end());
   seconds_["cell_matrices"] = clock.seconds();
-
   clock.restart();
   coupling_.method = DgMethod::sipg;
   penalty_ = std::make_unique<InterfacePenalty>(
@@ -97,6 +86,9 @@ void CohesiveFracture::setup_system() {
       initial_points_[p].state = PointState::cohesive;
   }
   seconds_["interfaces"] = clock.seconds();
+  clock.restart();
+  assemble_base(cells);
+  seconds_["assembly"] = clock.seconds();
   build_constraints();
   build_gauge();
 }
@@ -135,17 +127,36 @@ void CohesiveFracture::build_gauge() {
   }
 }
 
+/// The tangent's pattern (cell blocks, then interface blocks), the bulk stiffness and the base:
+/// the bulk plus every interface coupled as if all its points were intact.
+void CohesiveFracture::assemble_base(const ElasticityIntegrator::CellMatrices& cells) {
+  const PolygonMesh& mesh = table_.mesh();
+  std::vector<std::vector<int>> blocks;
+  for (int c = 0; c < mesh.num_cells(); ++c) blocks.push_back(space_->cell_dofs(c));
+  for (int i = 0; i < interfaces_->num_faces(); ++i) blocks.push_back(interfaces_->dofs(i));
+  pattern_.emplace(num_dofs(), blocks);
+  bulk_ = pattern_->zero_matrix();
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    pattern_->add(c, cells.block(c, space_->cell_dof_count(c)), bulk_);
+  base_ = bulk_;
+  interfaces_->add_intact(
+      [&](int i, const Eigen::MatrixXd& K) { pattern_->add(mesh.num_cells() + i, K, base_); });
+}
+
 Eigen::VectorXd CohesiveFracture::forces(const Eigen::VectorXd& u,
                                          std::vector<InterfacePoint>& points,
                                          Eigen::SparseMatrix<double>* tangent) const {
-  Eigen::VectorXd f = bulk_ * u;
-  std::vector<Eigen::Triplet<double>> triplets;
-  interfaces_->add(u, points, f, tangent ? &triplets : nullptr);
-  if (tangent) {
-    Eigen::SparseMatrix<double> interface(num_dofs(), num_dofs());
-    interface.setFromTriplets(triplets.begin(), triplets.end());
-    *tangent = bulk_ + interface;
+  Eigen::VectorXd f = base_ * u;
+  if (!tangent) {
+    interfaces_->add(u, points, f, nullptr);
+    return f;
   }
+  *tangent = base_;  // same pattern: the non-intact faces' corrections go in place
+  const int first_face = table_.mesh().num_cells();
+  const CohesiveInterfaces::BlockSink sink = [&](int i, const Eigen::MatrixXd& K) {
+    pattern_->add(first_face + i, K, *tangent);
+  };
+  interfaces_->add(u, points, f, &sink);
   return f;
 }
 

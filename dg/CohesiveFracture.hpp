@@ -14,6 +14,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/material/CohesiveLaw.hpp"
 #include "core/material/MohrCoulomb.hpp"
+#include "core/solve/BlockPattern.hpp"
 #include "core/solve/ProportionalConstraints.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/CohesiveInterfaces.hpp"
@@ -56,7 +57,8 @@ class CohesiveFracture {
   const CohesiveInterfaces& interfaces() const { return *interfaces_; }
   const FractureSetup& setup() const { return setup_; }
 
-  /// Internal forces of u (per unit thickness) and, if asked, the tangent on all DOFs.
+  /// Internal forces of u (per unit thickness) and, if asked, the tangent on all DOFs (always
+  /// in the same pattern, so that the solver can restrict it in place).
   /// `points` comes in as the committed state and leaves as the trial state at u.
   Eigen::VectorXd forces(const Eigen::VectorXd& u, std::vector<InterfacePoint>& points,
                          Eigen::SparseMatrix<double>* tangent) const;
@@ -74,6 +76,7 @@ class CohesiveFracture {
 
  private:
   std::vector<char> crack_capable() const;
+  void assemble_base(const ElasticityIntegrator::CellMatrices& cells);
   void build_constraints();
   void build_gauge();
 
@@ -90,7 +93,9 @@ class CohesiveFracture {
   std::unique_ptr<InterfacePenalty> penalty_;
   std::unique_ptr<CohesiveInterfaces> interfaces_;
   std::optional<ProportionalConstraints> constraints_;
-  Eigen::SparseMatrix<double> bulk_;  // all DOFs
+  std::optional<BlockPattern> pattern_;
+  Eigen::SparseMatrix<double> bulk_;  // all DOFs, in the pattern
+  Eigen::SparseMatrix<double> base_;  // bulk + every interface coupled as if intact
   std::vector<InterfacePoint> initial_points_;
   Eigen::VectorXd gauge_;
   StageTimes seconds_;

@@ -70,11 +70,16 @@ double CohesiveInterfaces::utilization(const Eigen::VectorXd& u, int p) const {
 void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, InterfacePoint& point,
                                       Eigen::Vector2d& tau, Eigen::Matrix2d& C) const {
   const Eigen::Vector2d d = g - point.offset;
-  if (!law_.intrinsic() && point.history.max_opening == 0.0 && d[0] <= 0.0) {
+  const bool fresh = !law_.intrinsic() && point.history.max_opening == 0.0;
+  if (fresh && (d[0] < 0.0 || (d[0] == 0.0 && d[1] == 0.0))) {
     // Inserted but not yet opened: the face sticks, stiff as the coupling, and its normal
-    // traction meets the law's sigma_c continuously where opening starts.
+    // traction meets the law's sigma_c continuously where opening starts. At the insertion
+    // point itself (no opening at all) the normal tangent is the law's softening slope: the
+    // face fails because it is being loaded, so Newton should see it open, not stick (with
+    // eps there it predicts no opening, then overshoots onto the softening branch, and cycles).
     tau = Eigen::Vector2d(law_.parameters().strength + eps * d[0], eps * d[1]);
     C = eps * Eigen::Matrix2d::Identity();
+    if (d[0] == 0.0) C(0, 0) = law_.envelope_slope(0.0);
     return;
   }
   const auto r = law_.respond(d, point.history);
@@ -83,8 +88,10 @@ void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, Inte
   // The secant stiffness of sliding, beta^2 T / delta, grows without bound as the effective
   // opening vanishes; above eps (the coupling's stiffness) sliding is held by eps instead, in
   // the traction and in its tangent alike, so the iteration stays consistent.
+  // (An intrinsic law's secant never exceeds K0, so it needs no cap, and keeps its tangent
+  // consistent; the cap leaves out d t_n / d g_t, which slows Newton to a linear rate.)
   const double beta2 = law_.parameters().shear_factor * law_.parameters().shear_factor;
-  if (r.effective_opening > 0.0) {
+  if (r.effective_opening > 0.0 && !law_.intrinsic()) {
     const double sliding = beta2 * law_.envelope(point.history.max_opening) /
                            std::max(point.history.max_opening, r.effective_opening);
     if (sliding > eps) {
@@ -110,42 +117,47 @@ void CohesiveInterfaces::face_law(int p, const Eigen::Vector2d& g, InterfacePoin
   }
 }
 
+Eigen::MatrixXd CohesiveInterfaces::intact_block(int p) const {
+  // w (eps [u].[v] - {sigma(u)}n.[v] - {sigma(v)}n.[u]): symmetric interior penalty.
+  const InterfaceOperator J = jump(p);
+  const Eigen::MatrixXd JT = J.transpose() * traction_[p];
+  return weight(p) * (penalty_.eps(p / 2) * J.transpose() * J - JT - JT.transpose());
+}
+
+void CohesiveInterfaces::add_intact(const BlockSink& sink) const {
+  for (int i = 0; i < num_faces(); ++i) sink(i, intact_block(2 * i) + intact_block(2 * i + 1));
+}
+
 void CohesiveInterfaces::add(const Eigen::VectorXd& u, std::vector<InterfacePoint>& points,
-                             Eigen::VectorXd& force,
-                             std::vector<Eigen::Triplet<double>>* tangent) const {
-  const auto& faces = ops_.space().interfaces();
-  for (std::size_t i = 0; i < faces.size(); ++i) {
+                             Eigen::VectorXd& force, const BlockSink* tangent) const {
+  for (int i = 0; i < num_faces(); ++i) {
+    if (points[2 * i].state == PointState::intact && points[2 * i + 1].state == PointState::intact)
+      continue;  // the base already holds both points' coupling
     const std::vector<int>& dofs = dofs_[i];
     const Eigen::VectorXd ui = u(dofs);
     const int m = static_cast<int>(dofs.size());
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m);
     Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
-    const Eigen::Matrix2d R = frame(int(i));
+    const Eigen::Matrix2d R = frame(i);
     for (int q = 0; q < 2; ++q) {
-      const int p = 2 * int(i) + q;
-      const double w = weight(p), eps = penalty_.eps(int(i));
-      const InterfaceOperator J = jump(p);
-      if (points[p].state == PointState::intact) {
-        // w (eps [u].[v] - {sigma(u)}n.[v] - {sigma(v)}n.[u]): symmetric interior penalty.
-        const Eigen::MatrixXd JT = J.transpose() * traction_[p];
-        const Eigen::MatrixXd M = w * (eps * J.transpose() * J - JT - JT.transpose());
-        K += M;
-        f += M * ui;
-        continue;
-      }
-      // w t(g).dg with dg = -R J du: the face law's work on the opening.
-      const Eigen::Vector2d g = -R * (J * ui);
+      const int p = 2 * i + q;
+      if (points[p].state == PointState::intact) continue;
+      // Take out the coupling the base holds for this point; put in the face law's work
+      // w t(g).dg with dg = -R J du.
+      const Eigen::MatrixXd M = intact_block(p);
+      K -= M;
+      f -= M * ui;
+      const double w = weight(p);
+      const InterfaceOperator RJ = R * jump(p);
+      const Eigen::Vector2d g = -RJ * ui;
       Eigen::Vector2d tau;
       Eigen::Matrix2d C;
       face_law(p, g, points[p], tau, C);
-      const Eigen::MatrixXd RJ = R * J;
       f -= w * RJ.transpose() * tau;
       K += w * RJ.transpose() * C * RJ;
     }
     for (int a = 0; a < m; ++a) force[dofs[a]] += f[a];
-    if (tangent)
-      for (int b = 0; b < m; ++b)
-        for (int a = 0; a < m; ++a) tangent->emplace_back(dofs[a], dofs[b], K(a, b));
+    if (tangent) (*tangent)(i, K);
   }
 }
 
@@ -171,6 +183,11 @@ InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
       const double dn = std::min(d[0], 0.0);
       e.cohesive +=
           w * (law_.parameters().strength * dn + 0.5 * eps * (dn * dn + d[1] * d[1]) + closure);
+      continue;
+    }
+    if (points[p].state == PointState::open) {  // traction-free: only contact stores energy
+      e.cohesive += w * closure;
+      e.dissipated += w * law_.dissipated_energy(dmax);
       continue;
     }
     const double beta = law_.parameters().shear_factor;

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/material/CohesiveLaw.hpp"
@@ -46,11 +47,20 @@ class CohesiveInterfaces {
                      TractionKind kind, const CohesiveLaw& law, const MohrCoulomb& criterion);
 
   int num_points() const { return 2 * static_cast<int>(ops_.space().interfaces().size()); }
-  /// Adds the interface forces of u to `force` and, if `tangent` is given, their derivative as
-  /// triplets (one per entry of every interface block, whatever the state: the pattern is fixed).
-  /// Cohesive points advance their history in `points` (pass a trial copy while iterating).
+  /// Receives a dense block on the DOFs of interface `face` (InterfaceOperators::dofs order).
+  using BlockSink = std::function<void(int face, const Eigen::MatrixXd& block)>;
+  int num_faces() const { return static_cast<int>(dofs_.size()); }
+  /// The SIPG matrix of every face as if all its points were intact: with the bulk, the base
+  /// that add() corrects (the pattern of the tangent never changes).
+  void add_intact(const BlockSink& sink) const;
+  /// Adds to `force` what the non-intact points change with respect to that base: their coupling
+  /// taken out, their face law put in; and, if `tangent` is given, the derivative of that, one
+  /// block per face that has a non-intact point. Cohesive points advance their history in
+  /// `points` (pass a trial copy while iterating).
   void add(const Eigen::VectorXd& u, std::vector<InterfacePoint>& points, Eigen::VectorXd& force,
-           std::vector<Eigen::Triplet<double>>* tangent) const;
+           const BlockSink* tangent) const;
+  /// Global DOFs of interface i (cell 1's, then cell 2's).
+  const std::vector<int>& dofs(int i) const { return dofs_[i]; }
   /// The opening (normal, tangential) at point p: g = u_2 - u_1 in the face frame.
   Eigen::Vector2d opening(const Eigen::VectorXd& u, int p) const;
   /// The traction (normal, shear) an intact point transmits, in the face frame: the interior
@@ -69,6 +79,8 @@ class CohesiveInterfaces {
   Eigen::VectorXd local(const Eigen::VectorXd& u, int i) const;
   Eigen::Matrix2d frame(int i) const;  // rows n^T and t^T
   InterfaceOperator jump(int p) const;
+  /// Point p's SIPG matrix (m x m on the face's DOFs).
+  Eigen::MatrixXd intact_block(int p) const;
   /// The law plus the overclosure penalty at a non-intact point: traction and tangent in the
   /// face frame.
   void face_law(int p, const Eigen::Vector2d& g, InterfacePoint& point, Eigen::Vector2d& tau,

@@ -48,18 +48,12 @@ QuasiStaticPath::QuasiStaticPath(const CohesiveFracture& model, const PathOption
 
 void QuasiStaticPath::factor(const Eigen::SparseMatrix<double>& tangent, Eigen::VectorXd& q) {
   const ProportionalConstraints& cons = model_.constraints();
-  std::vector<Eigen::Triplet<double>> lower;
-  lower.reserve(tangent.nonZeros() / 2 + tangent.cols());
-  for (int j = 0; j < tangent.outerSize(); ++j) {
-    const int fj = cons.free_index(j);
-    if (fj < 0) continue;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(tangent, j); it; ++it) {
-      const int fi = cons.free_index(static_cast<int>(it.row()));
-      if (fi >= fj) lower.emplace_back(fi, fj, it.value());
-    }
+  if (!free_lower_) {  // the tangent's pattern never changes: map it onto the free DOFs once
+    std::vector<int> index(cons.num_dofs());
+    for (int i = 0; i < cons.num_dofs(); ++i) index[i] = cons.free_index(i);
+    free_lower_.emplace(tangent, index, cons.num_free());
   }
-  Eigen::SparseMatrix<double> A(cons.num_free(), cons.num_free());
-  A.setFromTriplets(lower.begin(), lower.end());
+  const Eigen::SparseMatrix<double>& A = free_lower_->restrict(tangent);
   q = cons.restrict(tangent * cons.reference());  // dR / d lambda
   FactorizationOptions fo;
   fo.min_rcond = 0.0;  // near a limit point the tangent is nearly singular by nature
@@ -79,13 +73,18 @@ void QuasiStaticPath::factor(const Eigen::SparseMatrix<double>& tangent, Eigen::
   }
 }
 
-bool QuasiStaticPath::newton(const State& start, const Target& target, State& out,
-                             int& iterations) {
+bool QuasiStaticPath::newton(const State& start, const Target& target, State& out, int& iterations,
+                             const Guess& guess) {
   const ProportionalConstraints& cons = model_.constraints();
   const Eigen::VectorXd gauge_free = cons.restrict(model_.mouth_gauge());
   const double gauge_lambda = model_.mouth_gauge().dot(cons.reference());
   out.x = start.x;
   out.lambda = start.lambda;
+  if (guess.from && guess.to) {  // between two converged states of a smooth stretch
+    out.x = (1.0 - guess.weight) * guess.from->x + guess.weight * guess.to->x;
+    out.lambda = (1.0 - guess.weight) * guess.from->lambda + guess.weight * guess.to->lambda;
+  }
+  const bool guessed = guess.from && guess.to;
   for (iterations = 0; iterations <= options_.max_iterations; ++iterations) {
     const Eigen::VectorXd u = full(out);
     out.points = start.points;
@@ -107,7 +106,8 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
     // round-off floor it shares).
     const double reactions = std::sqrt(std::max(out.force.squaredNorm() - R.squaredNorm(), 0.0));
     const double scale = std::max(force_scale_, reactions);
-    if (iterations > 0 && R.norm() <= options_.tolerance * scale && gap <= 1e-9) return true;
+    if ((iterations > 0 || guessed) && R.norm() <= options_.tolerance * scale && gap <= 1e-9)
+      return true;
     if (iterations == options_.max_iterations) return false;
     Eigen::VectorXd q;
     try {
@@ -138,11 +138,28 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
       };
       dl = score(r[0]) >= score(r[1]) ? r[0] : r[1];
     }
-    out.x += a - dl * b;
-    out.lambda += dl;
+    const Eigen::VectorXd dx = a - dl * b;
+    const double alpha = iterations > 0 ? line_search(start, out, dx, dl, R.norm()) : 1.0;
+    out.x += alpha * dx;
+    out.lambda += alpha * dl;
     if (!out.x.allFinite() || !std::isfinite(out.lambda)) return false;
   }
   return false;
+}
+
+/// Backtracking on the residual norm: the face laws switch branches (stick, open, sliding cap,
+/// contact), and a full Newton step across such a kink can cycle between branches for good.
+/// The first iteration, which carries the load increment, always takes the full step.
+double QuasiStaticPath::line_search(const State& start, const State& at, const Eigen::VectorXd& dx,
+                                    double dl, double residual) const {
+  const ProportionalConstraints& cons = model_.constraints();
+  double alpha = 1.0;
+  for (int k = 0; k < kLineSearchHalvings; ++k, alpha *= 0.5) {
+    std::vector<InterfacePoint> points = start.points;
+    const Eigen::VectorXd u = cons.expand(at.x + alpha * dx, at.lambda + alpha * dl);
+    if (cons.restrict(model_.forces(u, points, nullptr)).norm() < residual) return alpha;
+  }
+  return alpha;
 }
 
 QuasiStaticPath::Target QuasiStaticPath::step_target(const State& start, LoadControl control,
@@ -199,63 +216,74 @@ PathPoint QuasiStaticPath::point_of(const State& s, int step, const PathPoint& p
   p.cmod = cmod(s);
   p.load = model_.load(s.force) / model_.stroke(1.0);
   // The machine's work: trapezoids in the stroke (exact on every linear stretch of the path).
+  // The stretch ends at the load on arrival: settling after an insertion does no work.
+  const double arrival = std::isnan(s.arrival_load) ? p.load : s.arrival_load;
   p.external_work =
-      previous.external_work + 0.5 * (previous.load + p.load) * (p.stroke - previous.stroke);
+      previous.external_work + 0.5 * (previous.load + arrival) * (p.stroke - previous.stroke);
   p.energy = model_.energies(full(s), s.points);
   p.energy.switched = switched_;
   return p;
 }
 
-/// Turns the eligible intact points at or past the criterion cohesive, and books the jump in
-/// the accounted energy that switching their terms makes.
+/// Turns the eligible intact points at or past the criterion cohesive, books the jump in the
+/// accounted energy that switching their terms makes, and settles the body at the same stroke:
+/// the face law starts from sigma_c n, without the shear or the excess the point carried, so the
+/// body is out of balance after the switch. Settling does no external work; the energy it
+/// releases (what a dynamic code would lose to kinetic energy and damping) is booked with the
+/// switch. Points that the settling fails in turn are inserted too, until none is left.
 int QuasiStaticPath::insert_failed_points(State& trial) {
   if (model_.setup().mode == CrackingMode::pre_inserted) return 0;
-  const Eigen::VectorXd u = full(trial);
-  const double before = model_.energies(u, trial.points).accounted();
   int inserted = 0;
-  for (int p : model_.eligible_points(trial.points))
-    if (model_.interfaces().utilization(u, p) >= 1.0) {
-      trial.points[p].state = PointState::cohesive;
-      trial.points[p].offset = model_.interfaces().opening(u, p);
-      ++inserted;
+  for (int round = 0; round < kSettlingRounds; ++round) {
+    const Eigen::VectorXd u = full(trial);
+    const double before = model_.energies(u, trial.points).accounted();
+    int now = 0;
+    for (int p : model_.eligible_points(trial.points))
+      if (model_.interfaces().utilization(u, p) >= 1.0) {
+        trial.points[p].state = PointState::cohesive;
+        trial.points[p].offset = model_.interfaces().opening(u, p);
+        ++now;
+      }
+    if (now == 0) break;
+    if (inserted == 0) trial.arrival_load = model_.load(trial.force) / model_.stroke(1.0);
+    inserted += now;
+    State settled;
+    int its = 0;
+    if (!newton(trial, {LoadControl::displacement, trial.lambda}, settled, its)) {
+      model_.forces(u, trial.points, nullptr);  // the switched points' law takes up their opening
+      switched_ += before - model_.energies(u, trial.points).accounted();
+      break;  // the next step's Newton will have to settle it
     }
-  if (inserted == 0) return 0;
-  model_.forces(u, trial.points, nullptr);  // the switched points' law takes up their opening
-  switched_ += before - model_.energies(u, trial.points).accounted();
+    switched_ += before - model_.energies(full(settled), settled.points).accounted();
+    settled.arrival_load = trial.arrival_load;
+    trial = std::move(settled);
+  }
   return inserted;
 }
 
-/// Whether the step keeps the energy balance: the trapezoids of the external work must not
-/// drift from the accounted energy by more than balance_tolerance of the work done so far.
+/// Whether the step keeps the energy balance: after it, the trapezoids of the external work must
+/// agree with the accounted energy within balance_tolerance of the work done so far, or at least
+/// the step must not widen the gap. (A per-step drift bound would cut every step across a contact
+/// or unloading switch; what matters, and what is reported, is the balance at every point.)
 bool QuasiStaticPath::balance_acceptable(const State& trial) const {
   const PathPoint after = point_of(trial, 0, last_);
-  const double drift = std::abs(after.external_work - after.energy.accounted()) -
-                       std::abs(last_.external_work - last_.energy.accounted());
-  return drift <= options_.balance_tolerance * std::max(after.external_work, 1e-300);
+  const double gap = std::abs(after.external_work - after.energy.accounted());
+  const double before = std::abs(last_.external_work - last_.energy.accounted());
+  return gap <= options_.balance_tolerance * std::max(after.external_work, 1e-300) || gap <= before;
 }
 
-/// How far past its next event a trial state is: the largest of the Mohr-Coulomb utilization less
-/// one over the eligible intact points, and (opening - next kink) / delta_c over the loading
-/// cohesive points (between kinks, and before the next insertion, the response is smooth, so
-/// trapezoids integrate the work exactly on a linear problem). Negative: no event yet.
-double QuasiStaticPath::event_excess(const State& start, const State& trial) const {
-  const CohesiveLaw& law = model_.interfaces().law();
-  double excess = model_.setup().mode != CrackingMode::pre_inserted
-                      ? max_utilization(trial, full(trial)) - 1.0
-                      : -1.0;
-  const double dc = law.critical_opening();
-  for (std::size_t p = 0; p < trial.points.size(); ++p) {
-    if (start.points[p].state == PointState::intact) continue;
-    const double kink = law.next_kink(start.points[p].history.max_opening);
-    if (std::isfinite(kink) && start.points[p].history.max_opening > 0.0)
-      excess = std::max(excess, (trial.points[p].history.max_opening - kink) / dc);
-  }
-  return excess;
+/// How far past the next insertion a trial state is: the largest Mohr-Coulomb utilization of the
+/// eligible intact points, less one (negative: no event yet). Kinks of the law (the peak, the
+/// bilinear kink, delta_c) and contact or unloading switches are not located: the energy-balance
+/// check shortens the steps that cross them badly, which costs far fewer solves than locating
+/// every kink of every point.
+double QuasiStaticPath::event_excess(const State& trial) const {
+  if (model_.setup().mode == CrackingMode::pre_inserted) return -1.0;
+  return max_utilization(trial, full(trial)) - 1.0;
 }
 
-/// One step from `state`: Newton to the step's target (halved on failure); if an event falls
-/// inside the step (an intact point fails, a cohesive point reaches a kink of its law), the step
-/// is shortened to it, and failed points are inserted there.
+/// One step from `state`: Newton to the step's target (halved on failure); if an insertion falls
+/// inside the step, the step is shortened to it, and the failed points are inserted there.
 bool QuasiStaticPath::take_step(State& state, int& iterations, int& inserted) {
   const bool elastic_phase =
       options_.control != LoadControl::displacement && !softened(state) && elastic_step_ > 0.0;
@@ -265,29 +293,37 @@ bool QuasiStaticPath::take_step(State& state, int& iterations, int& inserted) {
   for (int cut = 0; cut <= options_.max_cuts; ++cut, fraction *= 0.5) {
     State trial;
     if (!newton(state, step_target(state, control, fraction), trial, iterations)) continue;
-    double excess = event_excess(state, trial);
+    double excess = event_excess(trial);
     if (excess > tol) {
-      // Regula falsi (Illinois) on the step fraction for the excess to land in [0, tol].
-      double lo = 0.0, e_lo = std::min(event_excess(state, state), 0.0), hi = fraction,
-             e_hi = excess;
+      // Regula falsi (Illinois) on the step fraction for the excess to land in [0, tol], with a
+      // bisection whenever a secant step fails to halve the bracket (the excess can be flat for
+      // most of the step and steep at its end). Each trial starts from the interpolation of the
+      // bracketing states: exact where the stretch is linear, so Newton has little left to do.
+      double lo = 0.0, e_lo = std::min(event_excess(state), 0.0), hi = fraction, e_hi = excess;
+      State lo_state = state, hi_state = trial;
       int side = 0;
-      bool ok = true;
-      for (int k = 0; k < 60 && (excess < 0.0 || excess > tol); ++k) {
-        const double s = std::clamp(lo + (0.5 * tol - e_lo) / (e_hi - e_lo) * (hi - lo),
-                                    lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo));
+      bool ok = true, bisect = false;
+      for (int k = 0; k < kEventSearches && (excess < 0.0 || excess > tol); ++k) {
+        const double width = hi - lo;
+        const double s = bisect || !std::isfinite(e_hi)
+                             ? lo + 0.5 * width
+                             : std::clamp(lo + (0.5 * tol - e_lo) / (e_hi - e_lo) * width,
+                                          lo + 1e-9 * width, hi - 1e-9 * width);
         int its = 0;
-        if (!(ok = newton(state, step_target(state, control, s), trial, its))) break;
+        const Guess guess{&lo_state, &hi_state, (s - lo) / width};
+        if (!(ok = newton(state, step_target(state, control, s), trial, its, guess))) break;
         iterations += its;
-        excess = event_excess(state, trial);
+        excess = event_excess(trial);
         if (excess < 0.0) {
-          lo = s, e_lo = excess;
+          lo = s, e_lo = excess, lo_state = trial;
           if (side == -1) e_hi *= 0.5;
           side = -1;
         } else {
-          hi = s, e_hi = excess;
+          hi = s, e_hi = excess, hi_state = trial;
           if (side == 1) e_lo *= 0.5;
           side = 1;
         }
+        bisect = !bisect && hi - lo > 0.5 * width;
       }
       if (!ok || excess < 0.0) continue;
     }

@@ -17,10 +17,13 @@
 // step is shortened (regula falsi) until the largest Mohr-Coulomb utilization of the eligible
 // intact points lies in [1, 1 + event_tolerance], and the points at or above 1 turn cohesive there.
 #include <Eigen/Core>
+#include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/solve/BlockPattern.hpp"
 #include "core/solve/SparseCholesky.hpp"
 #include "dg/CohesiveFracture.hpp"
 
@@ -33,16 +36,17 @@ std::string load_control_name(LoadControl control);
 
 struct PathOptions {
   LoadControl control = LoadControl::displacement;
-  double max_stroke = 0.0;  // end of the path in stroke (displacement, arc-length), if > 0
-  double max_cmod = 0.0;    // end of the path in crack mouth opening (cmod, arc-length), if > 0
-  int steps = 100;          // nominal steps to the end of the path
-  int max_iterations = 30;
+  double max_stroke = 0.0;   // end of the path in stroke (displacement, arc-length), if > 0
+  double max_cmod = 0.0;     // end of the path in crack mouth opening (cmod, arc-length), if > 0
+  int steps = 100;           // nominal steps to the end of the path
+  int max_iterations = 15;   // quadratic convergence needs few; more only delays the cut
   double tolerance = 1e-10;  // residual norm relative to the force scale
   int max_cuts = 10;
-  double event_tolerance = 1e-9;
-  /// A step is halved (down to 1/64 of its length) while the energy balance drifts by more than
-  /// this fraction of the external work over it.
-  double balance_tolerance = 1e-4;
+  /// How far past an insertion (in Mohr-Coulomb utilization) the located point may lie.
+  double event_tolerance = 1e-6;
+  /// A step is halved (down to 1/64 of its length) while, after it, the energy balance misses
+  /// by more than this fraction of the external work (and by more than before the step).
+  double balance_tolerance = 5e-4;
 };
 
 /// One converged point of the path; forces in newtons and energies in joules (thickness in).
@@ -73,13 +77,29 @@ class QuasiStaticPath {
     Eigen::VectorXd x;  // free DOFs
     double lambda = 0.0;
     std::vector<InterfacePoint> points;
-    Eigen::VectorXd force;  // internal forces on all DOFs
+    Eigen::VectorXd force;      // internal forces on all DOFs
+    double arrival_load = NAN;  // after an insertion: the load before the body settled
   };
   struct Target {
     LoadControl control;
     double value;  // lambda, cmod or arc length
   };
-  bool newton(const State& start, const Target& target, State& out, int& iterations);
+  /// A starting point for Newton: (1 - weight) from + weight to (both null: the start).
+  struct Guess {
+    const State* from = nullptr;
+    const State* to = nullptr;
+    double weight = 0.0;
+  };
+  bool newton(const State& start, const Target& target, State& out, int& iterations,
+              const Guess& guess);
+  bool newton(const State& start, const Target& target, State& out, int& iterations) {
+    return newton(start, target, out, iterations, Guess{nullptr, nullptr, 0.0});
+  }
+  double line_search(const State& start, const State& at, const Eigen::VectorXd& dx, double dl,
+                     double residual) const;
+  static constexpr int kLineSearchHalvings = 6;
+  static constexpr int kEventSearches = 60;
+  static constexpr int kSettlingRounds = 100;
   Target step_target(const State& start, LoadControl control, double fraction) const;
   double max_utilization(const State& s, const Eigen::VectorXd& u) const;
   Eigen::VectorXd full(const State& s) const { return model_.constraints().expand(s.x, s.lambda); }
@@ -89,7 +109,7 @@ class QuasiStaticPath {
   void factor(const Eigen::SparseMatrix<double>& tangent, Eigen::VectorXd& q);
   PathPoint point_of(const State& s, int step, const PathPoint& previous) const;
   bool take_step(State& state, int& iterations, int& inserted);
-  double event_excess(const State& start, const State& trial) const;
+  double event_excess(const State& trial) const;
   int insert_failed_points(State& trial);
   bool balance_acceptable(const State& trial) const;
   static constexpr double kSmallestBalancedStep = 1.0 / 64.0;
@@ -99,6 +119,7 @@ class QuasiStaticPath {
   const CohesiveFracture& model_;
   PathOptions options_;
   SparseCholesky solver_;
+  std::optional<RestrictedLower> free_lower_;  // the tangent's free-free lower triangle
   bool indefinite_ = false, analysed_ = false;
   int factorizations_ = 0;
   double force_scale_ = 1.0;

@@ -50,12 +50,6 @@ int CohesiveLaw::segment(double opening) const {
   return -1;
 }
 
-double CohesiveLaw::next_kink(double opening) const {
-  for (const Eigen::Vector2d& k : knots_)
-    if (k.x() > opening) return k.x();
-  return INFINITY;
-}
-
 double CohesiveLaw::envelope_slope(double opening) const {
   const int k = segment(std::max(opening, 0.0));
   if (k < 0) return 0.0;

@@ -43,9 +43,6 @@ class CohesiveLaw {
   bool intrinsic() const { return p_.initial_stiffness > 0.0; }
   /// T(delta) on the envelope (0 beyond delta_c).
   double envelope(double opening) const;
-  /// The first kink of the envelope beyond `opening` (the peak, the bilinear kink, delta_c), or
-  /// infinity past delta_c: between kinks a loading point's traction is linear in its opening.
-  double next_kink(double opening) const;
   /// dT/d(delta) on the envelope (the slope of the segment delta lies on; 0 beyond delta_c).
   double envelope_slope(double opening) const;
 

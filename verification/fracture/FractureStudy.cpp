@@ -211,6 +211,8 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     omp_set_num_threads(1);  // each run on its own thread: no nested OpenMP teams to spin
+    omp_set_dynamic(
+        1);  // CHOLMOD asks for 4 threads whatever the setting: let the runtime shrink that
     for (std::size_t i; (i = next++) < runs.size();) {
       {
         std::lock_guard<std::mutex> guard(lock);

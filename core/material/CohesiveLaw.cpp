@@ -7,24 +7,15 @@
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
-namespace {
-
-void require(bool ok, const char* what, double value, const char* expected) {
-  if (!ok)
-    throw InputError(std::string("cohesive law: ") + what + " = " + std::to_string(value) +
-                     ", expected " + expected);
-}
-
-}  // namespace
 
 CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) {
-  require(std::isfinite(p_.strength) && p_.strength > 0, "strength", p_.strength, "> 0");
-  require(std::isfinite(p_.fracture_energy) && p_.fracture_energy > 0, "fracture_energy",
-          p_.fracture_energy, "> 0");
-  require(std::isfinite(p_.shear_factor) && p_.shear_factor >= 0, "shear_factor", p_.shear_factor,
-          ">= 0");
-  require(std::isfinite(p_.initial_stiffness) && p_.initial_stiffness >= 0, "initial_stiffness",
-          p_.initial_stiffness, ">= 0");
+  require_parameter(std::isfinite(p_.strength) && p_.strength > 0, "strength", p_.strength, "> 0");
+  require_parameter(std::isfinite(p_.fracture_energy) && p_.fracture_energy > 0, "fracture_energy",
+                    p_.fracture_energy, "> 0");
+  require_parameter(std::isfinite(p_.shear_factor) && p_.shear_factor >= 0, "shear_factor",
+                    p_.shear_factor, ">= 0");
+  require_parameter(std::isfinite(p_.initial_stiffness) && p_.initial_stiffness >= 0,
+                    "initial_stiffness", p_.initial_stiffness, ">= 0");
   const double sc = p_.strength, scale = p_.fracture_energy / sc;
   const double d0 = intrinsic() ? sc / p_.initial_stiffness : 0.0;
   if (intrinsic()) knots_.emplace_back(0.0, 0.0);
@@ -36,8 +27,8 @@ CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) 
     knots_.emplace_back(3.6 * scale, 0.0);
   }
   for (std::size_t k = 1; k < knots_.size(); ++k)
-    require(knots_[k].x() > knots_[k - 1].x(), "initial_stiffness", p_.initial_stiffness,
-            "large enough that the peak comes before the critical opening");
+    require_parameter(knots_[k].x() > knots_[k - 1].x(), "initial_stiffness", p_.initial_stiffness,
+                      "large enough that the peak comes before the critical opening");
 }
 
 double CohesiveLaw::critical_opening() const {

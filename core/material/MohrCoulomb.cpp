@@ -10,15 +10,11 @@
 namespace vorodg {
 
 MohrCoulomb::MohrCoulomb(const MohrCoulombParameters& parameters) : p_(parameters) {
-  auto require = [](bool ok, const char* what, double value, const char* expected) {
-    if (!ok)
-      throw InputError(std::string("Mohr-Coulomb criterion: ") + what + " = " +
-                       std::to_string(value) + ", expected " + expected);
-  };
-  require(std::isfinite(p_.cohesion) && p_.cohesion > 0, "cohesion", p_.cohesion, "> 0");
-  require(std::isfinite(p_.friction) && p_.friction >= 0, "friction", p_.friction, ">= 0");
-  require(std::isfinite(p_.tensile_cutoff) && p_.tensile_cutoff > 0, "tensile_cutoff",
-          p_.tensile_cutoff, "> 0");
+  require_parameter(std::isfinite(p_.cohesion) && p_.cohesion > 0, "cohesion", p_.cohesion, "> 0");
+  require_parameter(std::isfinite(p_.friction) && p_.friction >= 0, "friction", p_.friction,
+                    ">= 0");
+  require_parameter(std::isfinite(p_.tensile_cutoff) && p_.tensile_cutoff > 0, "tensile_cutoff",
+                    p_.tensile_cutoff, "> 0");
 }
 
 double MohrCoulomb::utilization(double normal, double shear) const {

@@ -20,6 +20,10 @@ class NumericalError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Refuses a parameter outside its range: "<name> = <value>: expected <range>" (the caller
+/// prefixes where the name lives, e.g. the scene key's object).
+void require_parameter(bool ok, const std::string& name, double value, const std::string& range);
+
 inline constexpr int kExitInputError = 2;
 inline constexpr int kExitNumericalError = 3;
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "core/element/ElasticityIntegrator.hpp"
@@ -20,6 +21,8 @@ namespace fs = std::filesystem;
 
 namespace vorodg {
 namespace {
+
+constexpr int kCurveWriteEvery = 10;  // points between rewrites of a run's curve file
 
 /// The deformed mesh as disconnected cells (every cell its own vertex copies, moved by `scale`
 /// times the displacement), with each cell's worst interface state: 0 intact, 1 cohesive, 2 open.
@@ -74,21 +77,32 @@ std::string crack_faces(const CohesiveFracture& model, const std::vector<Interfa
   return csv.str();
 }
 
+GeneratedMesh run_mesh(const FractureScene& scene, const FractureRunId& run) {
+  MeshSpec spec = scene.meshes[run.mesh].spec(scene.geometry.domain, run.level, run.seed);
+  if (spec.symmetric && scene.geometry.notch_depth > 0.0)  // the notch tip must be a vertex
+    spec.line_marks = {scene.geometry.domain.y0() + scene.geometry.notch_depth};
+  GeneratedMesh generated = generate_mesh(spec);
+  if (const auto report = validate_mesh(generated.mesh); !report.ok())
+    throw NumericalError("invalid mesh: " + report.defects.front().what);
+  return generated;
+}
+
 }  // namespace
+
+void check_fracture_meshes(const FractureScene& scene, const std::vector<FractureRunId>& runs) {
+  std::set<std::pair<int, int>> seen;
+  for (const FractureRunId& run : runs)
+    if (seen.insert({run.mesh, run.level}).second)
+      fracture_setup(run_mesh(scene, run).mesh, scene.geometry, scene.mode, scene.thickness);
+}
 
 FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run,
                             const fs::path& out) {
   Stopwatch clock;
   FractureRecord r;
   r.run = run;
-  const SceneMesh& sm = scene.meshes[run.mesh];
-  MeshSpec spec = sm.spec(scene.geometry.domain, run.level, run.seed);
-  if (spec.symmetric && scene.geometry.notch_depth > 0.0)  // the notch tip must be a vertex
-    spec.line_marks = {scene.geometry.domain.y0() + scene.geometry.notch_depth};
-  const GeneratedMesh generated = generate_mesh(spec);
+  const GeneratedMesh generated = run_mesh(scene, run);
   const PolygonMesh& mesh = generated.mesh;
-  if (const auto report = validate_mesh(mesh); !report.ok())
-    throw NumericalError("invalid mesh: " + report.defects.front().what);
   r.cells = mesh.num_cells();
   r.full_dg_dofs = 2 * mesh.offsets().back();
   r.h_avg = mesh.h_avg();
@@ -110,6 +124,7 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
   curve << "step,displacement,cmod,load,external_work,elastic_energy,dissipated_energy,"
            "coupling_energy,cohesive_energy,switched_energy,crack_length,inserted,newton_"
            "iterations\n";
+  const fs::path curve_file = out / "curves" / (id + ".csv");
   PvdCollection series(out / "vtu" / (id + ".pvd"));
   // Displacements are tiny against the body: magnify them to a twentieth of the body's size.
   const double magnify = 0.05 * scene.geometry.domain.scale() /
@@ -136,8 +151,10 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
       series.add(p.stroke, file);
     }
     last_points = points;
+    // A stopped run keeps its curve up to the last whole write.
+    if (p.step % kCurveWriteEvery == 0) write_file_atomically(curve_file, curve.str());
   });
-  write_file_atomically(out / "curves" / (id + ".csv"), curve.str());
+  write_file_atomically(curve_file, curve.str());
   write_file_atomically(out / "cracks" / (id + ".csv"), crack_faces(model, last_points));
   r.complete = complete;
   r.failure = path.failure();

@@ -4,6 +4,7 @@
 // .vtu atomically, so a stopped run leaves only whole files); its summary becomes one record.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "verification/fracture/FractureScene.hpp"
 
@@ -30,6 +31,11 @@ struct FractureRecord {
   std::string failure;
   double seconds = 0.0;
 };
+
+/// Builds the first realization of every mesh level and its fracture setup, so that a scene
+/// whose geometry the meshes cannot carry (no vertex at the load point, no edges along the crack
+/// line) is refused as bad input before anything runs or is written.
+void check_fracture_meshes(const FractureScene& scene, const std::vector<FractureRunId>& runs);
 
 /// Runs one realization, writing curves/<id>.csv, cracks/<id>.csv and vtu/<id>.pvd under `out`.
 FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run,

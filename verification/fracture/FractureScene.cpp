@@ -54,7 +54,7 @@ void read_cohesive(SceneObject& top, FractureScene& s) {
     CohesiveLaw{s.law};
     MohrCoulomb{s.criterion};
   } catch (const InputError& e) {
-    throw InputError("scene " + top.source() + ": cohesive: " + e.what());
+    throw InputError("scene " + top.source() + ": cohesive." + e.what());
   }
   c.finish();
 }

@@ -202,8 +202,9 @@ void write_reports(const FractureScene& scene, const FractureStudyResult& result
 
 FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::path& out, int threads,
                                        bool progress) {
-  fs::create_directories(out);
   const std::vector<FractureRunId> runs = expand(scene);
+  check_fracture_meshes(scene, runs);
+  fs::create_directories(out);
   const fs::path jsonl = out / "results.jsonl";
   std::map<std::string, json> done = read_done(jsonl);
   std::mutex lock;

@@ -72,7 +72,17 @@ FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g,
     throw InputError("notch_depth = " + fmt(g.notch_depth) + ": the mesh has edges along only " +
                      fmt(notch_length) + " of it at x = " + fmt(g.line_x));
   if (g.kind == FractureProblemKind::three_point_bend) {
-    s.mouth.vertices = {vertex_at(mesh, Point(g.line_x, d.y0()))};
+    s.load_vertex = vertex_at(mesh, Point(g.line_x, d.y1()));
+    if (s.load_vertex < 0)
+      throw InputError("cracking.line = " + fmt(g.line_x) +
+                       ": the mesh has no vertex at the load point (" + fmt(g.line_x) + ", " +
+                       fmt(d.y1()) + ")");
+    const int mouth = vertex_at(mesh, Point(g.line_x, d.y0()));
+    if (mouth < 0)
+      throw InputError("cracking.line = " + fmt(g.line_x) +
+                       ": the mesh has no vertex at the crack mouth (" + fmt(g.line_x) + ", " +
+                       fmt(d.y0()) + ")");
+    s.mouth.vertices = {mouth};
     s.mouth.weights = {1.0};
   } else {  // the bar's opening is the line's mean: a gauge at one end would drive it to rotate
     std::map<int, double> weight;
@@ -97,14 +107,8 @@ FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g,
       if ((near[0] || near[1]) && near[2]) s.constraints.push_back({v, 1, 0.0});
     }
   }
-  if (g.kind == FractureProblemKind::three_point_bend) {
-    s.load_vertex = vertex_at(mesh, Point(g.line_x, d.y1()));
-    if (s.load_vertex < 0)
-      throw InputError("cracking.line = " + fmt(g.line_x) +
-                       ": the mesh has no vertex at the load point (" + fmt(g.line_x) + ", " +
-                       fmt(d.y1()) + ")");
+  if (g.kind == FractureProblemKind::three_point_bend)
     s.constraints.push_back({s.load_vertex, 1, -1.0});
-  }
   return s;
 }
 

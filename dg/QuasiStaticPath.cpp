@@ -41,6 +41,13 @@ QuasiStaticPath::QuasiStaticPath(const CohesiveFracture& model, const PathOption
   if (options.control == LoadControl::arc_length &&
       !(options.max_stroke > 0.0 || options.max_cmod > 0.0))
     throw InputError("loading: arc-length control needs max_displacement or max_cmod > 0");
+  if (options.tail_steps > 0) {
+    const double main_end = by_cmod ? options.max_cmod : options.max_stroke;
+    if (!by_stroke && !by_cmod)
+      throw InputError("loading.tail: only with displacement or cmod control");
+    if (!(options.tail_end > main_end))
+      throw InputError("loading.tail: its end must lie beyond the main stage's end");
+  }
   const PolygonMesh& mesh = model.space().mesh();
   const double side = std::min(mesh.domain().width(), mesh.domain().height());
   force_scale_ = model.interfaces().law().parameters().strength * side;
@@ -162,20 +169,26 @@ double QuasiStaticPath::line_search(const State& start, const State& at, const E
   return alpha;
 }
 
+/// The next target in the control's own measure (stroke or cmod) from `at`: a step of the stage
+/// `at` is in (the main stage up to `main_end`, then the tail), never past the stage's end.
+double QuasiStaticPath::staged_target(double at, double main_end, double fraction) const {
+  const bool in_tail = options_.tail_steps > 0 && at >= (1.0 - 1e-12) * main_end;
+  const double begin = in_tail ? main_end : 0.0, end = in_tail ? options_.tail_end : main_end;
+  const int steps = in_tail ? options_.tail_steps : options_.steps;
+  return std::min(at + fraction * (end - begin) / steps, end);
+}
+
 QuasiStaticPath::Target QuasiStaticPath::step_target(const State& start, LoadControl control,
                                                      double fraction) const {
-  const double lambda_end = options_.max_stroke / model_.stroke(1.0);
+  const double unit = model_.stroke(1.0);
   switch (control) {
-    case LoadControl::displacement: {
-      const bool elastic = options_.control != LoadControl::displacement;
-      const double step = elastic ? elastic_step_ : lambda_end / options_.steps;
-      double to = start.lambda + fraction * step;
-      if (!elastic) to = std::min(to, lambda_end);
-      return {control, to};
-    }
+    case LoadControl::displacement:
+      if (options_.control != LoadControl::displacement)  // the elastic phase of cmod, arc-length
+        return {control, start.lambda + fraction * elastic_step_};
+      return {control,
+              staged_target(model_.stroke(start.lambda), options_.max_stroke, fraction) / unit};
     case LoadControl::cmod:
-      return {control, std::min(cmod(start) + fraction * options_.max_cmod / options_.steps,
-                                options_.max_cmod)};
+      return {control, staged_target(cmod(start), options_.max_cmod, fraction)};
     case LoadControl::arc_length: break;
   }
   return {control, fraction * arc_};
@@ -201,8 +214,10 @@ bool QuasiStaticPath::finished(const State& s) const {
   const double stroke = model_.stroke(s.lambda), c = cmod(s);
   const double close = 1.0 - 1e-12;
   switch (options_.control) {
-    case LoadControl::displacement: return stroke >= close * options_.max_stroke;
-    case LoadControl::cmod: return c >= close * options_.max_cmod;
+    case LoadControl::displacement:
+      return stroke >= close * (options_.tail_steps > 0 ? options_.tail_end : options_.max_stroke);
+    case LoadControl::cmod:
+      return c >= close * (options_.tail_steps > 0 ? options_.tail_end : options_.max_cmod);
     case LoadControl::arc_length: break;
   }
   return (options_.max_stroke > 0.0 && stroke >= close * options_.max_stroke) ||
@@ -376,7 +391,7 @@ bool QuasiStaticPath::run(const Observer& observe) {
   arc_ = probe.x.norm() / lambda_probe * lambda_span / options_.steps;
   if (options_.control == LoadControl::arc_length) elastic_step_ = 1.5 * lambda_event;
 
-  const int limit = 20 * options_.steps + 1000;
+  const int limit = 20 * (options_.steps + options_.tail_steps) + 1000;
   for (int step = 1; !finished(state); ++step) {
     if (step > limit) {
       failure_ = "the path did not reach its end in " + std::to_string(limit) + " steps";

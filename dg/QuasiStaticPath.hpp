@@ -36,9 +36,13 @@ std::string load_control_name(LoadControl control);
 
 struct PathOptions {
   LoadControl control = LoadControl::displacement;
-  double max_stroke = 0.0;   // end of the path in stroke (displacement, arc-length), if > 0
-  double max_cmod = 0.0;     // end of the path in crack mouth opening (cmod, arc-length), if > 0
-  int steps = 100;           // nominal steps to the end of the path
+  double max_stroke = 0.0;  // end of the path in stroke (displacement, arc-length), if > 0
+  double max_cmod = 0.0;    // end of the path in crack mouth opening (cmod, arc-length), if > 0
+  int steps = 100;          // nominal steps to the end of the path
+  /// An optional tail after max_stroke (displacement) or max_cmod (cmod): on to tail_end, in the
+  /// same measure, in tail_steps equal steps (fine steps through the peak, coarse ones after).
+  double tail_end = 0.0;
+  int tail_steps = 0;
   int max_iterations = 15;   // quadratic convergence needs few; more only delays the cut
   double tolerance = 1e-10;  // residual norm relative to the force scale
   int max_cuts = 10;
@@ -100,6 +104,7 @@ class QuasiStaticPath {
   static constexpr int kLineSearchHalvings = 6;
   static constexpr int kEventSearches = 60;
   static constexpr int kSettlingRounds = 100;
+  double staged_target(double at, double main_end, double fraction) const;
   Target step_target(const State& start, LoadControl control, double fraction) const;
   double max_utilization(const State& s, const Eigen::VectorXd& u) const;
   Eigen::VectorXd full(const State& s) const { return model_.constraints().expand(s.x, s.lambda); }

@@ -142,6 +142,11 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
     r.dissipated_energy = p.energy.dissipated;
     r.crack_length = p.energy.crack_length;
     r.energy_balance_error = std::max(r.energy_balance_error, p.balance_error());
+    if (scene.geometry.kind == FractureProblemKind::tension_bar) {
+      const double d = tension_bar_deviation(scene.geometry, material, model.interfaces().law(),
+                                             scene.thickness, p.stroke, p.cmod, p.load);
+      r.closed_form_error = std::isnan(r.closed_form_error) ? d : std::max(r.closed_form_error, d);
+    }
     r.newton_iterations += p.iterations;
     ++r.points;
     if (scene.vtu_every > 0 && p.step % scene.vtu_every == 0) {

@@ -2,6 +2,7 @@
 // One run of a fracture study: a mesh realization at one level, followed along the load path.
 // Its curve, its crack faces and its deformed-mesh series are written as it goes (curves and
 // .vtu atomically, so a stopped run leaves only whole files); its summary becomes one record.
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ struct FractureRecord {
   double peak_load = 0.0, displacement_at_peak = 0.0;
   double dissipated_energy = 0.0, crack_length = 0.0;
   double energy_balance_error = 0.0;  // the largest over the converged points
+  double closed_form_error = NAN;     // tension bar: the largest deviation from the closed form
   int points = 0, newton_iterations = 0, factorizations = 0;
   bool complete = false;
   std::string failure;

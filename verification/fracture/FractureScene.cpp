@@ -59,6 +59,23 @@ void read_cohesive(SceneObject& top, FractureScene& s) {
   c.finish();
 }
 
+/// loading.tail: a second stage of equal steps after the main one, in the control's measure.
+void read_tail(SceneObject& loading, PathOptions& o) {
+  SceneObject t = object_at(loading, "tail");
+  const bool by_cmod = o.control == LoadControl::cmod;
+  const std::string end_key = by_cmod ? "max_cmod" : "max_displacement";
+  o.tail_end = t.number(end_key, 0.0);
+  o.tail_steps = t.integer("steps", 10);
+  const double main_end = by_cmod ? o.max_cmod : o.max_stroke;
+  if (o.control == LoadControl::arc_length)
+    t.fail_value(end_key, "a tail needs displacement or cmod control");
+  if (!(o.tail_end > main_end))
+    t.fail_value(end_key, "expected beyond the main stage's end " + fmt(main_end) + ", found " +
+                              fmt(o.tail_end));
+  if (o.tail_steps < 1) t.fail_value("steps", "expected >= 1");
+  t.finish();
+}
+
 void read_cracking_and_loading(SceneObject& top, FractureScene& s) {
   SceneObject c = object_at(top, "cracking");
   try {
@@ -80,6 +97,7 @@ void read_cracking_and_loading(SceneObject& top, FractureScene& s) {
   if (s.loading.steps < 1) l.fail_value("steps", "expected >= 1");
   if (s.loading.max_stroke < 0) l.fail_value("max_displacement", "expected >= 0");
   if (s.loading.max_cmod < 0) l.fail_value("max_cmod", "expected >= 0");
+  if (l.has("tail")) read_tail(l, s.loading);
   l.finish();
 }
 

@@ -112,13 +112,35 @@ FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g,
   return s;
 }
 
+namespace {
+
+/// The modulus of the bar in uniaxial stress (free to contract across its height).
+double bar_modulus(const IsotropicElasticity& material) {
+  return material.model() == PlaneModel::stress
+             ? material.E()
+             : material.E() / (1.0 - material.nu() * material.nu());
+}
+
+}  // namespace
+
 BarResponse tension_bar_closed_form(const FractureGeometry& g, const IsotropicElasticity& material,
                                     const CohesiveLaw& law, double thickness, double opening) {
-  const double E = material.model() == PlaneModel::stress
-                       ? material.E()
-                       : material.E() / (1.0 - material.nu() * material.nu());
   const double sigma = law.envelope(opening);
-  return {sigma * g.domain.width() / E + opening, sigma * g.domain.height() * thickness};
+  return {sigma * g.domain.width() / bar_modulus(material) + opening,
+          sigma * g.domain.height() * thickness};
+}
+
+double tension_bar_deviation(const FractureGeometry& g, const IsotropicElasticity& material,
+                             const CohesiveLaw& law, double thickness, double stroke,
+                             double opening, double load) {
+  const double peak = law.parameters().strength * g.domain.height() * thickness;
+  if (opening <= kIntactOpening * law.critical_opening()) {  // the gauge reads round-off
+    const double elastic =
+        bar_modulus(material) * stroke / g.domain.width() * peak / law.parameters().strength;
+    return std::abs(load - elastic) / peak;
+  }
+  const BarResponse cf = tension_bar_closed_form(g, material, law, thickness, opening);
+  return std::max(std::abs(load - cf.load) / peak, std::abs(stroke - cf.stroke) / cf.stroke);
 }
 
 }  // namespace vorodg

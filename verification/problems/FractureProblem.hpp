@@ -49,5 +49,13 @@ struct BarResponse {
 };
 BarResponse tension_bar_closed_form(const FractureGeometry& g, const IsotropicElasticity& material,
                                     const CohesiveLaw& law, double thickness, double opening);
+/// Openings below this fraction of delta_c count as an intact bar.
+inline constexpr double kIntactOpening = 1e-9;
+/// How far a point of the bar's path lies from the closed form: the larger of the load's deviation
+/// over the strength's load sigma_c H t and the stroke's relative deviation. An intact bar is
+/// compared with its elastic line.
+double tension_bar_deviation(const FractureGeometry& g, const IsotropicElasticity& material,
+                             const CohesiveLaw& law, double thickness, double stroke,
+                             double opening, double load);
 
 }  // namespace vorodg

@@ -39,6 +39,9 @@ METRICS = (("peak_load", "peak load (N)"), ("dissipated_energy", "dissipated ene
 PARTS = ("elastic", "coupling", "cohesive", "dissipated", "switched")  # <part>_energy columns
 
 
+TAIL_FRACTION = 0.02  # load curves are drawn until the load falls below this fraction of the peak
+
+
 def skip(what, why):
     print(f"fracture_plots: {what} left out: {why}", file=sys.stderr)
 
@@ -126,9 +129,13 @@ def plot_load(outdir, groups, levels, xcol, xlabel, stem, dpi):
     colour = level_colours({lv for _, lv in groups})
     for ax, mesh in zip(axes, meshes):
         mine = {k: runs for k, runs in groups.items() if k[0] == mesh}
+        x_end = 0.0  # where the last curve's load falls below TAIL_FRACTION of its peak
         for key, runs in mine.items():
             for r in (r for r in runs if curves[r["id"]]):
                 x, load = columns(curves[r["id"]], xcol, "load")
+                carrying = np.nonzero(load >= TAIL_FRACTION * max(load.max(), 0.0))[0]
+                if len(carrying):
+                    x_end = max(x_end, x[min(carrying[-1] + 1, len(x) - 1)])
                 ax.plot(x * 1e3, load, color=colour[key[1]], linewidth=1.0, alpha=0.85,
                         linestyle="-" if r["complete"] else "--",
                         marker="o" if len(x) < 2 else None)  # a lone point shows as a dot
@@ -137,7 +144,9 @@ def plot_load(outdir, groups, levels, xcol, xlabel, stem, dpi):
         if not all(r["complete"] for runs in mine.values() for r in runs):
             handles.append(Line2D([], [], color="0.4", linestyle="--", label="incomplete run"))
         ax.set(xlabel=xlabel, ylabel="load (N)", title=f"mesh {mesh}")
-        ax.set_xlim(left=0)
+        # A long tail (the last ligament opening at nearly no load) would squeeze the peak into
+        # the left edge: show the curves until they carry almost nothing.
+        ax.set_xlim(left=0, right=1.1 * x_end * 1e3 if x_end > 0 else None)
         light_grid(ax)
         ax.legend(handles=handles, fontsize=8)
     save_atomically(fig, os.path.join(outdir, stem + ".png"), dpi)

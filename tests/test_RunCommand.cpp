@@ -165,6 +165,7 @@ TEST_F(RunCommand, ListsTheShippedScenes) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("demo"), std::string::npos);
   EXPECT_NE(r.out.find("patch-suite"), std::string::npos);
+  EXPECT_NE(r.out.find("fracture: Petersson's notched three-point-bend beam"), std::string::npos);
 }
 
 TEST_F(RunCommand, ThePatchSuiteMeetsItsExpectations) {

@@ -4,8 +4,8 @@
 # aggregates only (we quote medians), JSON per program in OUT_DIR, then the Markdown tables of
 # scripts/bench_table.py (machine, date, medians, counters) in OUT_DIR/tables.md.
 # Usage: tests/bench/run_benchmarks.sh [BUILD_DIR [OUT_DIR]] [PROGRAM ...]
-#   BUILD_DIR defaults to build/, OUT_DIR to out/bench/, PROGRAMs to all four:
-#   bench_meshgen bench_element bench_cg bench_dg.
+#   BUILD_DIR defaults to build/, OUT_DIR to out/bench/, PROGRAMs to all five:
+#   bench_meshgen bench_element bench_cg bench_dg bench_fracture.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -14,7 +14,7 @@ out_dir=out/bench
 if [[ $# -gt 0 && $1 != bench_* ]]; then build_dir=$1; shift; fi
 if [[ $# -gt 0 && $1 != bench_* ]]; then out_dir=$1; shift; fi
 programs=("$@")
-((${#programs[@]})) || programs=(bench_meshgen bench_element bench_cg bench_dg)
+((${#programs[@]})) || programs=(bench_meshgen bench_element bench_cg bench_dg bench_fracture)
 mkdir -p "$out_dir"
 
 jsons=()

@@ -130,6 +130,7 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
   const double magnify = 0.05 * scene.geometry.domain.scale() /
                          std::max(scene.loading.max_stroke, scene.loading.max_cmod);
   std::vector<InterfacePoint> last_points;
+  const double setup_seconds = clock.seconds();
   QuasiStaticPath path(model, scene.loading);
   const bool complete = path.run([&](const PathPoint& p, const Eigen::VectorXd& u,
                                      const std::vector<InterfacePoint>& points) {
@@ -165,6 +166,7 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
   r.failure = path.failure();
   r.factorizations = path.factorizations();
   r.seconds = clock.seconds();
+  r.path_seconds = r.seconds - setup_seconds;
   return r;
 }
 

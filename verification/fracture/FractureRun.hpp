@@ -32,6 +32,7 @@ struct FractureRecord {
   bool complete = false;
   std::string failure;
   double seconds = 0.0;
+  double path_seconds = 0.0;  // of which following the path (after mesh, element and setup)
 };
 
 /// Builds the first realization of every mesh level and its fracture setup, so that a scene

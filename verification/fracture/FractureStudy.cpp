@@ -278,10 +278,14 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
                   << std::flush;
     }
   };
-  // One run per thread: OpenBLAS's own threads would only spin against them.
-  const int blas_threads = set_blas_threads(1);
+  // One run per thread, and OpenBLAS's threads only where threads outnumber the runs left (a
+  // single fine run gets them all; otherwise they would only spin against the workers).
+  const auto left = std::count_if(runs.begin(), runs.end(),
+                                  [&](const FractureRunId& id) { return !done.count(id.id()); });
+  const int workers = std::clamp(static_cast<int>(left), 1, std::max(threads, 1));
+  const int blas_threads = set_blas_threads(std::max(1, threads / workers));
   std::vector<std::thread> pool;
-  for (int t = 0; t < std::max(threads, 1); ++t) pool.emplace_back(worker);
+  for (int t = 0; t < workers; ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
   set_blas_threads(blas_threads);
   FractureStudyResult result;

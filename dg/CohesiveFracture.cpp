@@ -52,8 +52,8 @@ std::vector<char> CohesiveFracture::crack_capable() const {
   const PolygonMesh& mesh = table_.mesh();
   std::vector<char> capable(mesh.num_edges(), 0);
   for (int e = 0; e < mesh.num_edges(); ++e)
-    capable[e] = !mesh.edge(e).on_boundary() &&
-                 (setup_.notch[e] || setup_.line[e] || cracks_anywhere(setup_.mode));
+    capable[e] = !mesh.edge(e).on_boundary() && (setup_.notch[e] || setup_.line[e] ||
+                                                 cracks_anywhere(setup_.mode) || setup_.split_all);
   return capable;
 }
 

@@ -47,6 +47,10 @@ struct FractureSetup {
   int load_vertex = -1;  // where the stroke is measured: the first constraint with reference != 0
   MouthGauge mouth;
   double thickness = 1.0;  // out of plane: forces and energies per unit thickness times this
+  /// Split every interior edge (the full DG space) whatever the mode, to measure what splitting
+  /// only the crack-capable edges saves. Not the same answer: intact edges are then coupled
+  /// weakly (SIPG) instead of sharing nodes, which makes the body slightly softer.
+  bool split_all = false;
 };
 
 }  // namespace vorodg

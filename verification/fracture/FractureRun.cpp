@@ -109,7 +109,8 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
   const ElementTable table(mesh, ElementOptions{});
   const IsotropicElasticity material(scene.E, scene.nu, scene.plane);
   const ElasticityIntegrator integrator(table, material, false);
-  const FractureSetup setup = fracture_setup(mesh, scene.geometry, scene.mode, scene.thickness);
+  FractureSetup setup = fracture_setup(mesh, scene.geometry, scene.mode, scene.thickness);
+  setup.split_all = scene.split_all;
   CohesiveParameters law = scene.law;
   if (scene.mode == CrackingMode::pre_inserted)
     law.initial_stiffness = scene.initial_stiffness * scene.E / mesh.h_avg();

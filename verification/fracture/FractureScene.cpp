@@ -84,6 +84,7 @@ void read_cracking_and_loading(SceneObject& top, FractureScene& s) {
     c.fail_value("mode", e.what());
   }
   s.geometry.line_x = c.number("line", 0.5 * (s.geometry.domain.x0() + s.geometry.domain.x1()));
+  s.split_all = c.flag("split_all", false);
   c.finish();
   SceneObject l = object_at(top, "loading");
   try {

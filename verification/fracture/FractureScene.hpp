@@ -27,6 +27,7 @@ struct FractureScene {
   MohrCoulombParameters criterion;  // cohesion, friction, tensile cutoff (default: strength)
   double initial_stiffness = 1e3;   // pre-inserted: K0 = this x E / h_avg
   CrackingMode mode = CrackingMode::restricted;
+  bool split_all = false;  // cracking.split_all: the full DG space whatever the mode
   PathOptions loading;
   std::vector<SceneMesh> meshes;
   int vtu_every = 10;  // a .vtu of the deformed mesh every this many steps (0: none)

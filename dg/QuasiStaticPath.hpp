@@ -104,6 +104,7 @@ class QuasiStaticPath {
   static constexpr int kLineSearchHalvings = 6;
   static constexpr int kEventSearches = 60;
   static constexpr int kSettlingRounds = 100;
+  static constexpr double kHalvingHelps = 0.35;  // between 1/4 (trapezoids at a kink) and 1/2
   double staged_target(double at, double main_end, double fraction) const;
   Target step_target(const State& start, LoadControl control, double fraction) const;
   double max_utilization(const State& s, const Eigen::VectorXd& u) const;
@@ -116,7 +117,11 @@ class QuasiStaticPath {
   bool take_step(State& state, int& iterations, int& inserted);
   double event_excess(const State& trial) const;
   int insert_failed_points(State& trial);
-  bool balance_acceptable(const State& trial) const;
+  struct BalanceDrift {
+    double widening;      // gap after the step less gap before (J)
+    double relative_gap;  // gap after the step over the external work
+  };
+  BalanceDrift balance_drift(const State& trial) const;
   static constexpr double kSmallestBalancedStep = 1.0 / 64.0;
   PathPoint last_;         // the last converged point
   double switched_ = 0.0;  // energy booked at insertions (PathPoint::energy.switched)

@@ -3,9 +3,11 @@
 // point, under displacement control (a short bar) and crack-mouth-opening control through
 // snap-back (a long bar), with both laws; the dissipated energy after separation is G H t; the
 // energy balance holds at every point; and below the strength nothing differs from elasticity.
+// The bar runs on quad meshes and on an imported .vtu (data/meshes/bar-symmetric-d0.02.vtu).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -26,7 +28,13 @@ struct BarCase {
   double length;
   SofteningShape shape;
   LoadControl control;
+  std::string mesh_file = "";  // family file: a .vtu under data/meshes
 };
+
+/// The shipped imported meshes (data/meshes).
+const std::string kMeshes =
+    (std::filesystem::path(VORODG_TEST_DATA).parent_path().parent_path() / "data" / "meshes")
+        .string();
 
 struct BarRun {
   std::vector<PathPoint> path;
@@ -42,6 +50,7 @@ BarRun run_bar(const BarCase& c, double max_cmod_fraction = 1.2, int steps = 40)
   spec.domain = Rectangle(0.0, 0.0, c.length, 0.1);
   spec.size = 0.025;
   spec.seed = 3;
+  if (c.family == MeshFamily::file) spec.path = kMeshes + "/" + c.mesh_file;
   const GeneratedMesh mesh = generate_mesh(spec);
   const ElementTable table(mesh.mesh, ElementOptions{});
   const IsotropicElasticity material(kE, kNu, PlaneModel::stress);
@@ -99,7 +108,12 @@ INSTANTIATE_TEST_SUITE_P(
         BarCase{MeshFamily::quad, 0.2, SofteningShape::linear, LoadControl::displacement},
         BarCase{MeshFamily::quad, 0.2, SofteningShape::bilinear, LoadControl::displacement},
         BarCase{MeshFamily::quad, 2.0, SofteningShape::linear, LoadControl::cmod},
-        BarCase{MeshFamily::quad, 2.0, SofteningShape::bilinear, LoadControl::cmod}));
+        BarCase{MeshFamily::quad, 2.0, SofteningShape::bilinear, LoadControl::cmod},
+        // An imported symmetric rcp mesh (d = 0.02) whose crack line x = 0.1 is made of edges.
+        BarCase{MeshFamily::file, 0.2, SofteningShape::linear, LoadControl::displacement,
+                "bar-symmetric-d0.02.vtu"},
+        BarCase{MeshFamily::file, 0.2, SofteningShape::bilinear, LoadControl::displacement,
+                "bar-symmetric-d0.02.vtu"}));
 
 }  // namespace
 }  // namespace vorodg

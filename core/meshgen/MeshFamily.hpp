@@ -39,8 +39,12 @@ struct MeshSpec {
   /// rcp: mirror the left half's mesh about the domain's vertical mid-line, so that a straight
   /// line of edges runs along it from bottom to top (a crack line for fracture scenes).
   bool symmetric = false;
+  /// symmetric: mirror only where a crack line must be made of edges: the mid-line from the
+  /// bottom up to the highest line mark (a notch), and the load point at its top; the rest of
+  /// the mesh stays random (docs/fracture.md "Meshes for cracks anywhere").
+  bool notch_only = false;
   /// symmetric: heights at which the mid-line must have a vertex (a notch tip); the nearest
-  /// vertex on the line, not a corner, moves along it to each.
+  /// vertex on the line, not a corner, moves along it to each. With notch_only, at most one.
   std::vector<double> line_marks;
   /// file: path of a .vtu mesh; its domain is `domain` if given, else its bounding box.
   std::string path;

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/io/VtuMesh.hpp"
+#include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "verification/model/SettingsSchema.hpp"
@@ -31,19 +33,102 @@ void check_sizes(SceneObject& m, const std::vector<double>& sizes, const Rectang
   }
 }
 
+/// The families a scene can name: those generated, and meshes read from files.
+const Choices& scene_family_choices() {
+  static const Choices choices = [] {
+    Choices out = generated_family_choices();
+    out.push_back({std::string(family_name(MeshFamily::file)), "one .vtu mesh per level"});
+    return out;
+  }();
+  return choices;
+}
+
+std::string domain_text(const Rectangle& d) {
+  // Appended piece by piece: g++ 12 warns falsely (-Wrestrict) on "[" + std::string here.
+  std::string out = "[";
+  out.append(fmt(d.x0())).append(", ").append(fmt(d.y0())).append(", ");
+  return out.append(fmt(d.x1())).append(", ").append(fmt(d.y1())).append("]");
+}
+
+/// One level of a file family, read and validated now so that a missing or broken file is
+/// refused before anything runs.
+PolygonMesh read_level_file(SceneObject& m, const std::string& name,
+                            const std::filesystem::path& path, const Rectangle& domain) {
+  std::error_code ec;  // a device (/dev/zero) would be read for ever
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    m.fail_value("files", "cannot read '" + name + "': not a regular file");
+  PolygonMesh level;
+  try {
+    level = read_vtu(path, &domain);
+  } catch (const InputError& e) {
+    m.fail_value("files", "cannot read '" + name + "': " + e.what());
+  }
+  if (const auto report = validate_mesh(level); !report.ok())
+    m.fail_value("files", "'" + name + "' is not a valid mesh of the domain " +
+                              domain_text(domain) + ": " + report.defects.front().what);
+  return level;
+}
+
+/// Family file: one level per file, its size the mesh's h_avg. A scene's source is its path
+/// (with " variants[i]" or " sweeps[i]" after it for a part of a scene): its folder is where
+/// relative names start.
+void read_file_levels(SceneObject& m, SceneMesh& mesh, const Rectangle& domain) {
+  if (m.has("sizes"))
+    m.fail_value("sizes", "not allowed with family file: its levels are the meshes of 'files'");
+  if (!m.has("files"))
+    m.fail_value("files", "missing (required with family file): one .vtu mesh per level");
+  const std::filesystem::path folder = std::filesystem::path(m.source()).parent_path();
+  for (const std::string& name : m.texts("files", {})) {
+    const std::filesystem::path path = (folder / name).lexically_normal();
+    const double h = read_level_file(m, name, path, domain).h_avg();
+    if (!mesh.sizes.empty() && !(h < mesh.sizes.back()))
+      m.fail_value("files",
+                   "levels must go from coarse to fine (h_avg strictly decreasing), "
+                   "found " +
+                       fmt(mesh.sizes.back()) + " then " + fmt(h) + " for '" + name + "'");
+    mesh.files.push_back(path);
+    mesh.sizes.push_back(h);
+  }
+  mesh.realizations = m.integer("realizations", mesh.realizations);
+  if (mesh.realizations != 1)
+    m.fail_value("realizations", "a file family has one mesh per level: expected 1, found " +
+                                     std::to_string(mesh.realizations));
+}
+
+/// `symmetric`: true (the whole rcp mesh mirrored), "notch" (mirrored along the notch and at the
+/// load point only) or false.
+void read_symmetry(SceneObject& m, SceneMesh& mesh, const std::string& family) {
+  if (!m.has("symmetric")) return;
+  const json& value = m.at("symmetric");
+  if (value.is_boolean()) {
+    mesh.symmetric = value.get<bool>();
+  } else if (value.is_string() && value.get<std::string>() == "notch") {
+    mesh.symmetric = mesh.notch_only = true;
+  } else {
+    m.fail("symmetric", "true, false or \"notch\"", value);
+  }
+  if (mesh.symmetric && mesh.family != MeshFamily::rcp)
+    m.fail_value("symmetric", "only the rcp family is mirrored, found family " + family);
+}
+
 }  // namespace
 
 SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
   SceneMesh mesh;
   const std::string family = m.text("family", std::string(family_name(mesh.family)));
-  if (!is_choice(generated_family_choices(), family))
-    m.fail_value("family", "'" + family + "': expected " + choice_list(generated_family_choices()));
+  if (!is_choice(scene_family_choices(), family))
+    m.fail_value("family", "'" + family + "': expected " + choice_list(scene_family_choices()));
   mesh.family = parse_family(family);
   mesh.label = m.text("label", family);
-  mesh.sizes = m.numbers("sizes", {});
-  check_sizes(m, mesh.sizes, domain);
-  mesh.realizations = m.integer("realizations", mesh.realizations);
-  if (mesh.realizations < 1) m.fail_value("realizations", "expected at least 1");
+  if (mesh.family == MeshFamily::file) {
+    read_file_levels(m, mesh, domain);
+  } else {
+    if (m.has("files")) m.fail_value("files", "only with family file, found family " + family);
+    mesh.sizes = m.numbers("sizes", {});
+    check_sizes(m, mesh.sizes, domain);
+    mesh.realizations = m.integer("realizations", mesh.realizations);
+    if (mesh.realizations < 1) m.fail_value("realizations", "expected at least 1");
+  }
   const double seed = m.number("seed", static_cast<double>(mesh.seed));
   if (seed < 0 || seed != std::floor(seed) || seed > 9007199254740992.0)
     m.fail_value("seed", "expected an integer in 0..2^53, found " + fmt(seed));
@@ -56,9 +141,7 @@ SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
   if (!(mesh.regularization >= 0 && mesh.regularization < kMaxRegularization))
     m.fail_value("regularization", "expected a fraction of d in [0, " + fmt(kMaxRegularization) +
                                        "), found " + fmt(mesh.regularization));
-  mesh.symmetric = m.flag("symmetric", mesh.symmetric);
-  if (mesh.symmetric && mesh.family != MeshFamily::rcp)
-    m.fail_value("symmetric", "only the rcp family is mirrored, found family " + family);
+  read_symmetry(m, mesh, family);
   m.finish();
   return mesh;
 }
@@ -250,6 +333,8 @@ MeshSpec SceneMesh::spec(const Rectangle& domain, int level, std::uint64_t reali
   out.perturbation = perturbation;
   out.regularization = regularization;
   out.symmetric = symmetric;
+  out.notch_only = notch_only;
+  if (family == MeshFamily::file) out.path = files.at(level).string();
   return out;
 }
 

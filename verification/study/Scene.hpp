@@ -22,11 +22,15 @@ struct SceneMesh {
   std::string label;  // default: the family name
   MeshFamily family = MeshFamily::rcp;
   std::vector<double> sizes;  // d (rcp, tri) or h (hex, perturbed-hex, quad), coarse to fine
+  /// file: one .vtu per level, coarse to fine, resolved against the scene's folder. Their sizes
+  /// are the meshes' h_avg, so that every study counts levels by `sizes`.
+  std::vector<std::filesystem::path> files;
   int realizations = 1;
   std::uint64_t seed = MeshSpec{}.seed;
   double perturbation = MeshSpec{}.perturbation;
   double regularization = MeshSpec{}.regularization;
-  bool symmetric = false;  // rcp: mirrored about the vertical mid-line
+  bool symmetric = false;   // rcp: mirrored about the vertical mid-line
+  bool notch_only = false;  // symmetric "notch": mirrored along the notch and at the top only
 
   /// What the generator needs for one realization of one level.
   MeshSpec spec(const Rectangle& domain, int level, std::uint64_t realization_seed) const;

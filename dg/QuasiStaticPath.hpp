@@ -86,7 +86,8 @@ class QuasiStaticPath {
   };
   struct Target {
     LoadControl control;
-    double value;  // lambda, cmod or arc length
+    double value;            // lambda, cmod or arc length
+    int max_iterations = 0;  // 0: PathOptions::max_iterations
   };
   /// A starting point for Newton: (1 - weight) from + weight to (both null: the start).
   struct Guess {
@@ -104,6 +105,7 @@ class QuasiStaticPath {
   static constexpr int kLineSearchHalvings = 6;
   static constexpr int kEventSearches = 60;
   static constexpr int kSettlingRounds = 100;
+  static constexpr int kSettlingIterations = 60;
   static constexpr double kHalvingHelps = 0.35;  // between 1/4 (trapezoids at a kink) and 1/2
   double staged_target(double at, double main_end, double fraction) const;
   Target step_target(const State& start, LoadControl control, double fraction) const;

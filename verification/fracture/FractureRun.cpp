@@ -92,8 +92,12 @@ GeneratedMesh run_mesh(const FractureScene& scene, const FractureRunId& run) {
 void check_fracture_meshes(const FractureScene& scene, const std::vector<FractureRunId>& runs) {
   std::set<std::pair<int, int>> seen;
   for (const FractureRunId& run : runs)
-    if (seen.insert({run.mesh, run.level}).second)
-      fracture_setup(run_mesh(scene, run).mesh, scene.geometry, scene.mode, scene.thickness);
+    if (seen.insert({run.mesh, run.level}).second) try {
+        fracture_setup(run_mesh(scene, run).mesh, scene.geometry, scene.mode, scene.thickness);
+      } catch (const InputError& e) {  // say which mesh of the scene, at which level
+        throw InputError("meshes[" + std::to_string(run.mesh) + "] level " +
+                         std::to_string(run.level) + ": " + e.what());
+      }
 }
 
 FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run,

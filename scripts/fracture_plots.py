@@ -19,7 +19,6 @@ each atomically (temporary file beside it, then renamed), printing its path:
 A figure without inputs is left out (one line on stderr); the exit code is always 0.
 Only the Python standard library, numpy and matplotlib (Agg) are used.
 """
-import argparse
 import csv
 import json
 import math
@@ -31,7 +30,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.lines import Line2D
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotting_common import light_grid, plt, save_atomically  # noqa: E402
+from plotting_common import light_grid, outdir_arguments, plt, save_atomically  # noqa: E402
 from study_plots import level_colours  # noqa: E402
 
 METRICS = (("peak_load", "peak load (N)"), ("dissipated_energy", "dissipated energy (J)"),
@@ -253,12 +252,7 @@ def plot_energy(outdir, groups, levels, dpi):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog="\n".join(__doc__.split("\n")[1:]))
-    ap.add_argument("outdir", metavar="OUTDIR")
-    ap.add_argument("--dpi", type=int, default=150)
-    args = ap.parse_args(argv)
+    args = outdir_arguments(__doc__, argv)
     groups = read_groups(args.outdir)
     if not groups:
         skip("every figure", f"no runs in {os.path.join(args.outdir, 'results.csv')}")
@@ -269,7 +263,7 @@ def main(argv):
              (plot_cracks,), (plot_cdfs,), (plot_energy,))
     for plot, *extra in plots:
         try:
-            plot(args.outdir, groups, levels, *extra, dpi=max(args.dpi, 1))
+            plot(args.outdir, groups, levels, *extra, dpi=args.dpi)
         except Exception as e:  # one bad figure must not cost the others
             plt.close("all")
             skip(f"a figure of {plot.__name__}", f"{type(e).__name__}: {e}")

@@ -27,7 +27,6 @@ drawn without a fitted line (the plots never fit).
 Exit codes: 0 success, 2 missing or malformed summary.json (one line on stderr), 1 anything else.
 Only the Python standard library, numpy and matplotlib (Agg) are used.
 """
-import argparse
 import math
 import os
 import sys
@@ -36,7 +35,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plotting_common import (  # noqa: E402
-    InputError, label_minor_ticks, light_grid, plt, save_atomically)
+    InputError, label_minor_ticks, light_grid, outdir_arguments, plt, save_atomically)
 from penalty_edges_plot import plot_penalty_edges  # noqa: E402
 from study_plots import MARKERS, log_limits, plot_cdf, plot_penalty, title  # noqa: E402
 from study_summary import has_mean, is_number, read_summary, usable  # noqa: E402
@@ -157,14 +156,7 @@ def plot_convergence(summary, norm, rate_key, stem, ylabel, theory, outdir, dpi)
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog="\n".join(__doc__.split("\n")[1:]))
-    ap.add_argument("outdir", metavar="OUTDIR")
-    ap.add_argument("--dpi", type=int, default=150)
-    args = ap.parse_args(argv)
-    if args.dpi <= 0:
-        ap.error(f"--dpi must be positive, got {args.dpi}")
+    args = outdir_arguments(__doc__, argv)
     if plot_extremes(args.outdir, args.dpi):
         return 0
     try:

@@ -1,4 +1,5 @@
 """Helpers shared by the plotting scripts (Debian's numpy and matplotlib only)."""
+import argparse
 import math
 import os
 import tempfile
@@ -56,3 +57,17 @@ def label_minor_ticks(axis, lo, hi):
     axis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda x, _pos: f"{x:g}"))
     axis.set_minor_formatter(matplotlib.ticker.FuncFormatter(minor))
     axis.set_tick_params(which="both", labelsize=9)
+
+
+def outdir_arguments(doc, argv):
+    """The command line every study plotter takes: OUTDIR and --dpi (positive, default 150).
+    `doc` is the script's docstring: its first line is the description, the rest the epilog."""
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog="\n".join(doc.split("\n")[1:]))
+    ap.add_argument("outdir", metavar="OUTDIR")
+    ap.add_argument("--dpi", type=int, default=150)
+    args = ap.parse_args(argv)
+    if args.dpi <= 0:
+        ap.error(f"--dpi must be positive, got {args.dpi}")
+    return args

@@ -19,7 +19,6 @@ each atomically (temporary file beside it, then renamed), printing its path:
 A figure without inputs is left out (one line on stderr); the exit code is always 0.
 Only the Python standard library, numpy and matplotlib (Agg) are used.
 """
-import csv
 import json
 import math
 import os
@@ -30,7 +29,8 @@ from matplotlib.collections import LineCollection
 from matplotlib.lines import Line2D
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotting_common import light_grid, outdir_arguments, plt, save_atomically  # noqa: E402
+from plotting_common import (  # noqa: E402
+    columns, light_grid, number, outdir_arguments, plt, read_table, save_atomically)
 from study_plots import level_colours  # noqa: E402
 
 METRICS = (("peak_load", "peak load (N)"), ("dissipated_energy", "dissipated energy (J)"),
@@ -47,30 +47,6 @@ def skip(what, why):
 
 def plural(n, noun):
     return f"{n} {noun}" + ("" if n == 1 else "s")
-
-
-def number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan  # an empty or missing field
-
-
-def read_table(path):
-    """A CSV file as {column: list of strings}, or None when it is missing or has no data rows."""
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError:
-        return None
-    return {k: [r[k] for r in rows] for k in rows[0]} if rows else None
-
-
-def columns(table, *names):
-    """The named numeric columns as arrays (NaN where a column is absent)."""
-    n = len(next(iter(table.values())))
-    return [np.array([number(v) for v in table[c]]) if c in table else np.full(n, np.nan)
-            for c in names]
 
 
 def read_groups(outdir):

@@ -1,5 +1,6 @@
 """Helpers shared by the plotting scripts (Debian's numpy and matplotlib only)."""
 import argparse
+import csv
 import math
 import os
 import tempfile
@@ -9,6 +10,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
+import numpy as np  # noqa: E402
 
 
 class InputError(Exception):
@@ -71,3 +73,28 @@ def outdir_arguments(doc, argv):
     if args.dpi <= 0:
         ap.error(f"--dpi must be positive, got {args.dpi}")
     return args
+
+
+def number(text):
+    """A CSV field as a float; NaN for an empty or missing field."""
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def read_table(path):
+    """A CSV file as {column: list of strings}, or None when it is missing or has no data rows."""
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError:
+        return None
+    return {k: [r[k] for r in rows] for k in rows[0]} if rows else None
+
+
+def columns(table, *names):
+    """The named numeric columns as arrays (NaN where a column is absent)."""
+    n = len(next(iter(table.values())))
+    return [np.array([number(v) for v in table[c]]) if c in table else np.full(n, np.nan)
+            for c in names]

@@ -9,6 +9,7 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "verification/cli/CliSupport.hpp"
+#include "verification/dynamics/DynamicsStudy.hpp"
 #include "verification/fracture/FractureStudy.hpp"
 #include "verification/study/ExtremesReport.hpp"
 #include "verification/study/Scene.hpp"
@@ -42,6 +43,8 @@ int list_scenes() {
     std::cout << std::left << std::setw(28) << f.stem().string();
     if (is_fracture_scene(f)) {  // its own keys: the convergence reader would refuse them
       std::cout << "fracture: " << read_fracture_scene(f).description << "\n";
+    } else if (is_dynamics_scene(f)) {
+      std::cout << "dynamics: " << read_dynamics_scene(f, true).description << "\n";
     } else {
       const Scene s = read_scene(f);
       std::cout << s.study << ": " << s.description << "\n";
@@ -73,6 +76,45 @@ void draw_fracture_plots(const fs::path& out) {
       std::string(python) + " '" + script.string() + "' '" + out.string() + "' >/dev/null";
   if (!fs::exists(script) || std::system(cmd.c_str()) != 0)
     std::cerr << "note: the fracture plots could not be drawn (" << cmd << ")\n";
+}
+
+/// Draws the dynamics study's energy plots with scripts/dynamics_plots.py (a note if it cannot).
+void draw_dynamics_plots(const fs::path& out) {
+  const fs::path script = fs::path(VORODG_SOURCE_DIR) / "scripts" / "dynamics_plots.py";
+  const char* python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string cmd =
+      std::string(python) + " '" + script.string() + "' '" + out.string() + "' >/dev/null";
+  if (!fs::exists(script) || std::system(cmd.c_str()) != 0)
+    std::cerr << "note: the dynamics plots could not be drawn (" << cmd << ")\n";
+}
+
+/// A dynamics study (each variant in its own subfolder), after echoing every scene key with the
+/// value used. A run that became unstable or broke down keeps its history; the study then
+/// exits 3.
+int run_dynamics(const fs::path& path, const StudyOptions& options, bool no_plots, bool force,
+                 const Stopwatch& clock) {
+  const DynamicsScene scene = read_dynamics_scene(path, force);
+  std::vector<const DynamicsScene*> parts;
+  if (scene.variants.empty()) parts.push_back(&scene);
+  for (const DynamicsScene& v : scene.variants) parts.push_back(&v);
+  int incomplete = 0;
+  std::size_t runs = 0;
+  for (const DynamicsScene* part : parts) {
+    const fs::path out = part->label.empty() ? options.out : options.out / part->label;
+    std::cout << "\n== " << (part->label.empty() ? part->name : part->label) << "\n";
+    for (const auto& [key, value] : part->settings)
+      std::cout << "#   " << key << " = " << value << "\n";
+    const DynamicsStudyResult r = run_dynamics_study(*part, out, options.threads, options.progress);
+    incomplete += r.incomplete;
+    runs += r.records.size();
+    if (!no_plots) draw_dynamics_plots(out);
+  }
+  std::cout << "\n" << scene.name << ": " << runs << " runs, " << clock.seconds() << " s\n";
+  if (incomplete > 0) {
+    std::cerr << "vorodg: " << incomplete << " dynamics runs are incomplete (see report.md)\n";
+    return 3;
+  }
+  return 0;
 }
 
 /// A fracture study (each variant in its own subfolder). A run whose path could not be
@@ -137,6 +179,8 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& o) {
   cmd->add_flag("--list", o.list, "List the shipped scenes");
   cmd->add_flag("--no-plots", o.no_plots, "Skip the PNG plots");
   cmd->add_flag("--quiet", o.quiet, "No progress bar");
+  cmd->add_flag("--force", o.force,
+                "Dynamics scenes: allow time.safety >= 1 (a step at or above the critical one)");
   return cmd;
 }
 
@@ -154,6 +198,8 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   options.threads = o.threads;
   options.progress = !o.quiet;
   if (is_fracture_scene(scene_path)) return run_fracture(scene_path, options, o.no_plots, clock);
+  if (is_dynamics_scene(scene_path))
+    return run_dynamics(scene_path, options, o.no_plots, o.force, clock);
   const Scene scene = read_scene(scene_path);
   if (scene.study == "extremes") return run_extremes(scene, options, o.no_plots, clock);
   const auto results = run_study(scene, options);

@@ -13,6 +13,7 @@ struct RunCommandOptions {
   bool list = false;
   bool no_plots = false;
   bool quiet = false;
+  bool force = false;  // dynamics: allow time.safety >= 1
 };
 
 CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options);

@@ -1,24 +1,20 @@
 #include "verification/fracture/FractureStudy.hpp"
 
-#include <omp.h>
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <thread>
 
 #include "core/io/AtomicFile.hpp"
-#include "core/util/BlasInfo.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
 #include "verification/report/Extrapolation.hpp"
 #include "verification/report/KolmogorovSmirnov.hpp"
 #include "verification/report/SampleStatistics.hpp"
+#include "verification/study/ResumableRuns.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -80,19 +76,6 @@ FractureRecord from_json(const json& j, const FractureRunId& id) {
   r.complete = j.at("complete"), r.failure = j.at("failure"), r.seconds = j.at("seconds");
   if (j.contains("closed_form_error")) r.closed_form_error = j.at("closed_form_error");
   return r;
-}
-
-std::map<std::string, json> read_done(const fs::path& file) {
-  std::map<std::string, json> done;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    try {
-      const json j = json::parse(line);
-      done[j.at("id")] = j;
-    } catch (const json::exception&) {  // a line cut short by a stop: that run runs again
-    }
-  }
-  return done;
 }
 
 struct LevelStats {
@@ -246,48 +229,22 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
   const std::vector<FractureRunId> runs = expand(scene);
   check_fracture_meshes(scene, runs);
   fs::create_directories(out);
-  const fs::path jsonl = out / "results.jsonl";
-  std::map<std::string, json> done = read_done(jsonl);
-  std::mutex lock;
-  std::ofstream append(jsonl, std::ios::app);
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    omp_set_num_threads(1);  // each run on its own thread: no nested OpenMP teams to spin
-    omp_set_dynamic(
-        1);  // CHOLMOD asks for 4 threads whatever the setting: let the runtime shrink that
-    for (std::size_t i; (i = next++) < runs.size();) {
-      {
-        std::lock_guard<std::mutex> guard(lock);
-        if (done.count(runs[i].id())) continue;
-      }
-      FractureRecord r;
-      try {
-        r = run_fracture(scene, runs[i], out);
-      } catch (const std::exception& e) {
-        r.run = runs[i];
-        r.failure = e.what();
-      }
-      std::lock_guard<std::mutex> guard(lock);
-      const json j = to_json(r);
-      append << j.dump() << '\n' << std::flush;
-      done[runs[i].id()] = j;
-      if (progress)
-        std::cout << "  " << r.run.id() << ": peak " << fmt(r.peak_load, 5) << " N, " << r.points
-                  << " points, " << fmt(r.seconds, 3) << " s"
-                  << (r.complete ? "" : " (incomplete: " + r.failure + ")") << "\n"
-                  << std::flush;
-    }
-  };
-  // One run per thread, and OpenBLAS's threads only where threads outnumber the runs left (a
-  // single fine run gets them all; otherwise they would only spin against the workers).
-  const auto left = std::count_if(runs.begin(), runs.end(),
-                                  [&](const FractureRunId& id) { return !done.count(id.id()); });
-  const int workers = std::clamp(static_cast<int>(left), 1, std::max(threads, 1));
-  const int blas_threads = set_blas_threads(std::max(1, threads / workers));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < workers; ++t) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
-  set_blas_threads(blas_threads);
+  std::vector<std::string> ids;
+  for (const FractureRunId& id : runs) ids.push_back(id.id());
+  const auto done =
+      run_resumable(ids, out / "results.jsonl", threads, progress, [&](std::size_t i) {
+        FractureRecord r;
+        try {
+          r = run_fracture(scene, runs[i], out);
+        } catch (const std::exception& e) {
+          r.run = runs[i];
+          r.failure = e.what();
+        }
+        return RunOutcome{to_json(r), r.run.id() + ": peak " + fmt(r.peak_load, 5) + " N, " +
+                                          std::to_string(r.points) + " points, " +
+                                          fmt(r.seconds, 3) + " s" +
+                                          (r.complete ? "" : " (incomplete: " + r.failure + ")")};
+      });
   FractureStudyResult result;
   for (const FractureRunId& id : runs) {
     result.records.push_back(from_json(done.at(id.id()), id));

@@ -1,0 +1,237 @@
+#include "dynamics/CentralDifference.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+CentralDifference::CentralDifference(const PolygonMesh& mesh, const LumpedMass& mass,
+                                     InternalForce force, SplitDofMap dofs, double dt,
+                                     const DynamicsOptions& options)
+    : mesh_(mesh),
+      mass_(mass),
+      force_(std::move(force)),
+      dofs_(std::move(dofs)),
+      dt_(dt),
+      options_(options) {
+  require_parameter(dt > 0.0, "time step", dt, "> 0");
+  require_parameter(options.damping >= 0.0, "damping", options.damping, ">= 0");
+  bind();
+}
+
+void CentralDifference::bind() {
+  force_.bind(dofs_);
+  mass_node_ = mass_.node_masses(dofs_);
+  node_vertex_.assign(dofs_.num_nodes(), -1);
+  for (int c = 0; c < mesh_.num_cells(); ++c)
+    for (int k = 0; k < mesh_.cell_size(c); ++k)
+      node_vertex_[dofs_.node(c, k)] = mesh_.cell_vertices(c)[k];
+  prescribed_.assign(dofs_.num_dofs(), -1);
+  for (std::size_t j = 0; j < boundaries_.size(); ++j)
+    for (int v : boundaries_[j].vertices)
+      for (int node : dofs_.vertex_nodes(v)) {
+        int& slot = prescribed_[2 * node + boundaries_[j].direction];
+        if (slot >= 0)
+          throw InputError("prescribed velocity: vertex " + std::to_string(v) + ", direction " +
+                           std::to_string(boundaries_[j].direction) + ": prescribed twice");
+        slot = static_cast<int>(j);
+      }
+  const int n = dofs_.num_dofs();
+  for (Eigen::VectorXd* x :
+       {&f_ext_, &f_ext_next_, &reaction_, &v_half_, &f_contact_, &f_contact_next_})
+    x->setZero(n);
+  if (contact_) contact_->bind(dofs_, mass_node_);
+}
+
+void CentralDifference::set_contact(ContactForces& contact) {
+  if (initialized_) throw InputError("contact: set after initialize()");
+  contact_ = &contact;
+  contact_->bind(dofs_, mass_node_);
+}
+
+void CentralDifference::contact_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
+  if (contact_)
+    contact_->evaluate(u_, v, dt_, f);
+  else
+    f.setZero(dofs_.num_dofs());
+}
+
+void CentralDifference::add_velocity_boundary(VelocityBoundary bc) {
+  if (initialized_) throw InputError("prescribed velocity: added after initialize()");
+  if (bc.direction != 0 && bc.direction != 1)
+    throw InputError("prescribed velocity: direction " + std::to_string(bc.direction) +
+                     ": expected 0 (x) or 1 (y)");
+  if (!bc.velocity) throw InputError("prescribed velocity: no velocity function given");
+  for (int v : bc.vertices)
+    if (v < 0 || v >= mesh_.num_vertices())
+      throw InputError("prescribed velocity: vertex " + std::to_string(v) + ": expected 0 .. " +
+                       std::to_string(mesh_.num_vertices() - 1));
+  boundaries_.push_back(std::move(bc));
+  bind();
+}
+
+void CentralDifference::boundary_values(double t, std::vector<double>& out) const {
+  out.resize(boundaries_.size());
+  for (std::size_t j = 0; j < boundaries_.size(); ++j) out[j] = boundaries_[j].velocity(t);
+}
+
+void CentralDifference::external_forces(double t, Eigen::VectorXd& f) {
+  f.setZero(dofs_.num_dofs());
+  if (body_force_) {
+    const Eigen::Vector2d b = body_force_(t);
+    for (int i = 0; i < dofs_.num_nodes(); ++i) f.segment<2>(2 * i) = mass_node_[i] * b;
+  }
+  if (external_force_) external_force_(t, u_, f);
+}
+
+void CentralDifference::initialize(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0) {
+  if (u0.size() != dofs_.num_dofs() || v0.size() != dofs_.num_dofs())
+    throw InputError("initial state: " + std::to_string(u0.size()) + " displacements and " +
+                     std::to_string(v0.size()) + " velocities, expected " +
+                     std::to_string(dofs_.num_dofs()) + " each");
+  u_ = u0;
+  v_ = v0;
+  record_ = StepRecord{};
+  std::vector<double> vbar0;
+  boundary_values(0.0, vbar0);
+  boundary_values(0.5 * dt_, vbar_half_);
+  for (int i = 0; i < dofs_.num_dofs(); ++i)
+    if (prescribed_[i] >= 0) v_[i] = vbar0[prescribed_[i]];
+  restart();
+  initialized_ = true;
+  record_.initial_balance = record_.balance();
+  record_.initial_balance_integer = record_.balance_integer();
+}
+
+void CentralDifference::restart() {
+  const double elastic = force_.compute(u_, f_int_, options_.threads);
+  external_forces(record_.time, f_ext_);
+  if (contact_) contact_->restart();  // the state may have jumped: a new work segment
+  contact_forces(v_, f_contact_);
+  const double c = options_.damping;
+  a_.resize(dofs_.num_dofs());
+  for (int i = 0; i < dofs_.num_dofs(); ++i) {
+    const double m = mass_node_[i / 2];
+    const double applied = f_ext_[i] + f_contact_[i] - f_int_[i] - c * m * v_[i];
+    const int j = prescribed_[i];
+    // A prescribed DOF accelerates so that its first half step lands on vbar(t + dt/2).
+    a_[i] = j < 0 ? applied / m : 2.0 * (vbar_half_[j] - v_[i]) / dt_;
+    reaction_[i] = j < 0 ? 0.0 : m * a_[i] - applied;
+  }
+  std::array<double, 8> sums = sum_.sum<8>(dofs_.num_nodes(), options_.threads,
+                                           [&](int i, double* acc) { add_state(i, acc); });
+  book(sums, elastic);
+}
+
+void CentralDifference::add_state(int i, double* acc) const {
+  const double m = mass_node_[i];
+  const Eigen::Vector2d v = v_.segment<2>(2 * i), a = a_.segment<2>(2 * i);
+  const Eigen::Vector2d x = node_position(i) + u_.segment<2>(2 * i);
+  acc[3] += 0.5 * m * v.squaredNorm();
+  acc[4] += m * a.squaredNorm();
+  acc[5] += m * v.x();
+  acc[6] += m * v.y();
+  acc[7] += m * (x.x() * v.y() - x.y() * v.x());
+}
+
+void CentralDifference::book(const std::array<double, 8>& sums, double elastic) {
+  record_.external_work += sums[0];
+  record_.reaction_work += sums[1];
+  record_.damping_dissipation += sums[2];
+  record_.kinetic = sums[3];
+  record_.kinetic_leapfrog = sums[3] - dt_ * dt_ / 8.0 * sums[4];
+  record_.elastic = elastic;
+  if (contact_) record_.contact_work = contact_->work();
+  record_.momentum = {sums[5], sums[6]};
+  record_.angular_momentum = sums[7];
+}
+
+const StepRecord& CentralDifference::step() {
+  if (!initialized_) throw InputError("central difference: step() before initialize()");
+  const long n = record_.step;
+  const int dofs = dofs_.num_dofs();
+  const int threads = std::max(options_.threads, 1);
+  // First half step and the displacement update.
+#pragma omp parallel for schedule(static, 2048) num_threads(threads)
+  for (int i = 0; i < dofs; ++i) {
+    const int j = prescribed_[i];
+    v_half_[i] = j < 0 ? v_[i] + 0.5 * dt_ * a_[i] : vbar_half_[j];
+    u_[i] += dt_ * v_half_[i];
+  }
+  const double t_next = double(n + 1) * dt_;
+  const double elastic = force_.compute(u_, f_int_, threads);
+  external_forces(t_next, f_ext_next_);
+  contact_forces(v_half_, f_contact_next_);
+  boundary_values(t_next + 0.5 * dt_, vbar_next_half_);
+  // Second half step, fused with the bookkeeping of the work done over the step.
+  const double c = options_.damping;
+  auto second_half = [&](int node, double* acc) {
+    const double m = mass_node_[node];
+    for (int i = 2 * node; i < 2 * node + 2; ++i) {
+      const int j = prescribed_[i];
+      const double vh = v_half_[i], du = dt_ * vh;
+      const double applied = f_ext_next_[i] + f_contact_next_[i] - f_int_[i];
+      double a, v, r = 0.0;
+      if (j < 0) {
+        a = (applied - c * m * vh) / (m * (1.0 + 0.5 * c * dt_));
+        v = vh + 0.5 * dt_ * a;
+      } else {
+        a = (vbar_next_half_[j] - vbar_half_[j]) / dt_;
+        v = vh + 0.5 * dt_ * a;
+        r = m * a - (applied - c * m * v);
+      }
+      acc[0] += 0.5 * du * (f_ext_[i] + f_ext_next_[i]);
+      acc[1] += 0.5 * du * (reaction_[i] + r);
+      acc[2] += 0.5 * du * c * m * (v_[i] + v);
+      v_[i] = v;
+      a_[i] = a;
+      reaction_[i] = r;
+    }
+    add_state(node, acc);
+  };
+  const auto sums = sum_.sum<8>(dofs_.num_nodes(), threads, second_half);
+  std::swap(f_ext_, f_ext_next_);
+  std::swap(f_contact_, f_contact_next_);
+  std::swap(vbar_half_, vbar_next_half_);
+  record_.step = n + 1;
+  record_.time = t_next;
+  book(sums, elastic);
+  return record_;
+}
+
+void CentralDifference::remap(SplitDofMap dofs) {
+  if (!initialized_) throw InputError("central difference: remap() before initialize()");
+  const double before = record_.kinetic_leapfrog + record_.elastic;
+  const SplitDofMap old = std::move(dofs_);
+  const Eigen::VectorXd u_old = u_, v_old = v_;
+  dofs_ = std::move(dofs);
+  bind();
+  // Per new node: its first old node, whether all its pairs share it, and mass-weighted sums.
+  const int nodes = dofs_.num_nodes();
+  std::vector<int> source(nodes, -1);
+  std::vector<char> single(nodes, 1);
+  Eigen::VectorXd mu = Eigen::VectorXd::Zero(2 * nodes), mv = mu;
+  for (int c = 0; c < mesh_.num_cells(); ++c)
+    for (int k = 0; k < mesh_.cell_size(c); ++k) {
+      const int to = dofs_.node(c, k), from = old.node(c, k);
+      if (source[to] < 0) source[to] = from;
+      if (source[to] != from) single[to] = 0;
+      mu.segment<2>(2 * to) += mass_.pair_mass(c, k) * u_old.segment<2>(2 * from);
+      mv.segment<2>(2 * to) += mass_.pair_mass(c, k) * v_old.segment<2>(2 * from);
+    }
+  u_.resize(2 * nodes);
+  v_.resize(2 * nodes);
+  for (int i = 0; i < nodes; ++i) {
+    // A split copies exactly (a mean of equal values need not round to the value).
+    u_.segment<2>(2 * i) = single[i] ? u_old.segment<2>(2 * source[i]).eval()
+                                     : (mu.segment<2>(2 * i) / mass_node_[i]).eval();
+    v_.segment<2>(2 * i) = single[i] ? v_old.segment<2>(2 * source[i]).eval()
+                                     : (mv.segment<2>(2 * i) / mass_node_[i]).eval();
+  }
+  restart();
+  record_.remap_energy += record_.kinetic_leapfrog + record_.elastic - before;
+}
+
+}  // namespace vorodg

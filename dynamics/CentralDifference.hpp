@@ -1,0 +1,143 @@
+#pragma once
+// Explicit central differences in velocity Verlet form on the node DOFs of a split (cell,
+// vertex) DOF map (report section 6), with lumped masses:
+//     v_{n+1/2} = v_n + dt/2 a_n
+//     u_{n+1}   = u_n + dt v_{n+1/2}
+//     f_int     = K u_{n+1}                                  (cell by cell, InternalForce)
+//     a_{n+1}   = (f_ext - f_int - c M v_{n+1}) / M,    v_{n+1} = v_{n+1/2} + dt/2 a_{n+1}
+// The damping velocity v_{n+1} is the centred one; with a diagonal M the equation for a_{n+1}
+// is solved in closed form, a = (f_ext - f_int - c M v_{n+1/2}) / (M (1 + c dt/2)). This is the
+// classic damped central difference (velocity (u_{n+1} - u_{n-1}) / 2dt), whose stability limit
+// is 2/omega_max whatever c, so StableTimeStep applies unchanged.
+//
+// Prescribed velocities act on the half-step velocities: v_{n+1/2} = vbar(t_{n+1/2}) exactly.
+// Their acceleration is the one those imply, a_n = (vbar(t_{n+1/2}) - vbar(t_{n-1/2})) / dt
+// (a_0 = 2 (vbar(dt/2) - vbar(0)) / dt), and the reaction is R = M a - (f_ext - f_int - c M v):
+// the force the constraint must apply. With it the energy balance of StepRecord closes.
+//
+// Contact (set_contact, optional): ContactForces adds the forces of surface-to-surface contact
+// and of rigid planes at every evaluation, from the displacements u_{n+1} and the half-step
+// velocities v_{n+1/2} (only contact damping reads them; v_0 at the start). They enter the
+// acceleration like applied forces but are kept apart, so that their work (booked by
+// ContactWork as the trapezoid over the step) goes to StepRecord::contact_work.
+//
+// Every loop is parallel over cells or nodes, writing its own slots, and every sum is an
+// OrderedSum: results are bit-for-bit the same for any thread count.
+#include <Eigen/Core>
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "core/dofs/SplitDofMap.hpp"
+#include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/ContactForces.hpp"
+#include "dynamics/InternalForce.hpp"
+#include "dynamics/LumpedMass.hpp"
+#include "dynamics/OrderedSum.hpp"
+#include "dynamics/StepRecord.hpp"
+#include "dynamics/VelocityBoundary.hpp"
+
+namespace vorodg {
+
+struct DynamicsOptions {
+  double damping = 0.0;  // mass-proportional damping c (1/s): force -c M v
+  int threads = 1;
+};
+
+class CentralDifference {
+ public:
+  /// Body force per unit mass, a function of time.
+  using BodyForce = std::function<Eigen::Vector2d(double)>;
+  /// Extra applied nodal forces at (t, u), added into f (node DOFs), e.g. contact.
+  using ExternalForce = std::function<void(double, const Eigen::VectorXd&, Eigen::VectorXd&)>;
+
+  /// `mesh` and `mass` must outlive the integrator. Throws InputError unless dt > 0 and c >= 0.
+  CentralDifference(const PolygonMesh& mesh, const LumpedMass& mass, InternalForce force,
+                    SplitDofMap dofs, double dt, const DynamicsOptions& options = {});
+
+  // Loads and boundaries: set before initialize().
+  void set_body_force(BodyForce b) { body_force_ = std::move(b); }
+  void set_external_force(ExternalForce f) { external_force_ = std::move(f); }
+  /// Contact forces at every step; `contact` must outlive the integrator (it keeps the contact
+  /// reports and the work account). Throws InputError after initialize().
+  void set_contact(ContactForces& contact);
+  /// Throws InputError naming the vertex if a DOF is prescribed twice or a vertex is unknown,
+  /// and after initialize().
+  void add_velocity_boundary(VelocityBoundary bc);
+
+  /// State at t = 0 (node DOF vectors of dofs()); prescribed DOFs take vbar(0). Computes a_0,
+  /// the reactions and the step-0 record.
+  void initialize(const Eigen::VectorXd& u0, const Eigen::VectorXd& v0);
+  /// One step; returns its record. Throws InputError before initialize().
+  const StepRecord& step();
+
+  /// Rebinds the state to another DOF map of the same mesh (nodes split or merged). Each new
+  /// node takes the mass-weighted mean of the old nodes of its pairs: a copy when they are all
+  /// one node (a split), so momentum and kinetic energy are kept. Accelerations and reactions
+  /// are recomputed at the current time; the change of K* + elastic goes to remap_energy.
+  /// Throws InputError before initialize().
+  void remap(SplitDofMap dofs);
+
+  double dt() const { return dt_; }
+  double time() const { return record_.time; }
+  long step_count() const { return record_.step; }
+  const StepRecord& record() const { return record_; }
+  const SplitDofMap& dofs() const { return dofs_; }
+  const InternalForce& force() const { return force_; }
+  /// For GlobalTimeStep on the current map (it overwrites the per-cell buffers only).
+  InternalForce& force() { return force_; }
+  const Eigen::VectorXd& displacement() const { return u_; }
+  const Eigen::VectorXd& velocity() const { return v_; }
+  const Eigen::VectorXd& acceleration() const { return a_; }
+  const Eigen::VectorXd& internal_force() const { return f_int_; }
+  /// The contact forces of the last evaluation (zero without contact).
+  const Eigen::VectorXd& contact_force() const { return f_contact_; }
+  const ContactForces* contact() const { return contact_; }
+  /// Reaction forces at the prescribed DOFs (zero elsewhere).
+  const Eigen::VectorXd& reaction() const { return reaction_; }
+  /// Per node (not per DOF).
+  const Eigen::VectorXd& node_masses() const { return mass_node_; }
+  /// Reference position of node i (its mesh vertex).
+  const Point& node_position(int i) const { return mesh_.vertex(node_vertex_[i]); }
+  /// The boundary (index in add order) prescribing a node DOF, or -1 if the DOF is free.
+  int prescribed_boundary(int dof) const { return prescribed_[dof]; }
+
+ private:
+  void bind();
+  void external_forces(double t, Eigen::VectorXd& f);
+  /// Contact forces at the current displacements and velocities v (zero without contact).
+  void contact_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f);
+  void boundary_values(double t, std::vector<double>& out) const;
+  /// Accelerations, reactions, forces and the record's state at the current time from u_ and v_
+  /// (after initialize or remap).
+  void restart();
+  /// The record's state from per-step sums: work increments (external, reaction, damping), then
+  /// kinetic, a.M a, momentum x, y, angular momentum.
+  void book(const std::array<double, 8>& sums, double elastic);
+  /// Adds node i's state to sums[3..7].
+  void add_state(int i, double* sums) const;
+
+  const PolygonMesh& mesh_;
+  const LumpedMass& mass_;
+  InternalForce force_;
+  SplitDofMap dofs_;
+  double dt_;
+  DynamicsOptions options_;
+  BodyForce body_force_;
+  ExternalForce external_force_;
+  ContactForces* contact_ = nullptr;
+  std::vector<VelocityBoundary> boundaries_;
+
+  std::vector<int> node_vertex_;
+  std::vector<int> prescribed_;  // per DOF: boundary index or -1
+  Eigen::VectorXd mass_node_;
+  Eigen::VectorXd u_, v_, a_, f_int_, f_ext_, f_ext_next_, reaction_;
+  Eigen::VectorXd f_contact_, f_contact_next_;
+  Eigen::VectorXd v_half_;
+  std::vector<double> vbar_half_, vbar_next_half_;  // vbar(t_{n+1/2}), vbar(t_{n+3/2})
+  StepRecord record_;
+  OrderedSum sum_;
+  bool initialized_ = false;
+};
+
+}  // namespace vorodg

@@ -1,0 +1,86 @@
+#include "dynamics/ContactForces.hpp"
+
+#include <string>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces)
+    : mesh_(mesh),
+      law_(law),
+      surfaces_(surfaces),
+      surface_(mesh),
+      contact_(law, mesh.h_avg() > 0.0 ? mesh.h_avg() : 1.0) {
+  reference_.reserve(mesh.offsets().back());
+  for (int v : mesh.cell_vertex_list()) reference_.push_back(mesh.vertex(v));
+  const std::size_t pairs = reference_.size();
+  for (auto* buffer : {&position_, &velocity_, &force_, &plane_pair_force_})
+    buffer->assign(pairs, Point::Zero());
+}
+
+void ContactForces::add_plane(const Point& point, const Point& normal) {
+  planes_.emplace_back(point, normal, law_);
+}
+
+void ContactForces::bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses) {
+  if (node_masses.size() != dofs.num_nodes())
+    throw InputError("contact: " + std::to_string(node_masses.size()) +
+                     " node masses: expected one per node, " + std::to_string(dofs.num_nodes()));
+  node_.resize(reference_.size());
+  mass_.resize(reference_.size());
+  for (int c = 0; c < mesh_.num_cells(); ++c)
+    for (int k = 0; k < mesh_.cell_size(c); ++k) {
+      const int p = mesh_.offsets()[c] + k, n = dofs.node(c, k);
+      node_[p] = n;
+      mass_[p] = node_masses[n];
+    }
+  num_dofs_ = dofs.num_dofs();
+}
+
+void ContactForces::restart() {
+  booked_ += work_.work();
+  work_ = ContactWork{};
+}
+
+void ContactForces::gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  if (num_dofs_ < 0) throw InputError("contact: evaluate() before bind()");
+  if (u.size() != num_dofs_ || v.size() != num_dofs_)
+    throw InputError("contact: " + std::to_string(u.size()) + " displacements and " +
+                     std::to_string(v.size()) + " velocities: expected " +
+                     std::to_string(num_dofs_) + " each");
+  for (std::size_t p = 0; p < reference_.size(); ++p) {
+    const int n = node_[p];
+    position_[p] = reference_[p] + Point(u[2 * n], u[2 * n + 1]);
+    velocity_[p] = Point(v[2 * n], v[2 * n + 1]);
+  }
+}
+
+void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double dt,
+                             Eigen::VectorXd& f) {
+  gather_state(u, v);
+  std::fill(force_.begin(), force_.end(), Point::Zero());
+  const PairState state{position_, velocity_, mass_, node_, dt};
+  surface_report_ = surfaces_ ? contact_.add_forces(surface_, state, force_) : ContactReport{};
+  // The planes into their own buffer first: their net force is the wall's reaction, reported.
+  plane_report_ = ContactReport{};
+  plane_force_.setZero();
+  if (!planes_.empty()) {
+    std::fill(plane_pair_force_.begin(), plane_pair_force_.end(), Point::Zero());
+    for (const RigidPlane& plane : planes_)
+      plane_report_ += plane.add_forces(surface_, state, plane_pair_force_);
+    for (std::size_t p = 0; p < force_.size(); ++p) {
+      plane_force_ += plane_pair_force_[p];
+      force_[p] += plane_pair_force_[p];
+    }
+  }
+  work_.add(position_, force_);
+  f.setZero(num_dofs_);
+  // Pair by pair in CSR order: a fixed order, so the nodal sums are reproducible.
+  for (std::size_t p = 0; p < force_.size(); ++p) {
+    f[2 * node_[p]] += force_[p].x();
+    f[2 * node_[p] + 1] += force_[p].y();
+  }
+}
+
+}  // namespace vorodg

@@ -1,0 +1,89 @@
+#pragma once
+// Contact in the integrator: the bridge from CentralDifference's node DOFs to dynamics/contact,
+// which works per (cell, vertex) pair and knows nothing of the integrator (the dependency runs
+// one way: dynamics links contact, contact never includes dynamics/).
+//
+// Each evaluation reads the node displacements and velocities as pair positions x = X + u and
+// pair velocities, lets SurfaceContact (surface cells against surface cells, every body of the
+// mesh) and the rigid planes add their forces per pair, sums the pairs of each node into the
+// nodal force, and books the work of those forces with ContactWork: the trapezoid
+// (f_n + f_n+1) / 2 . (x_n+1 - x_n), which with central differences is exactly the change the
+// contact forces make in the half-step kinetic energy. So StepRecord's balance closes with
+// contact to the integrator's round-off, whatever the penalty law does.
+//
+// Surface contact forces of a pair are equal and opposite (PolygonPenetration), so they move no
+// momentum; the planes' forces are external (the plane takes the reaction) and are reported as
+// their net force on the mesh.
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+#include "core/dofs/SplitDofMap.hpp"
+#include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/contact/ContactReport.hpp"
+#include "dynamics/contact/ContactWork.hpp"
+#include "dynamics/contact/PenaltyContact.hpp"
+#include "dynamics/contact/RigidPlane.hpp"
+#include "dynamics/contact/SurfaceCells.hpp"
+#include "dynamics/contact/SurfaceContact.hpp"
+
+namespace vorodg {
+
+class ContactForces {
+ public:
+  /// `mesh` must outlive this object. `surfaces`: contact between the surface cells of the mesh
+  /// (off: rigid planes only). The grid of the surface search starts at the mesh's h_avg.
+  ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces = true);
+
+  /// A fixed rigid half-plane with the same law; `normal` points into free space.
+  void add_plane(const Point& point, const Point& normal);
+  /// The surface cells (grow it as cracks expose new surface).
+  SurfaceCells& surface() { return surface_; }
+  const SurfaceCells& surface() const { return surface_; }
+  const std::vector<RigidPlane>& planes() const { return planes_; }
+  const PenaltyContact& law() const { return law_; }
+  bool surfaces() const { return surfaces_; }
+
+  // What CentralDifference calls.
+  /// Takes the node of every pair and the node masses of a DOF map (again after a remap).
+  void bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses);
+  /// The next evaluation starts a new segment of the work account (at initialize and after a
+  /// remap, where the state jumps): the work booked so far is kept.
+  void restart();
+  /// Sets f (node DOFs, resized) to the contact forces at node displacements u and velocities v
+  /// (the half-step velocities of central differences, read only by contact damping) with step
+  /// dt, and books their work. Throws InputError before bind().
+  void evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double dt, Eigen::VectorXd& f);
+
+  /// The work of the contact forces on the mesh so far (ContactWork, over every segment).
+  double work() const { return booked_ + work_.work(); }
+  /// Of the last evaluation: between surface cells, and against the planes.
+  const ContactReport& surface_report() const { return surface_report_; }
+  const ContactReport& plane_report() const { return plane_report_; }
+  /// Net force of the planes on the mesh at the last evaluation.
+  const Point& plane_force() const { return plane_force_; }
+  /// Per pair (the mesh's CSR layout), the contact forces of the last evaluation.
+  std::span<const Point> pair_forces() const { return force_; }
+
+ private:
+  void gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
+
+  const PolygonMesh& mesh_;
+  PenaltyContact law_;
+  bool surfaces_;
+  SurfaceCells surface_;
+  SurfaceContact contact_;
+  std::vector<RigidPlane> planes_;
+  ContactWork work_;
+  double booked_ = 0.0;  // work of the segments before the current one
+
+  std::vector<Point> reference_;  // X per pair
+  std::vector<int> node_;         // node per pair, of the bound map
+  std::vector<double> mass_;      // node mass per pair
+  std::vector<Point> position_, velocity_, force_, plane_pair_force_;
+  int num_dofs_ = -1;
+  ContactReport surface_report_, plane_report_;
+  Point plane_force_ = Point::Zero();
+};
+
+}  // namespace vorodg

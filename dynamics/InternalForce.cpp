@@ -1,0 +1,135 @@
+#include "dynamics/InternalForce.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+namespace {
+
+/// The last vertex's force becomes minus the sum of the others' (x and y).
+inline void equilibrate(int n, double* f) {
+  double sx = 0.0, sy = 0.0;
+  for (int k = 0; k < n - 1; ++k) sx += f[2 * k], sy += f[2 * k + 1];
+  f[2 * n - 2] = -sx;
+  f[2 * n - 1] = -sy;
+}
+
+/// f_c = K_c u_c for a cell of N vertices, u_c gathered through the pairs' nodes; returns
+/// 1/2 u_c.f_c. Fixed sizes let Eigen unroll and vectorize the 2N x 2N mat-vec.
+/// Round-off must not create momentum. K_c annihilates translations, so u_c is taken relative
+/// to its first vertex: the same force, but with round-off that scales with the cell's
+/// deformation, not with how far it has moved (a body in uniform motion feels exactly zero
+/// force). And the cell's force must be self-equilibrated: its last vertex takes minus the sum
+/// of the others, so what round-off is left (from the rounding of u itself, which grows with a
+/// spin) moves no momentum.
+template <int N>
+double cell_force(const double* K, const int* node, const double* u, double* f) {
+  Eigen::Matrix<double, 2 * N, 1> uc;
+  const double rx = u[2 * node[0]], ry = u[2 * node[0] + 1];
+  for (int k = 0; k < N; ++k) {
+    uc[2 * k] = u[2 * node[k]] - rx;
+    uc[2 * k + 1] = u[2 * node[k] + 1] - ry;
+  }
+  Eigen::Map<Eigen::Matrix<double, 2 * N, 1>> fc(f);
+  fc.noalias() = Eigen::Map<const Eigen::Matrix<double, 2 * N, 2 * N>>(K) * uc;
+  equilibrate(N, f);
+  return 0.5 * uc.dot(fc);
+}
+
+/// The same for a cell size without a fixed-size instance.
+double cell_force_any(int n, const double* K, const int* node, const double* u, double* f) {
+  Eigen::VectorXd uc(2 * n);
+  const double rx = u[2 * node[0]], ry = u[2 * node[0] + 1];
+  for (int k = 0; k < n; ++k) {
+    uc[2 * k] = u[2 * node[k]] - rx;
+    uc[2 * k + 1] = u[2 * node[k] + 1] - ry;
+  }
+  Eigen::Map<Eigen::VectorXd> fc(f, 2 * n);
+  fc.noalias() = Eigen::Map<const Eigen::MatrixXd>(K, 2 * n, 2 * n) * uc;
+  equilibrate(n, f);
+  return 0.5 * uc.dot(fc);
+}
+
+}  // namespace
+
+InternalForce::InternalForce(const PolygonMesh& mesh, CellMatrices matrices)
+    : offsets_(mesh.offsets()), K_(std::move(matrices)) {
+  const int nc = mesh.num_cells();
+  const bool whole = K_.first == 0 && static_cast<int>(K_.offset.size()) == nc + 1;
+  if (!whole)
+    throw InputError("internal force: cell matrices of cells [" + std::to_string(K_.first) + ", " +
+                     std::to_string(K_.first + int(K_.offset.size()) - 1) + "), expected all " +
+                     std::to_string(nc) + " cells");
+  for (int c = 0; c < nc; ++c)
+    if (K_.offset[c + 1] - K_.offset[c] != 4 * std::size_t(cell_size(c)) * cell_size(c))
+      throw InputError("internal force: the matrix of cell " + std::to_string(c) +
+                       " does not match its " + std::to_string(cell_size(c)) + " vertices");
+  pair_force_.assign(2 * std::size_t(offsets_.back()), 0.0);
+  cell_energy_.assign(nc, 0.0);
+}
+
+void InternalForce::bind(const SplitDofMap& dofs) {
+  const int pairs = offsets_.back();
+  pair_node_.resize(pairs);
+  for (int c = 0; c < num_cells(); ++c)
+    for (int k = 0; k < cell_size(c); ++k) pair_node_[offsets_[c] + k] = dofs.node(c, k);
+  // Counting sort by node keeps each node's pairs in increasing order: the fixed gather order.
+  node_offsets_.assign(dofs.num_nodes() + 1, 0);
+  for (int p = 0; p < pairs; ++p) ++node_offsets_[pair_node_[p] + 1];
+  for (int i = 0; i < dofs.num_nodes(); ++i) node_offsets_[i + 1] += node_offsets_[i];
+  node_pairs_.resize(pairs);
+  std::vector<int> next(node_offsets_.begin(), node_offsets_.end() - 1);
+  for (int p = 0; p < pairs; ++p) node_pairs_[next[pair_node_[p]]++] = p;
+}
+
+double InternalForce::compute(const Eigen::VectorXd& u, Eigen::VectorXd& f, int threads) {
+  if (u.size() != 2 * num_nodes())
+    throw InputError("internal force: " + std::to_string(u.size()) + " displacements for " +
+                     std::to_string(num_nodes()) + " bound nodes");
+  f.resize(u.size());
+  cell_forces(u.data(), threads);
+  gather(f.data(), threads);
+  const auto energy = energy_sum_.sum<1>(num_cells(), threads,
+                                         [&](int c, double* acc) { acc[0] += cell_energy_[c]; });
+  return energy[0];
+}
+
+void InternalForce::cell_forces(const double* u, int threads) {
+  const int nc = num_cells();
+#pragma omp parallel for schedule(static, 512) num_threads(std::max(threads, 1))
+  for (int c = 0; c < nc; ++c) {
+    const double* K = K_.data.data() + K_.offset[c];
+    const int* node = pair_node_.data() + offsets_[c];
+    double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
+    double& e = cell_energy_[c];
+    switch (cell_size(c)) {
+      case 3: e = cell_force<3>(K, node, u, f); break;
+      case 4: e = cell_force<4>(K, node, u, f); break;
+      case 5: e = cell_force<5>(K, node, u, f); break;
+      case 6: e = cell_force<6>(K, node, u, f); break;
+      case 7: e = cell_force<7>(K, node, u, f); break;
+      case 8: e = cell_force<8>(K, node, u, f); break;
+      case 9: e = cell_force<9>(K, node, u, f); break;
+      case 10: e = cell_force<10>(K, node, u, f); break;
+      default: e = cell_force_any(cell_size(c), K, node, u, f);
+    }
+  }
+}
+
+void InternalForce::gather(double* f, int threads) const {
+  const int nodes = num_nodes();
+#pragma omp parallel for schedule(static, 1024) num_threads(std::max(threads, 1))
+  for (int i = 0; i < nodes; ++i) {
+    double fx = 0.0, fy = 0.0;
+    for (int j = node_offsets_[i]; j < node_offsets_[i + 1]; ++j) {
+      fx += pair_force_[2 * std::size_t(node_pairs_[j])];
+      fy += pair_force_[2 * std::size_t(node_pairs_[j]) + 1];
+    }
+    f[2 * i] = fx;
+    f[2 * i + 1] = fy;
+  }
+}
+
+}  // namespace vorodg

@@ -1,0 +1,40 @@
+#include "dynamics/LumpedMass.hpp"
+
+#include <string>
+
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+
+namespace vorodg {
+
+LumpedMass::LumpedMass(const ElementTable& table, double density)
+    : offsets_(table.mesh().offsets()), density_(density) {
+  require_parameter(density > 0.0, "density", density, "> 0");
+  const PolygonMesh& mesh = table.mesh();
+  pair_.assign(offsets_.back(), 0.0);
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const int n = table.num_nodes(c);
+    double* row = pair_.data() + offsets_[c];
+    for (int q = 0; q < table.num_points(c); ++q)
+      for (int k = 0; k < n; ++k) row[k] += table.weight(c, q) * table.shape(c, q, k);
+    for (int k = 0; k < n; ++k) {
+      row[k] *= density;
+      if (!(row[k] > 0.0))
+        throw NumericalError("lumped mass: cell " + std::to_string(c) + ", vertex " +
+                             std::to_string(mesh.cell_vertices(c)[k]) + " (local " +
+                             std::to_string(k) + "): expected a positive row-sum mass, found " +
+                             fmt(row[k]));
+      total_ += row[k];
+    }
+  }
+}
+
+Eigen::VectorXd LumpedMass::node_masses(const SplitDofMap& dofs) const {
+  Eigen::VectorXd m = Eigen::VectorXd::Zero(dofs.num_nodes());
+  const int cells = static_cast<int>(offsets_.size()) - 1;
+  for (int c = 0; c < cells; ++c)
+    for (int k = 0; k < offsets_[c + 1] - offsets_[c]; ++k) m[dofs.node(c, k)] += pair_mass(c, k);
+  return m;
+}
+
+}  // namespace vorodg

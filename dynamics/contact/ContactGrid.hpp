@@ -1,0 +1,78 @@
+#pragma once
+// The broad phase of contact: which axis-aligned boxes overlap, in O(N) per step. Each step
+//   1. sets the grid spacing s = max(min_spacing, largest box side) (times 1 + 1e-6, so that
+//      round-off in the binning never hides a pair), so that no box is wider than a grid cell;
+//   2. bins every box by the grid cell of its lower-left corner, with a counting sort;
+//   3. looks for the partners of each box in the 3 x 3 grid cells around its own: a box that
+//      overlaps it has its lower-left corner there, because no box is wider than s. Each pair
+//      of neighbouring grid cells is searched from one side only (the half stencil: own cell,
+//      right, and the three above), so each pair of boxes is tested once.
+// No tree and no comparison sort, so the cost is linear in the number of boxes plus the number
+// of pairs, as long as the boxes are of similar size (the largest box sets s: one huge box
+// among small ones makes every grid cell hold many).
+//
+// The grid cells are numbered row by row over the bounding box of all boxes and folded modulo a
+// bucket count of at most 4 N: while the boxes fill their bounding box this is the plain dense
+// grid; when fragments fly apart and leave it mostly empty, grid cells far apart share a bucket
+// (a spatial hash) and memory stays O(N). Sharing only adds candidates that the overlap test
+// then rejects.
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace vorodg {
+
+using Box = Eigen::AlignedBox2d;
+
+/// Two boxes, by their index in the list given to ContactGrid::find, first < second.
+struct IndexPair {
+  int first = -1;
+  int second = -1;
+  bool operator==(const IndexPair&) const = default;
+};
+
+class ContactGrid {
+ public:
+  /// min_spacing > 0: the smallest grid spacing, e.g. the mesh's h_avg. Throws InputError.
+  explicit ContactGrid(double min_spacing);
+
+  /// Every pair of boxes that overlap (closed boxes: touching counts), each pair once with
+  /// first < second. The order depends only on the boxes (by the bucket of one of the two, then
+  /// by index), so it is the same on every run. Throws NumericalError naming a box that is empty or
+  /// not finite. The result lives until the next call.
+  const std::vector<IndexPair>& find(std::span<const Box> boxes);
+
+  /// The spacing and bucket count the last call used.
+  double spacing() const { return spacing_; }
+  std::int64_t buckets() const { return num_buckets_; }
+
+ private:
+  void set_up_grid(std::span<const Box> boxes);
+  void bin(std::span<const Box> boxes);
+  void collect();
+  void collect_dense();
+  void collect_folded();
+  /// Tests sorted box s against the sorted boxes [from, to).
+  void test_range(std::size_t s, int from, int to);
+  std::int64_t grid_x(double x) const;
+  std::int64_t grid_y(double y) const;
+  std::int64_t bucket(std::int64_t ix, std::int64_t iy) const {
+    const std::int64_t cell = iy * nx_ + ix;
+    return cell < num_buckets_ ? cell : cell % num_buckets_;
+  }
+
+  double min_spacing_;
+  double spacing_ = 0.0, inverse_spacing_ = 0.0;
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+  std::int64_t nx_ = 1, ny_ = 1, num_buckets_ = 1;
+  std::vector<std::int64_t> box_bucket_;  // per box
+  std::vector<int> start_;                // bucket b holds order_[start_[b] .. start_[b+1])
+  std::vector<int> next_;                 // the counting sort's cursors
+  std::vector<int> order_;                // box indices, bucket by bucket, increasing within
+  std::vector<Box> sorted_;               // the boxes in that order, for contiguous reads
+  std::vector<IndexPair> pairs_;  // the first num_pairs_ are found; the rest is room to write
+  std::size_t num_pairs_ = 0;
+};
+
+}  // namespace vorodg

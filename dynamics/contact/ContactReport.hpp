@@ -1,0 +1,28 @@
+#pragma once
+// What one contact evaluation found. The penalty force is the gradient of the potential
+// k d^2 / 2 (PolygonPenetration), so `potential` is the energy the contact springs store now, and
+// the damping part only ever removes energy, at the rate `dissipation_power`. The two split the
+// work of the contact forces into stored and dissipated parts to first order in dt; the exact
+// account for an energy balance is that work itself (ContactWork).
+#include <algorithm>
+
+namespace vorodg {
+
+struct ContactReport {
+  int candidates = 0;              // cell pairs (or cells, for a plane) tested
+  int contacts = 0;                // penetrating vertices that got a force
+  double potential = 0.0;          // sum of k d^2 / 2
+  double dissipation_power = 0.0;  // sum of k_v <-v_n>^2 >= 0
+  double max_depth = 0.0;
+
+  ContactReport& operator+=(const ContactReport& o) {
+    candidates += o.candidates;
+    contacts += o.contacts;
+    potential += o.potential;
+    dissipation_power += o.dissipation_power;
+    max_depth = std::max(max_depth, o.max_depth);
+    return *this;
+  }
+};
+
+}  // namespace vorodg

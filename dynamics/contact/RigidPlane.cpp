@@ -1,0 +1,58 @@
+#include "dynamics/contact/RigidPlane.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <unordered_set>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+RigidPlane::RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law)
+    : point_(point), normal_(normal), law_(law) {
+  const double length = normal.norm();
+  if (!point.allFinite() || !std::isfinite(length) || length == 0.0)
+    throw InputError("rigid plane: expected a finite point and a nonzero finite normal, found (" +
+                     std::to_string(point.x()) + ", " + std::to_string(point.y()) + ") and (" +
+                     std::to_string(normal.x()) + ", " + std::to_string(normal.y()) + ")");
+  normal_ /= length;
+}
+
+ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairState& state,
+                                     std::span<Point> force) const {
+  const PolygonMesh& mesh = surface.mesh();
+  check_pair_state(mesh, state, "rigid plane");
+  law_.check(state, "rigid plane");
+  if (force.size() != state.position.size())
+    throw InputError("rigid plane: " + std::to_string(force.size()) +
+                     " force entries: expected one per (cell, vertex) pair, " +
+                     std::to_string(state.position.size()));
+  ContactReport report;
+  // Penetrating pairs are few: a set of their nodes is cheaper than a flag per node.
+  std::unordered_set<int> taken;
+  constexpr double kRigid = std::numeric_limits<double>::infinity();
+  for (int c : surface.cells()) {
+    ++report.candidates;
+    for (int p = mesh.offsets()[c]; p < mesh.offsets()[c + 1]; ++p) {
+      const double depth = -gap(state.position[p]);
+      if (!std::isfinite(depth))
+        throw NumericalError("rigid plane: cell " + std::to_string(c) +
+                             " has a non-finite vertex position");
+      if (depth <= 0.0 || !taken.insert(state.node_of(p)).second) continue;
+      const double mass =
+          state.mass.empty() ? 0.0 : PenaltyContact::reduced_mass(state.mass[p], kRigid);
+      const double rate = state.velocity.empty() ? 0.0 : -state.velocity[p].dot(normal_);
+      const auto r = law_.respond(depth, rate, mass, state.dt);
+      force[p] += r.force * normal_;
+      ++report.contacts;
+      report.potential += r.potential;
+      report.dissipation_power += r.dissipation_power;
+      report.max_depth = std::max(report.max_depth, depth);
+    }
+  }
+  return report;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,38 @@
+#pragma once
+// A rigid, fixed half-plane {x : (x - point) . n < 0} that surface cells may not enter (a floor, a
+// wall, an anvil), with the same penalty law as cell-to-cell contact. A vertex with gap
+// g = (x - point) . n < 0 penetrates by d = -g and is pushed along n; the plane takes the
+// reaction, so these forces are external to the mesh and do work on it. The target is rigid, so
+// the law's reduced mass is the vertex's own mass.
+#include <span>
+
+#include "dynamics/contact/ContactReport.hpp"
+#include "dynamics/contact/PairState.hpp"
+#include "dynamics/contact/PenaltyContact.hpp"
+#include "dynamics/contact/SurfaceCells.hpp"
+
+namespace vorodg {
+
+class RigidPlane {
+ public:
+  /// `normal` points out of the plane's solid side, into the free space; it is normalized.
+  /// Throws InputError for a zero or non-finite normal, or a non-finite point.
+  RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law);
+
+  const Point& point() const { return point_; }
+  const Point& normal() const { return normal_; }
+  /// Signed distance from the plane, negative inside the solid.
+  double gap(const Point& x) const { return (x - point_).dot(normal_); }
+
+  /// Adds the plane's forces on the vertices of surface cells to `force` (one entry per pair;
+  /// each node counted once, on its first pair in surface order) and reports the step.
+  ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
+                           std::span<Point> force) const;
+
+ private:
+  Point point_;
+  Point normal_;
+  PenaltyContact law_;
+};
+
+}  // namespace vorodg

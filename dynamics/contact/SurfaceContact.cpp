@@ -1,0 +1,101 @@
+#include "dynamics/contact/SurfaceContact.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+namespace {
+
+std::span<const Point> loop_of(const PolygonMesh& mesh, std::span<const Point> position, int c) {
+  return position.subspan(mesh.offsets()[c], mesh.cell_size(c));
+}
+
+/// The cell's current bounding box. A non-finite vertex would slip through the box's min/max
+/// unnoticed, so it is refused here, naming the cell.
+Box box_of(std::span<const Point> loop, int cell) {
+  Box box;
+  for (const Point& p : loop) {
+    if (!p.allFinite())
+      throw NumericalError("surface contact: cell " + std::to_string(cell) +
+                           " has a non-finite vertex position");
+    box.extend(p);
+  }
+  return box;
+}
+
+}  // namespace
+
+SurfaceContact::SurfaceContact(const PenaltyContact& law, double grid_spacing)
+    : law_(law), grid_(grid_spacing) {}
+
+const std::vector<IndexPair>& SurfaceContact::find_pairs(const SurfaceCells& surface,
+                                                         std::span<const Point> position) {
+  const PolygonMesh& mesh = surface.mesh();
+  if (static_cast<int>(position.size()) != mesh.offsets().back())
+    throw InputError("surface contact: " + std::to_string(position.size()) +
+                     " positions: expected one per (cell, vertex) pair, " +
+                     std::to_string(mesh.offsets().back()));
+  const auto cells = surface.cells();
+  boxes_.resize(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    boxes_[i] = box_of(loop_of(mesh, position, cells[i]), cells[i]);
+  surface_pairs_.clear();
+  cell_pairs_.clear();
+  for (const IndexPair& ij : grid_.find(boxes_)) {
+    const int a = cells[ij.first], b = cells[ij.second];
+    if (surface.neighbours(a, b)) continue;
+    surface_pairs_.push_back(ij);
+    cell_pairs_.push_back({a, b});
+  }
+  return cell_pairs_;
+}
+
+ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const PairState& state,
+                                         std::span<Point> force) {
+  check_pair_state(surface.mesh(), state, "surface contact");
+  law_.check(state, "surface contact");
+  if (force.size() != state.position.size())
+    throw InputError("surface contact: " + std::to_string(force.size()) +
+                     " force entries: expected one per (cell, vertex) pair, " +
+                     std::to_string(state.position.size()));
+  find_pairs(surface, state.position);
+  taken_.clear();
+  ContactReport report;
+  report.candidates = static_cast<int>(surface_pairs_.size());
+  for (const IndexPair& ij : surface_pairs_) {
+    test_pass(surface, ij.first, ij.second, state, force, report);
+    test_pass(surface, ij.second, ij.first, state, force, report);
+  }
+  return report;
+}
+
+void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const PairState& state,
+                               std::span<Point> force, ContactReport& report) {
+  const PolygonMesh& mesh = surface.mesh();
+  const int a = surface.cells()[i], b = surface.cells()[j];
+  const int base_a = mesh.offsets()[a], base_b = mesh.offsets()[b], nb = mesh.cell_size(b);
+  const auto loop_a = loop_of(mesh, state.position, a);
+  const auto loop_b = loop_of(mesh, state.position, b);
+  const auto exits =
+      surface.has_exposed_edge(b) ? surface.exposed_edges(b) : std::span<const char>{};
+  const Box& box_b = boxes_[j];
+  for (std::size_t k = 0; k < loop_a.size(); ++k) {
+    if (!box_b.contains(loop_a[k])) continue;  // cheap test first: most candidates never touch
+    const auto pen = PolygonPenetration::of_point(loop_a[k], loop_b, exits);
+    if (!pen) continue;
+    const int p = base_a + static_cast<int>(k);
+    const auto key =
+        (static_cast<std::uint64_t>(state.node_of(p)) << 32) | static_cast<std::uint32_t>(b);
+    if (!taken_.insert(key).second) continue;  // this node is already pushed out of b
+    const auto r =
+        law_.apply(*pen, p, base_b + pen->edge, base_b + (pen->edge + 1) % nb, state, force);
+    ++report.contacts;
+    report.potential += r.potential;
+    report.dissipation_power += r.dissipation_power;
+    report.max_depth = std::max(report.max_depth, pen->depth);
+  }
+}
+
+}  // namespace vorodg

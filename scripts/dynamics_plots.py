@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""Draws the energy plots of one dynamics study from OUTDIR (written by `vorodg run` on a dynamics
+scene).
+
+Usage:
+  dynamics_plots.py OUTDIR [--dpi N]
+
+Reads results.csv and history/<id>.csv in OUTDIR and writes, each atomically (temporary file
+beside it, then renamed), printing its path:
+  plots/<id>_energy.png  per run, two panels against time (ms):
+                         top: kinetic and elastic energy, external work (loads and prescribed
+                         velocities), contact work, dissipated energy, and kinetic + elastic;
+                         bottom: the energy balance error |balance - balance(0)| / input (log)
+                         and, when contacts occur, the number of contacts (right axis).
+A run without a history is left out (one line on stderr); the exit code is always 0.
+Only the Python standard library, numpy and matplotlib (Agg) are used.
+"""
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting_common import (  # noqa: E402
+    columns, light_grid, number, outdir_arguments, plt, read_table, save_atomically)
+
+# (history column, legend label, colour): the energies of the top panel.
+ENERGIES = (("kinetic_energy", "kinetic", "tab:blue"),
+            ("elastic_energy", "elastic", "tab:orange"),
+            ("external_work", "external work", "tab:green"),
+            ("contact_work", "contact work", "tab:red"),
+            ("dissipated_energy", "dissipated", "tab:purple"))
+
+
+def skip(what, why):
+    print(f"dynamics_plots: {what} left out: {why}", file=sys.stderr)
+
+
+def read_runs(outdir):
+    """The rows of results.csv, as dicts, in file order."""
+    table = read_table(os.path.join(outdir, "results.csv")) or {}
+    return [dict(zip(table, values)) for values in zip(*table.values())]
+
+
+def plot_energy(outdir, run, dpi):
+    table = read_table(os.path.join(outdir, "history", run["id"] + ".csv"))
+    if not table:
+        return skip(f"the energy plot of {run['id']}", "no history")
+    t = columns(table, "time")[0] * 1e3
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(9, 7.5), sharex=True, layout="constrained",
+                                      gridspec_kw={"height_ratios": (3, 2)})
+    for name, label, colour in ENERGIES:
+        y = columns(table, name)[0]
+        if np.any(np.abs(np.nan_to_num(y)) > 0):  # a term that never acts stays off the plot
+            top.plot(t, y, color=colour, linewidth=1.3, label=label)
+    total = columns(table, "kinetic_energy")[0] + columns(table, "elastic_energy")[0]
+    top.plot(t, total, color="black", linewidth=1.0, linestyle="--", label="kinetic + elastic")
+    top.set(ylabel="energy per unit thickness (J/m)")
+    light_grid(top)
+    top.legend(fontsize=8.5, loc="best")
+    error = columns(table, "balance_error")[0]
+    error[~(error > 0)] = np.nan  # exactly zero (step 0): not on a log axis
+    if np.any(np.isfinite(error)):
+        bottom.plot(t, error, color="0.3", linewidth=1.0, label="|balance - balance(0)| / input")
+        bottom.set_yscale("log")
+    bottom.set(xlabel="time (ms)", ylabel="energy balance error")
+    light_grid(bottom)
+    handles, labels = bottom.get_legend_handles_labels()
+    contacts = columns(table, "contacts")[0]
+    if np.nansum(contacts) > 0:
+        right = bottom.twinx()
+        right.plot(t, contacts, color="tab:red", linewidth=0.9, alpha=0.6, label="contacts")
+        right.set_ylabel("contacts")
+        h, lab = right.get_legend_handles_labels()
+        handles, labels = handles + h, labels + lab
+    if handles:
+        bottom.legend(handles, labels, fontsize=8.5, loc="upper left")
+    top.set_title(f"{run['id']}: {run.get('problem', '')}, {run.get('cells', '?')} cells, "
+                  f"dt {number(run.get('dt')):.3g} s, final balance error "
+                  f"{number(run.get('energy_balance_error')):.2e}", fontsize=10)
+    os.makedirs(os.path.join(outdir, "plots"), exist_ok=True)
+    save_atomically(fig, os.path.join(outdir, "plots", run["id"] + "_energy.png"), dpi)
+
+
+def main(argv):
+    args = outdir_arguments(__doc__, argv)
+    runs = [r for r in read_runs(args.outdir) if r.get("id")]
+    if not runs:
+        skip("every figure", f"no runs in {os.path.join(args.outdir, 'results.csv')}")
+        return 0
+    for run in runs:
+        try:
+            plot_energy(args.outdir, run, args.dpi)
+        except Exception as e:  # one bad figure must not cost the others
+            plt.close("all")
+            skip(f"the energy plot of {run['id']}", f"{type(e).__name__}: {e}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,234 @@
+#include "verification/dynamics/DynamicsRun.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/element/ElementTable.hpp"
+#include "core/io/PvdCollection.hpp"
+#include "core/io/VtuMesh.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+#include "core/util/Random.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "dynamics/CentralDifference.hpp"
+#include "dynamics/ContactForces.hpp"
+#include "dynamics/GlobalTimeStep.hpp"
+#include "dynamics/LumpedMass.hpp"
+#include "dynamics/StableTimeStep.hpp"
+#include "verification/dynamics/DynamicsHistory.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vorodg {
+namespace {
+
+/// The run stops as unstable once kinetic plus elastic energy exceeds this many times the energy
+/// put in: a stable run stays within round-off of its input.
+constexpr double kBlowUp = 1e6;
+
+/// The wave bar's input: a (1 - cos) rise, a hold and a (1 + cos) fall, a third of `duration`
+/// each, so that the velocity and its rate start and end at zero.
+double pulse(double t, double amplitude, double duration) {
+  const double tr = duration / 3.0;
+  if (t <= 0.0 || t >= duration) return 0.0;
+  if (t < tr) return amplitude * 0.5 * (1.0 - std::cos(std::numbers::pi * t / tr));
+  if (t < 2.0 * tr) return amplitude;
+  return amplitude * 0.5 * (1.0 + std::cos(std::numbers::pi * (t - 2.0 * tr) / tr));
+}
+
+std::vector<int> side_vertices(const PolygonMesh& mesh, Side side) {
+  std::vector<char> on(mesh.num_vertices(), 0);
+  for (const MeshEdge& e : mesh.edges())
+    if (e.side == side) on[e.v0] = on[e.v1] = 1;
+  std::vector<int> out;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (on[v]) out.push_back(v);
+  return out;
+}
+
+/// Each body's uniform velocity plus its spin about its own centre of mass.
+Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& bodies,
+                                 const CentralDifference& run) {
+  const int nodes = run.dofs().num_nodes();
+  std::vector<int> body(nodes, 0);
+  for (int c = 0; c < bodies.mesh.num_cells(); ++c)
+    for (int k = 0; k < bodies.mesh.cell_size(c); ++k)
+      body[run.dofs().node(c, k)] = bodies.body_of_cell(c);
+  std::vector<Point> centre(scene.bodies.size(), Point::Zero());
+  std::vector<double> mass(scene.bodies.size(), 0.0);
+  for (int i = 0; i < nodes; ++i) {
+    centre[body[i]] += run.node_masses()[i] * run.node_position(i);
+    mass[body[i]] += run.node_masses()[i];
+  }
+  Eigen::VectorXd v(2 * nodes);
+  for (int i = 0; i < nodes; ++i) {
+    const DynamicsBody& b = scene.bodies[body[i]];
+    const Point r = run.node_position(i) - centre[body[i]] / mass[body[i]];
+    v.segment<2>(2 * i) = b.velocity + b.angular_velocity * Point(-r.y(), r.x());
+  }
+  return v;
+}
+
+void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, CentralDifference& run) {
+  if (scene.problem != DynamicsProblem::wave_bar) return;
+  const double amplitude = scene.pulse_amplitude, duration = scene.pulse_duration;
+  run.add_velocity_boundary({side_vertices(mesh, Side::left), 0,
+                             [=](double t) { return pulse(t, amplitude, duration); }});
+  if (scene.rollers)
+    for (Side s : {Side::bottom, Side::top})
+      run.add_velocity_boundary({side_vertices(mesh, s), 1, [](double) { return 0.0; }});
+}
+
+/// One frame of the series: the mesh at x = X + u with the displacement and velocity at the
+/// vertices and each cell's mean stress and von Mises stress.
+void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDifference& run,
+                 const ElasticityIntegrator& integrator,
+                 const ElasticityIntegrator::MeanStrainOperators& strain) {
+  std::vector<Point> moved = mesh.vertices();
+  VtuField displacement{"displacement", 2, {}}, velocity{"velocity", 2, {}};
+  VtuField stress{"mean_stress", 3, {}}, von_mises{"von_mises", 1, {}};
+  std::vector<int> node(mesh.num_vertices(), -1);
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    for (int k = 0; k < mesh.cell_size(c); ++k)
+      node[mesh.cell_vertices(c)[k]] = run.dofs().node(c, k);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const Eigen::Vector2d u = run.displacement().segment<2>(2 * node[v]);
+    moved[v] += u;
+    for (int d = 0; d < 2; ++d) {
+      displacement.values.push_back(u[d]);
+      velocity.values.push_back(run.velocity()[2 * node[v] + d]);
+    }
+  }
+  const IsotropicElasticity& m = integrator.material();
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    Eigen::VectorXd uc(2 * mesh.cell_size(c));
+    for (int k = 0; k < mesh.cell_size(c); ++k)
+      uc.segment<2>(2 * k) = run.displacement().segment<2>(2 * run.dofs().node(c, k));
+    const Eigen::Vector3d s = m.D() * (strain.block(c) * uc);
+    const double sz = m.model() == PlaneModel::strain ? m.nu() * (s[0] + s[1]) : 0.0;
+    stress.values.insert(stress.values.end(), {s[0], s[1], s[2]});
+    von_mises.values.push_back(
+        std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - sz) * (s[1] - sz) +
+                         (sz - s[0]) * (sz - s[0])) +
+                  3.0 * s[2] * s[2]));
+  }
+  // The frame's domain is the deformed bounding box (the bodies have moved off the reference one).
+  Point lo = moved.front(), hi = moved.front();
+  for (const Point& p : moved) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const PolygonMesh deformed(Rectangle(lo.x(), lo.y(), hi.x(), hi.y()), moved, mesh.offsets(),
+                             mesh.cell_vertex_list());
+  write_vtu(file, deformed, {{displacement, velocity}, {stress, von_mises}});
+}
+
+}  // namespace
+
+std::vector<DynamicsRunId> dynamics_runs(const DynamicsScene& scene) {
+  std::vector<DynamicsRunId> runs;
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const SceneMesh& mesh = scene.meshes[m];
+    for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
+      for (int r = 0; r < mesh.realizations; ++r)
+        runs.push_back({static_cast<int>(m), level, r, mesh.label,
+                        derive_seed(derive_seed(mesh.seed, level), r)});
+  }
+  return runs;
+}
+
+void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<DynamicsRunId>& runs) {
+  std::set<std::pair<int, int>> seen;
+  for (const DynamicsRunId& run : runs)
+    if (seen.insert({run.mesh, run.level}).second) try {
+        bodies_mesh(scene, run);
+      } catch (const InputError& e) {  // say which mesh of the scene, at which level
+        throw InputError("scene " + scene.path.string() + ": meshes[" + std::to_string(run.mesh) +
+                         "] level " + std::to_string(run.level) + ": " + e.what());
+      }
+}
+
+DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
+                            const fs::path& out) {
+  Stopwatch clock;
+  DynamicsRecord r;
+  r.run = id;
+  const BodiesMesh bodies = bodies_mesh(scene, id);
+  const PolygonMesh& mesh = bodies.mesh;
+  r.cells = mesh.num_cells();
+  r.h_avg = bodies.h_avg;
+  const ElementTable table(mesh, ElementOptions{});
+  const LumpedMass mass(table, scene.density);
+  const ElasticityIntegrator integrator(table, IsotropicElasticity(scene.E, scene.nu, scene.plane),
+                                        scene.mean_dilation);
+  const auto strain = integrator.all_mean_strain_operators(1);
+  auto matrices = integrator.all_cell_matrices(1);
+  const StableTimeStep bound(mesh, matrices, mass);
+  const SplitDofMap dofs = SplitDofMap::continuous(mesh);
+  InternalForce force(mesh, std::move(matrices));
+  force.bind(dofs);
+  const GlobalTimeStep lanczos(force, mass.node_masses(dofs), bound);
+  r.dt_lanczos = lanczos.critical();
+  r.dt_cells = bound.critical();
+  r.lanczos_iterations = lanczos.iterations();
+  // safety x the chosen estimate; >= 1 only got here with --force.
+  r.dt = scene.safety * (scene.estimate == StepEstimate::lanczos ? r.dt_lanczos : r.dt_cells);
+  r.steps = scene.steps > 0 ? scene.steps : static_cast<long>(std::ceil(scene.end / r.dt - 1e-9));
+  CentralDifference run(mesh, mass, std::move(force), dofs, r.dt, {scene.damping, 1});
+  r.dofs = run.dofs().num_dofs();
+  ContactForces contact(mesh, PenaltyContact(scene.penalty), scene.contact);
+  if (scene.wall) contact.add_plane(scene.wall->point, scene.wall->normal);
+  if (scene.contact || scene.wall) run.set_contact(contact);
+  add_boundaries(scene, mesh, run);
+  run.initialize(Eigen::VectorXd::Zero(run.dofs().num_dofs()),
+                 initial_velocity(scene, bodies, run));
+
+  const std::string name = id.id();
+  fs::create_directories(out / "history");
+  DynamicsHistory history(out / "history" / (name + ".csv"));
+  PvdCollection series(out / "vtu" / (name + ".pvd"));
+  auto frame = [&] {
+    if (!scene.vtu) return;
+    const fs::path file =
+        out / "vtu" / name / ("step_" + std::to_string(run.step_count()) + ".vtu");
+    fs::create_directories(file.parent_path());
+    write_frame(file, mesh, run, integrator, strain);
+    series.add(run.time(), file);
+  };
+  const ContactForces* reports = run.contact();
+  DynamicsProbe probe(scene, bodies, run);
+  probe.observe();
+  history.add(run.record(), reports);
+  frame();
+  const double setup = clock.seconds();
+  try {
+    for (long s = 1; s <= r.steps; ++s) {
+      const StepRecord& step = run.step();
+      probe.observe();
+      const double energy = step.kinetic + step.elastic;
+      const bool unstable = !std::isfinite(energy) || energy > kBlowUp * step.input_energy();
+      const bool last = s == r.steps || unstable;
+      if (s % scene.history_every == 0 || last) history.add(step, reports);
+      if (s % scene.output_every == 0 || last) {
+        history.flush();
+        if (!unstable) frame();  // a blown-up state has no picture worth drawing
+      }
+      if (unstable)
+        throw NumericalError("unstable at step " + std::to_string(s) + " (t = " + fmt(step.time) +
+                             " s): the energy grew to " + fmt(energy / step.input_energy(), 3) +
+                             " times the input (dt = " + fmt(scene.safety) + " x the " +
+                             step_estimate_name(scene.estimate) + " estimate)");
+    }
+    r.complete = true;
+  } catch (const NumericalError& e) {
+    r.failure = e.what();
+  }
+  history.flush();
+  r.steps = run.step_count();  // those done: fewer if the run stopped
+  r.end_time = run.time();
+  r.measures = probe.finish();
+  r.seconds = clock.seconds();
+  r.loop_seconds = r.seconds - setup;
+  return r;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,400 @@
+#include "verification/dynamics/DynamicsScene.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "core/io/AtomicFile.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+#include "verification/dynamics/DynamicsKeys.hpp"
+#include "verification/model/SettingsSchema.hpp"
+#include "verification/study/SceneObject.hpp"
+
+namespace vorodg {
+namespace {
+
+using nlohmann::json;
+
+const std::map<std::string, DynamicsProblem>& problem_names() {
+  static const std::map<std::string, DynamicsProblem> names = {
+      {"wave-bar", DynamicsProblem::wave_bar},
+      {"free-body", DynamicsProblem::free_body},
+      {"wall-impact", DynamicsProblem::wall_impact},
+      {"two-blocks", DynamicsProblem::two_blocks}};
+  return names;
+}
+
+std::string vector_text(std::initializer_list<double> v) {
+  std::string out = "[";
+  for (double x : v) out.append(out.size() > 1 ? ", " : "").append(exact_text(x + 0.0));  // no -0
+  return out.append("]");
+}
+std::string point_text(const Point& p) {
+  return vector_text({p.x(), p.y()});
+}
+std::string rect_text(const Rectangle& r) {
+  return vector_text({r.x0(), r.y0(), r.x1(), r.y1()});
+}
+std::array<Point, 4> corners(const Rectangle& r) {
+  return {r.lo(), Point(r.x1(), r.y0()), r.hi(), Point(r.x0(), r.y1())};
+}
+
+/// Reads one scene's keys: defaults and ranges from the key table, every value used noted.
+class Reader {
+ public:
+  Reader(const json& root, const std::string& source, bool force)
+      : source_(source), force_(force), top_(root, "", source) {}
+
+  DynamicsScene read();
+
+ private:
+  SceneObject object(const std::string& key) {
+    static const json empty = json::object();
+    return SceneObject(top_.has(key) ? top_.at(key) : empty, key, source_);
+  }
+  static std::string leaf(const std::string& full) { return full.substr(full.rfind('.') + 1); }
+  void note(const std::string& key, const std::string& value) { notes_[key] = value; }
+
+  double number(SceneObject& o, const std::string& full, std::optional<double> fallback = {});
+  int integer(SceneObject& o, const std::string& full, std::optional<int> fallback = {});
+  bool flag(SceneObject& o, const std::string& full);
+  std::string word(SceneObject& o, const std::string& full, const std::string& allowed);
+  Point point(SceneObject& o, const std::string& full, const Point& fallback);
+  Rectangle rectangle(SceneObject& o, const std::string& full, const Rectangle& fallback);
+
+  void read_bodies();
+  void read_material();
+  void read_wave_bar();
+  void read_wall();
+  void read_contact();
+  void read_time();
+  /// Rough length of a run when time.end is not given (docs: the key table).
+  void default_end();
+  void refuse_unless(bool applies, const std::string& key);
+
+  const std::string& source_;
+  bool force_;
+  SceneObject top_;
+  DynamicsScene s_;
+  std::map<std::string, std::string> notes_;
+};
+
+double Reader::number(SceneObject& o, const std::string& full, std::optional<double> fallback) {
+  const DynamicsKey& k = dynamics_key(full);
+  const double v = o.number(leaf(full), fallback ? *fallback : key_default(k));
+  if (const auto bad = check_key(k, v)) o.fail_value(leaf(full), *bad);
+  note(full, exact_text(v));
+  return v;
+}
+
+int Reader::integer(SceneObject& o, const std::string& full, std::optional<int> fallback) {
+  const DynamicsKey& k = dynamics_key(full);
+  const int v = o.integer(leaf(full), fallback ? *fallback : static_cast<int>(key_default(k)));
+  if (const auto bad = check_key(k, v)) o.fail_value(leaf(full), *bad);
+  note(full, std::to_string(v));
+  return v;
+}
+
+bool Reader::flag(SceneObject& o, const std::string& full) {
+  const bool v = o.flag(leaf(full), dynamics_key(full).fallback == "true");
+  note(full, v ? "true" : "false");
+  return v;
+}
+
+std::string Reader::word(SceneObject& o, const std::string& full, const std::string& allowed) {
+  const DynamicsKey& k = dynamics_key(full);
+  const std::string v = o.text(leaf(full), k.fallback);
+  if (allowed.find(" " + v + " ") == std::string::npos)
+    o.fail_value(leaf(full), "'" + v + "': expected " + k.range);
+  note(full, v);
+  return v;
+}
+
+Point Reader::point(SceneObject& o, const std::string& full, const Point& fallback) {
+  const std::vector<double> v = o.numbers(leaf(full), {fallback.x(), fallback.y()});
+  if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
+    o.fail_value(leaf(full), "expected two finite numbers " + dynamics_key(full).type);
+  note(full, point_text({v[0], v[1]}));
+  return {v[0], v[1]};
+}
+
+Rectangle Reader::rectangle(SceneObject& o, const std::string& full, const Rectangle& fallback) {
+  const std::vector<double> d =
+      o.numbers(leaf(full), {fallback.x0(), fallback.y0(), fallback.x1(), fallback.y1()});
+  if (d.size() != 4) o.fail_value(leaf(full), "expected four numbers [x0, y0, x1, y1]");
+  try {
+    const Rectangle r(d[0], d[1], d[2], d[3]);
+    note(full, rect_text(r));
+    return r;
+  } catch (const InputError& e) {
+    o.fail_value(leaf(full), e.what());
+  }
+}
+
+void Reader::refuse_unless(bool applies, const std::string& key) {
+  if (!applies && top_.has(key))
+    top_.fail_value(key, "not used by problem " + dynamics_problem_name(s_.problem));
+}
+
+void Reader::read_bodies() {
+  const DynamicsProblem p = s_.problem;
+  const bool bar = p == DynamicsProblem::wave_bar, free = p == DynamicsProblem::free_body;
+  DynamicsBody a;
+  a.domain =
+      rectangle(top_, "domain",
+                bar    ? Rectangle(0, 0, 1, 0.05)
+                : free ? Rectangle(0, 0, 1, 1)
+                       : Rectangle(0, 0, p == DynamicsProblem::wall_impact ? 0.4 : 0.2, 0.1));
+  a.velocity = point(top_, "initial_velocity",
+                     bar    ? Point(0, 0)
+                     : free ? Point(1, 0.5)
+                            : Point(1, 0));
+  a.angular_velocity = number(top_, "angular_velocity", free ? 1.0 : 0.0);
+  s_.bodies = {a};
+  refuse_unless(p == DynamicsProblem::two_blocks, "second_block");
+  if (p != DynamicsProblem::two_blocks) return;
+  SceneObject o = object("second_block");
+  const double shift = 1.05 * a.domain.width();
+  DynamicsBody b;
+  b.domain = rectangle(
+      o, "second_block.domain",
+      Rectangle(a.domain.x0() + shift, a.domain.y0(), a.domain.x1() + shift, a.domain.y1()));
+  b.velocity = point(o, "second_block.initial_velocity", -a.velocity);
+  b.angular_velocity = number(o, "second_block.angular_velocity");
+  const bool apart = b.domain.x0() >= a.domain.x1() || a.domain.x0() >= b.domain.x1() ||
+                     b.domain.y0() >= a.domain.y1() || a.domain.y0() >= b.domain.y1();
+  if (!apart)
+    o.fail_value("domain", rect_text(b.domain) + " overlaps domain " + rect_text(a.domain) +
+                               ": expected the blocks apart (touching at most)");
+  o.finish();
+  s_.bodies.push_back(b);
+}
+
+void Reader::read_material() {
+  SceneObject m = object("material");
+  s_.E = number(m, "material.E");
+  s_.nu = number(m, "material.nu");
+  s_.plane = word(m, "material.plane", " stress strain ") == "stress" ? PlaneModel::stress
+                                                                      : PlaneModel::strain;
+  s_.density = number(m, "material.density");
+  s_.mean_dilation = flag(m, "material.mean_dilation");
+  m.finish();
+  s_.damping = number(top_, "damping");
+}
+
+void Reader::read_wave_bar() {
+  const bool bar = s_.problem == DynamicsProblem::wave_bar;
+  refuse_unless(bar, "sides");
+  refuse_unless(bar, "pulse");
+  if (!bar) return;
+  s_.rollers = word(top_, "sides", " free rollers ") == "rollers";
+  SceneObject o = object("pulse");
+  s_.pulse_amplitude = number(o, "pulse.amplitude");
+  if (s_.pulse_amplitude == 0.0) o.fail_value("amplitude", "expected not 0, found 0");
+  s_.pulse_duration =
+      number(o, "pulse.duration", 0.9 * s_.bodies[0].domain.width() / s_.wave_speed());
+  o.finish();
+}
+
+void Reader::read_wall() {
+  const bool impact = s_.problem == DynamicsProblem::wall_impact;
+  if (!impact && !top_.has("wall")) {
+    note("wall.point", "none");
+    note("wall.normal", "none");
+    return;
+  }
+  const DynamicsBody& body = s_.bodies[0];
+  if (impact && body.velocity.norm() == 0.0)
+    top_.fail_value("initial_velocity", "expected a nonzero velocity towards the wall");
+  SceneObject o = object("wall");
+  // The default wall touches the body's leading point and faces its velocity.
+  const Point ahead = impact ? Point(body.velocity.normalized()) : Point(1, 0);
+  const Point centre = 0.5 * (body.domain.lo() + body.domain.hi());
+  const double reach = 0.5 * (std::abs(ahead.x()) * body.domain.width() +
+                              std::abs(ahead.y()) * body.domain.height());
+  DynamicsWall w;
+  w.point = point(o, "wall.point", centre + reach * ahead);
+  w.normal = point(o, "wall.normal", -ahead);
+  if (w.normal.norm() == 0.0) o.fail_value("normal", "expected not [0, 0]");
+  w.normal.normalize();
+  o.finish();
+  const double tolerance = 1e-12 * body.domain.scale();
+  for (const DynamicsBody& b : s_.bodies)
+    for (const Point& c : corners(b.domain))
+      if (const double gap = (c - w.point).dot(w.normal); gap < -tolerance)
+        top_.fail_value("wall", "the plane through " + point_text(w.point) + " with normal " +
+                                    point_text(w.normal) + " cuts the body at t = 0: corner " +
+                                    point_text(c) + " lies " + fmt(-gap) +
+                                    " behind it (expected every body on its free side)");
+  if (impact && !(body.velocity.dot(w.normal) < 0.0))
+    top_.fail_value("initial_velocity", point_text(body.velocity) +
+                                            ": expected a velocity towards the wall (against "
+                                            "its normal " +
+                                            point_text(w.normal) + ")");
+  s_.wall = w;
+}
+
+void Reader::read_contact() {
+  SceneObject c = object("contact");
+  s_.contact = flag(c, "contact.enabled");
+  s_.penalty.alpha = number(c, "contact.alpha");
+  s_.penalty.damping_ratio = number(c, "contact.damping_ratio");
+  c.finish();
+}
+
+void Reader::default_end() {
+  const DynamicsBody& a = s_.bodies[0];
+  switch (s_.problem) {
+    case DynamicsProblem::free_body: s_.steps = 1000; break;
+    case DynamicsProblem::wave_bar: s_.end = 2.0 * a.domain.width() / s_.wave_speed(); break;
+    case DynamicsProblem::wall_impact: {
+      const Point n = s_.wall->normal;
+      const double length =
+          std::abs(n.x()) * a.domain.width() + std::abs(n.y()) * a.domain.height();
+      double gap = 1e300;  // from the leading corner to the wall, at the approach speed
+      for (const Point& c : corners(a.domain)) gap = std::min(gap, (c - s_.wall->point).dot(n));
+      s_.end = gap / -a.velocity.dot(n) + 3.0 * 2.0 * length / s_.bar_speed();
+      break;
+    }
+    case DynamicsProblem::two_blocks: {
+      const Rectangle &d = a.domain, &e = s_.bodies[1].domain;
+      const double gap = std::hypot(std::max({0.0, e.x0() - d.x1(), d.x0() - e.x1()}),
+                                    std::max({0.0, e.y0() - d.y1(), d.y0() - e.y1()}));
+      const double speed = (a.velocity - s_.bodies[1].velocity).norm();
+      s_.end =
+          (speed > 0.0 ? gap / speed : 0.0) + 6.0 * std::max(d.scale(), e.scale()) / s_.bar_speed();
+      break;
+    }
+  }
+  note("time.end", s_.end > 0.0 ? exact_text(s_.end) : "none (time.steps)");
+  note("time.steps", s_.steps > 0 ? std::to_string(s_.steps) : "none (time.end)");
+}
+
+void Reader::read_time() {
+  SceneObject t = object("time");
+  const bool end = t.has("end"), steps = t.has("steps");
+  if (end && steps) t.fail_value("steps", "give time.end or time.steps, not both");
+  if (end) s_.end = number(t, "time.end", 0.0), note("time.steps", "none (time.end)");
+  if (steps) s_.steps = integer(t, "time.steps", 1), note("time.end", "none (time.steps)");
+  if (!end && !steps) default_end();
+  const DynamicsKey& safety = dynamics_key("time.safety");
+  s_.safety = t.number("safety", key_default(safety));
+  if (const auto bad = check_key(safety, s_.safety)) t.fail_value("safety", *bad);
+  if (s_.safety >= 1.0 && !force_)
+    t.fail_value("safety", "expected < 1, found " + fmt(s_.safety) +
+                               " (the run may blow up; --force allows it)");
+  note("time.safety", exact_text(s_.safety));
+  s_.estimate = word(t, "time.estimate", " lanczos cells ") == "cells" ? StepEstimate::cells
+                                                                       : StepEstimate::lanczos;
+  s_.output_every = integer(t, "time.output_every");
+  s_.history_every = integer(t, "time.history_every");
+  t.finish();
+  SceneObject o = object("outputs");
+  s_.vtu = flag(o, "outputs.vtu");
+  o.finish();
+}
+
+DynamicsScene Reader::read() {
+  s_.name = top_.text("name", std::filesystem::path(source_).stem().string());
+  s_.description = top_.text("description", "");
+  s_.label = top_.text("label", "");
+  top_.text("study", "dynamics");
+  const std::string problem = word(top_, "problem", " wave-bar free-body wall-impact two-blocks ");
+  s_.problem = problem_names().at(problem);
+  read_material();
+  try {
+    IsotropicElasticity(s_.E, s_.nu, s_.plane);
+  } catch (const InputError& e) {
+    throw InputError("scene " + source_ + ": material: " + e.what());
+  }
+  read_bodies();
+  read_wave_bar();
+  read_wall();
+  read_contact();
+  read_time();
+  const json& meshes = top_.at("meshes");
+  if (!meshes.is_array() || meshes.empty())
+    top_.fail("meshes", "a non-empty array of mesh objects", meshes);
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    SceneObject m(meshes[i], "meshes[" + std::to_string(i) + "]", source_);
+    s_.meshes.push_back(read_mesh(m, s_.bodies[0].domain));
+  }
+  top_.finish();
+  for (const DynamicsKey& k : dynamics_scene_keys())
+    if (notes_.count(k.name)) s_.settings.emplace_back(k.name, notes_.at(k.name));
+  return s_;
+}
+
+}  // namespace
+
+std::string dynamics_problem_name(DynamicsProblem p) {
+  for (const auto& [name, value] : problem_names())
+    if (value == p) return name;
+  return "?";
+}
+
+std::string step_estimate_name(StepEstimate e) {
+  return e == StepEstimate::lanczos ? "lanczos" : "cells";
+}
+
+double DynamicsScene::bar_speed() const {
+  return std::sqrt(E / (density * (plane == PlaneModel::stress ? 1.0 : 1.0 - nu * nu)));
+}
+
+double DynamicsScene::dilatational_speed() const {
+  if (plane == PlaneModel::stress) return std::sqrt(E / (density * (1.0 - nu * nu)));
+  return std::sqrt(E * (1.0 - nu) / (density * (1.0 + nu) * (1.0 - 2.0 * nu)));
+}
+
+double DynamicsScene::wave_speed() const {
+  return rollers ? dilatational_speed() : bar_speed();
+}
+
+DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source, bool force) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& e) {
+    throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+  if (!root.is_object()) throw InputError("scene " + source + ": expected a JSON object");
+  if (!root.contains("variants")) return Reader(root, source, force).read();
+  json base = root;
+  base.erase("variants");
+  const json& list = root["variants"];
+  if (!list.is_array() || list.empty())
+    throw InputError("scene " + source + ": variants: expected a non-empty array of objects");
+  DynamicsScene top = Reader(base, source, force).read();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (!list[i].is_object() || !list[i].contains("label"))
+      throw InputError("scene " + source + ": variants[" + std::to_string(i) +
+                       "]: expected an object with a label");
+    json merged = base;
+    merged.merge_patch(list[i]);
+    const std::string where = source + " variants[" + std::to_string(i) + "]";
+    top.variants.push_back(Reader(merged, where, force).read());
+    top.variants.back().name = top.name;
+  }
+  return top;
+}
+
+bool is_dynamics_scene(const std::filesystem::path& path) {
+  try {
+    const json root = json::parse(read_file(path));
+    return root.is_object() && root.value("study", "") == "dynamics";
+  } catch (const json::exception&) {
+    return false;
+  }
+}
+
+DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force) {
+  DynamicsScene s = parse_dynamics_scene(read_file(path), path.string(), force);
+  s.path = path;
+  for (DynamicsScene& v : s.variants) v.path = path;
+  return s;
+}
+
+}  // namespace vorodg

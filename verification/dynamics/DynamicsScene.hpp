@@ -1,0 +1,87 @@
+#pragma once
+// The scene of a `dynamics` study (keys in docs/dynamics.md "The dynamics study"): one problem
+// (a wave bar, a free body, a block thrown at a rigid wall, two blocks thrown at each other), one
+// material, contact, the time stepping, over mesh families with levels and realizations.
+// `variants` (objects merged over the top-level keys, each with a `label`) runs several such
+// studies side by side, each into its own subfolder.
+//
+// Every key's name, type, default, range and doc are in one table (dynamics_scene_keys, in
+// DynamicsKeys.cpp); the reader takes defaults and ranges from it, refuses what is out of range
+// with one line naming the key, and records every value it used (`settings`) for the echo.
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/Rectangle.hpp"
+#include "core/material/IsotropicElasticity.hpp"
+#include "dynamics/contact/PenaltyContact.hpp"
+#include "verification/study/Scene.hpp"
+
+namespace vorodg {
+
+enum class DynamicsProblem { wave_bar, free_body, wall_impact, two_blocks };
+enum class StepEstimate { lanczos, cells };
+
+std::string dynamics_problem_name(DynamicsProblem p);
+std::string step_estimate_name(StepEstimate e);
+
+/// A rectangular body and how it is thrown: a uniform velocity plus a spin about its centre of
+/// mass.
+struct DynamicsBody {
+  Rectangle domain;
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
+  double angular_velocity = 0.0;
+};
+
+struct DynamicsWall {
+  Point point = Point::Zero();
+  Point normal = Point(-1.0, 0.0);  // into free space; normalized by the reader
+};
+
+struct DynamicsScene {
+  std::filesystem::path path;
+  std::string name, description, label;  // label: the variant's (empty at the top level)
+  DynamicsProblem problem = DynamicsProblem::wave_bar;
+  std::vector<DynamicsBody> bodies;  // one; two-blocks: two
+  double E = 0.0, nu = 0.0, density = 0.0;
+  PlaneModel plane = PlaneModel::stress;
+  bool mean_dilation = false;
+  double damping = 0.0;  // mass-proportional, 1/s
+  // wave-bar
+  bool rollers = false;  // sides: rollers on the long sides (uniaxial strain)
+  double pulse_amplitude = 0.0, pulse_duration = 0.0;
+  // contact
+  std::optional<DynamicsWall> wall;
+  bool contact = true;  // surface-to-surface contact
+  PenaltyParameters penalty;
+  // time
+  double end = 0.0;  // 0: `steps` sets the length
+  int steps = 0;     // 0: `end` sets it
+  double safety = 0.0;
+  StepEstimate estimate = StepEstimate::lanczos;
+  int output_every = 0, history_every = 0;
+  bool vtu = true;
+  std::vector<SceneMesh> meshes;
+  /// Every key and the value used, in the table's order (the echo and summary.json).
+  std::vector<std::pair<std::string, std::string>> settings;
+  std::vector<DynamicsScene> variants;
+
+  /// The speeds of the material: uniaxial stress (bar) and uniaxial strain (dilatational).
+  double bar_speed() const;
+  double dilatational_speed() const;
+  /// wave-bar: the speed the pulse should travel at (dilatational with rollers, else bar).
+  double wave_speed() const;
+};
+
+/// Reads a dynamics scene from its JSON text; throws InputError naming the key. `force` allows
+/// time.safety >= 1 (`vorodg run --force`).
+DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source,
+                                   bool force = false);
+/// True if the scene file's study is `dynamics`.
+bool is_dynamics_scene(const std::filesystem::path& path);
+DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force = false);
+
+}  // namespace vorodg

@@ -1,0 +1,31 @@
+#pragma once
+// The run pool of the ensemble studies (fracture, dynamics): every run whose id is not yet in
+// results.jsonl runs on one of `threads` worker threads, and its record is appended there as one
+// JSON line, under a lock and flushed, so that a stopped study loses only the runs in flight and
+// resumes where it stopped. A line cut short by the stop is ignored, and its run runs again.
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace vorodg {
+
+struct RunOutcome {
+  nlohmann::json record;  // must hold "id"
+  std::string progress;   // one line for the console
+};
+
+/// The records of results.jsonl by id (complete lines only).
+std::map<std::string, nlohmann::json> read_finished_runs(const std::filesystem::path& jsonl);
+
+/// Runs `ids` not finished yet, `execute(i)` running ids[i] (an exception is its caller's to
+/// turn into a failed record). Each worker has one OpenMP thread, with dynamic teams (CHOLMOD
+/// asks for more whatever the setting); OpenBLAS gets threads / workers threads. Returns every
+/// record by id, old and new.
+std::map<std::string, nlohmann::json> run_resumable(
+    const std::vector<std::string>& ids, const std::filesystem::path& jsonl, int threads,
+    bool progress, const std::function<RunOutcome(std::size_t)>& execute);
+
+}  // namespace vorodg

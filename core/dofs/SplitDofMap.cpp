@@ -1,9 +1,9 @@
 #include "core/dofs/SplitDofMap.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 #include "core/util/Errors.hpp"
+#include "core/util/UnionFind.hpp"
 
 namespace vorodg {
 namespace {
@@ -13,19 +13,6 @@ int local_index(const PolygonMesh& mesh, int c, int v) {
   const auto loop = mesh.cell_vertices(c);
   return static_cast<int>(std::find(loop.begin(), loop.end(), v) - loop.begin());
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int root(int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void join(int a, int b) {
-    a = root(a), b = root(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 }  // namespace
 
@@ -42,14 +29,7 @@ SplitDofMap::SplitDofMap(const PolygonMesh& mesh, const std::vector<char>& conne
       pairs.join(offsets_[edge.cell0] + local_index(mesh, edge.cell0, v),
                  offsets_[edge.cell1] + local_index(mesh, edge.cell1, v));
   }
-  // Number the classes in order of their smallest pair (the root, by the join rule).
-  node_.assign(offsets_.back(), -1);
-  std::vector<int> class_node(offsets_.back(), -1);
-  for (int p = 0; p < offsets_.back(); ++p) {
-    const int r = pairs.root(p);
-    if (class_node[r] < 0) class_node[r] = num_nodes_++;
-    node_[p] = class_node[r];
-  }
+  node_ = pairs.labels(&num_nodes_);  // numbered in order of each class's smallest pair
   vertex_offsets_.assign(mesh.num_vertices() + 1, 0);
   std::vector<std::vector<int>> at(mesh.num_vertices());
   for (int c = 0; c < mesh.num_cells(); ++c) {

@@ -382,12 +382,7 @@ DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& s
 }
 
 bool is_dynamics_scene(const std::filesystem::path& path) {
-  try {
-    const json root = json::parse(read_file(path));
-    return root.is_object() && root.value("study", "") == "dynamics";
-  } catch (const json::exception&) {
-    return false;
-  }
+  return scene_study_kind(path) == "dynamics";
 }
 
 DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force) {

@@ -175,12 +175,7 @@ FractureScene parse_fracture_scene(const std::string& text, const std::string& s
 }
 
 bool is_fracture_scene(const std::filesystem::path& path) {
-  try {
-    const json root = json::parse(read_file(path));
-    return root.is_object() && root.value("study", "") == "fracture";
-  } catch (const json::exception&) {
-    return false;
-  }
+  return scene_study_kind(path) == "fracture";
 }
 
 FractureScene read_fracture_scene(const std::filesystem::path& path) {

@@ -4,9 +4,19 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
+
+std::string scene_study_kind(const std::filesystem::path& path) {
+  try {
+    const nlohmann::json root = nlohmann::json::parse(read_file(path));
+    return root.is_object() ? root.value("study", "") : "";
+  } catch (const nlohmann::json::exception&) {
+    return "";
+  }
+}
 
 using nlohmann::json;
 

@@ -1,12 +1,17 @@
 #pragma once
 // Reads one JSON object of a scene, knowing its place ("meshes[1]") for messages, and refusing
 // keys it was not asked about (with the nearest known key suggested).
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace vorodg {
+
+/// The `study` key of the scene file at `path` ("" if it is not a JSON object or has none):
+/// which reader the file is for.
+std::string scene_study_kind(const std::filesystem::path& path);
 
 /// Levenshtein distance, for "did you mean" suggestions.
 std::size_t edit_distance(const std::string& a, const std::string& b);

@@ -40,16 +40,6 @@ double lanczos_step(const DynamicsModel& model) {
   return GlobalTimeStep(force, model.mass.node_masses(dofs), model.limit).step(0.9);
 }
 
-std::vector<int> side_vertices(const PolygonMesh& mesh, Side side) {
-  std::vector<char> on(mesh.num_vertices(), 0);
-  for (const MeshEdge& e : mesh.edges())
-    if (e.side == side) on[e.v0] = on[e.v1] = 1;
-  std::vector<int> out;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (on[v]) out.push_back(v);
-  return out;
-}
-
 /// Initial velocity of a rigid motion: translation V plus spin omega about the centroid.
 Eigen::VectorXd rigid_velocity(const CentralDifference& run, const Eigen::Vector2d& V, double omega,
                                const Point& centre) {
@@ -142,15 +132,15 @@ TEST(CentralDifference, WaveBarArrivalAndEnergy) {
                               k.mean_dilation);
     const double c = wave_speed(material, rho, k.rollers), tr = 0.3 * L / c;
     auto run = model.integrator_with(lanczos_step(model));
-    run->add_velocity_boundary({side_vertices(model.mesh, Side::left), 0,
+    run->add_velocity_boundary({model.mesh.side_vertices(Side::left), 0,
                                 [&](double t) { return pulse(t, amplitude, tr); }});
     if (k.rollers)
       for (Side s : {Side::bottom, Side::top})
-        run->add_velocity_boundary({side_vertices(model.mesh, s), 1, [](double) { return 0.0; }});
+        run->add_velocity_boundary({model.mesh.side_vertices(s), 1, [](double) { return 0.0; }});
     const int n = run->dofs().num_dofs();
     run->initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n));
     std::vector<int> far;
-    for (int v : side_vertices(model.mesh, Side::right))
+    for (int v : model.mesh.side_vertices(Side::right))
       for (int node : run->dofs().vertex_nodes(v)) far.push_back(node);
     auto far_velocity = [&] {
       double p = 0.0, m = 0.0;
@@ -189,8 +179,8 @@ TEST(CentralDifference, BalanceClosesWithDampingLoadsAndSupports) {
   DynamicsOptions options;
   options.damping = 0.3;
   auto run = model.integrator_with(model.limit.step(), options);
-  const std::vector<int> left = side_vertices(model.mesh, Side::left);
-  const std::vector<int> right = side_vertices(model.mesh, Side::right);
+  const std::vector<int> left = model.mesh.side_vertices(Side::left);
+  const std::vector<int> right = model.mesh.side_vertices(Side::right);
   run->add_velocity_boundary({left, 0, [](double t) { return 0.01 * std::sin(3.0 * t); }});
   run->add_velocity_boundary({left, 1, [](double) { return 0.0; }});
   run->set_body_force(
@@ -258,7 +248,7 @@ TEST(CentralDifference, OneAndTwoThreadsGiveTheSameBits) {
     options.damping = 0.1;
     auto run = model.integrator_with(model.limit.step(), options);
     run->add_velocity_boundary(
-        {side_vertices(model.mesh, Side::left), 0, [](double t) { return 0.01 * std::sin(t); }});
+        {model.mesh.side_vertices(Side::left), 0, [](double t) { return 0.01 * std::sin(t); }});
     run->set_body_force([](double) { return Eigen::Vector2d(0.0, -0.01); });
     const int n = run->dofs().num_dofs();
     run->initialize(random_vector(n, 1e-3, 6), random_vector(n, 1e-3, 7));

@@ -147,4 +147,14 @@ double PolygonMesh::h_avg() const {
   return num_cells() > 0 ? std::sqrt(domain_.area() / num_cells()) : 0.0;
 }
 
+std::vector<int> PolygonMesh::side_vertices(Side side) const {
+  std::vector<char> on(num_vertices(), 0);
+  for (const MeshEdge& e : edges_)
+    if (e.side == side) on[e.v0] = on[e.v1] = 1;
+  std::vector<int> out;
+  for (int v = 0; v < num_vertices(); ++v)
+    if (on[v]) out.push_back(v);
+  return out;
+}
+
 }  // namespace vorodg

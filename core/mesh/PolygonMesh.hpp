@@ -66,6 +66,8 @@ class PolygonMesh {
   }
   const MeshEdge& edge(int e) const { return edges_[e]; }
   const std::vector<MeshEdge>& edges() const { return edges_; }
+  /// The vertices of the edges on one side of the domain, in increasing order.
+  std::vector<int> side_vertices(Side side) const;
   /// Cell across local edge k of cell c, or -1 on the boundary.
   int neighbor(int c, int k) const;
 

@@ -38,16 +38,6 @@ double pulse(double t, double amplitude, double duration) {
   return amplitude * 0.5 * (1.0 + std::cos(std::numbers::pi * (t - 2.0 * tr) / tr));
 }
 
-std::vector<int> side_vertices(const PolygonMesh& mesh, Side side) {
-  std::vector<char> on(mesh.num_vertices(), 0);
-  for (const MeshEdge& e : mesh.edges())
-    if (e.side == side) on[e.v0] = on[e.v1] = 1;
-  std::vector<int> out;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (on[v]) out.push_back(v);
-  return out;
-}
-
 /// Each body's uniform velocity plus its spin about its own centre of mass.
 Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& bodies,
                                  const CentralDifference& run) {
@@ -74,11 +64,11 @@ Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& b
 void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, CentralDifference& run) {
   if (scene.problem != DynamicsProblem::wave_bar) return;
   const double amplitude = scene.pulse_amplitude, duration = scene.pulse_duration;
-  run.add_velocity_boundary({side_vertices(mesh, Side::left), 0,
-                             [=](double t) { return pulse(t, amplitude, duration); }});
+  run.add_velocity_boundary(
+      {mesh.side_vertices(Side::left), 0, [=](double t) { return pulse(t, amplitude, duration); }});
   if (scene.rollers)
     for (Side s : {Side::bottom, Side::top})
-      run.add_velocity_boundary({side_vertices(mesh, s), 1, [](double) { return 0.0; }});
+      run.add_velocity_boundary({mesh.side_vertices(s), 1, [](double) { return 0.0; }});
 }
 
 /// One frame of the series: the mesh at x = X + u with the displacement and velocity at the

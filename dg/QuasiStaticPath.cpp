@@ -93,6 +93,10 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
   }
   const bool guessed = guess.from && guess.to;
   const int budget = target.max_iterations > 0 ? target.max_iterations : options_.max_iterations;
+  Eigen::VectorXd q;              // dR / d lambda of the factored tangent
+  bool have_factor = false;       // the solver holds this Newton run's last factor
+  double reused_from = INFINITY;  // the residual when the factor was last reused
+  std::vector<double> history;    // relative residuals, for the stagnation exit
   for (iterations = 0; iterations <= budget; ++iterations) {
     const Eigen::VectorXd u = full(out);
     out.points = start.points;
@@ -114,14 +118,27 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
     // round-off floor it shares).
     const double reactions = std::sqrt(std::max(out.force.squaredNorm() - R.squaredNorm(), 0.0));
     const double scale = std::max(force_scale_, reactions);
-    if ((iterations > 0 || guessed) && R.norm() <= options_.tolerance * scale && gap <= 1e-9)
-      return true;
-    if (iterations == budget) return false;
-    Eigen::VectorXd q;
-    try {
-      factor(K, q);
-    } catch (const NumericalError&) {
-      return false;
+    const double relative = R.norm() / scale;
+    if ((iterations > 0 || guessed) && relative <= options_.tolerance && gap <= 1e-9) return true;
+    // Settling (its own budget) is given every iteration: an unsettled body loses energy.
+    const bool may_stop_early = target.max_iterations == 0;
+    if (iterations == budget || (may_stop_early && stagnates(history, relative))) return false;
+    history.push_back(relative);
+    // Within kReuseWindow of convergence, with the extra equation met, the last factor finishes
+    // the job as well as a new one (a modified Newton step), for a back-solve instead of a
+    // factorization; a reuse that does not contract tenfold is not repeated.
+    const bool reuse = have_factor && gap <= 1e-9 &&
+                       relative <= kReuseWindow * options_.tolerance &&
+                       relative <= 0.1 * reused_from;
+    if (reuse) {
+      reused_from = relative;
+    } else {
+      try {
+        factor(K, q);
+      } catch (const NumericalError&) {
+        return false;
+      }
+      have_factor = true, reused_from = INFINITY;
     }
     const Eigen::VectorXd a = solver_.solve(-R), b = solver_.solve(q);
     double dl = 0.0;
@@ -153,6 +170,16 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
     if (!out.x.allFinite() || !std::isfinite(out.lambda)) return false;
   }
   return false;
+}
+
+/// Newton is given up early, from kStagnationStart iterations on, when the residual has not
+/// halved over the last kStagnationWindow iterations: the face laws' branches make it cycle (a
+/// kink crossed back and forth), and the remaining iterations would only delay the halving.
+bool QuasiStaticPath::stagnates(const std::vector<double>& history, double relative) {
+  const int n = static_cast<int>(history.size());
+  if (n < kStagnationStart) return false;
+  const double best = *std::min_element(history.end() - kStagnationWindow, history.end());
+  return relative > 0.5 * best;
 }
 
 /// Backtracking on the residual norm: the face laws switch branches (stick, open, sliding cap,

@@ -102,6 +102,9 @@ class QuasiStaticPath {
   }
   double line_search(const State& start, const State& at, const Eigen::VectorXd& dx, double dl,
                      double residual) const;
+  static bool stagnates(const std::vector<double>& history, double relative);
+  static constexpr int kStagnationStart = 10, kStagnationWindow = 4;
+  static constexpr double kReuseWindow = 1e3;
   static constexpr int kLineSearchHalvings = 6;
   static constexpr int kEventSearches = 60;
   static constexpr int kSettlingRounds = 100;

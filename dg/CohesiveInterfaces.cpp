@@ -190,14 +190,7 @@ InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
       e.dissipated += w * law_.dissipated_energy(dmax);
       continue;
     }
-    const double beta = law_.parameters().shear_factor;
-    const double delta = std::hypot(std::max(d[0], 0.0), beta * d[1]);
-    // On the unloading line through the origin the stored energy is (T(dmax) / dmax) delta^2 / 2;
-    // an intrinsic law below its peak is on that line with slope K0.
-    const double secant = dmax > 0.0         ? law_.envelope(dmax) / dmax
-                          : law_.intrinsic() ? law_.parameters().initial_stiffness
-                                             : 0.0;
-    e.cohesive += w * (0.5 * secant * delta * delta + closure);
+    e.cohesive += w * (law_.stored_energy(d, points[p].history) + closure);
     e.dissipated += w * law_.dissipated_energy(dmax);
   }
   return e;

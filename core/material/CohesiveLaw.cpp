@@ -90,6 +90,15 @@ CohesiveLaw::Response CohesiveLaw::respond(const Eigen::Vector2d& opening, State
   return r;
 }
 
+double CohesiveLaw::stored_energy(const Eigen::Vector2d& opening, const State& state) const {
+  const double dmax = state.max_opening;
+  const double delta = std::hypot(std::max(opening[0], 0.0), p_.shear_factor * opening[1]);
+  const double secant = dmax > 0.0    ? envelope(dmax) / dmax
+                        : intrinsic() ? p_.initial_stiffness
+                                      : 0.0;
+  return 0.5 * secant * delta * delta;
+}
+
 double CohesiveLaw::dissipated_energy(double max_opening) const {
   if (max_opening >= critical_opening()) return p_.fracture_energy;
   if (max_opening <= 0.0) return 0.0;

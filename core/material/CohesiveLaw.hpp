@@ -58,6 +58,11 @@ class CohesiveLaw {
   };
   /// The traction for the opening (normal, tangential); advances `state` on the envelope.
   Response respond(const Eigen::Vector2d& opening, State& state) const;
+  /// Recoverable energy per unit area at `opening` (normal, tangential), for a point whose
+  /// largest effective opening so far is state.max_opening: the triangle under the unloading
+  /// line through the origin, (T(delta_max) / delta_max) delta^2 / 2 (an intrinsic law before
+  /// any opening: K0 delta^2 / 2; an extrinsic one that never opened stores nothing).
+  double stored_energy(const Eigen::Vector2d& opening, const State& state) const;
   /// Energy dissipated per unit area once the effective opening has reached `max_opening`: the
   /// area under the envelope up to it, less what unloading to the origin gives back; G when
   /// fully separated.

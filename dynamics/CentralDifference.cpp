@@ -43,6 +43,7 @@ void CentralDifference::bind() {
        {&f_ext_, &f_ext_next_, &reaction_, &v_half_, &f_contact_, &f_contact_next_})
     x->setZero(n);
   if (contact_) contact_->bind(dofs_, mass_node_);
+  if (cohesive_) cohesive_->bind(dofs_);
 }
 
 void CentralDifference::set_contact(ContactForces& contact) {
@@ -51,11 +52,17 @@ void CentralDifference::set_contact(ContactForces& contact) {
   contact_->bind(dofs_, mass_node_);
 }
 
-void CentralDifference::contact_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
+void CentralDifference::set_cohesive(CohesiveForces& cohesive) {
+  cohesive_ = &cohesive;
+  cohesive_->bind(dofs_);
+}
+
+void CentralDifference::interface_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
   if (contact_)
     contact_->evaluate(u_, v, dt_, f);
   else
     f.setZero(dofs_.num_dofs());
+  if (cohesive_) cohesive_->evaluate(u_, f);
 }
 
 void CentralDifference::add_velocity_boundary(VelocityBoundary bc) {
@@ -109,7 +116,7 @@ void CentralDifference::restart() {
   const double elastic = force_.compute(u_, f_int_, options_.threads);
   external_forces(record_.time, f_ext_);
   if (contact_) contact_->restart();  // the state may have jumped: a new work segment
-  contact_forces(v_, f_contact_);
+  interface_forces(v_, f_contact_);
   const double c = options_.damping;
   a_.resize(dofs_.num_dofs());
   for (int i = 0; i < dofs_.num_dofs(); ++i) {
@@ -144,6 +151,7 @@ void CentralDifference::book(const std::array<double, 8>& sums, double elastic) 
   record_.kinetic_leapfrog = sums[3] - dt_ * dt_ / 8.0 * sums[4];
   record_.elastic = elastic;
   if (contact_) record_.contact_work = contact_->work();
+  if (cohesive_) record_.cohesive_work = cohesive_->work();
   record_.momentum = {sums[5], sums[6]};
   record_.angular_momentum = sums[7];
 }
@@ -163,7 +171,7 @@ const StepRecord& CentralDifference::step() {
   const double t_next = double(n + 1) * dt_;
   const double elastic = force_.compute(u_, f_int_, threads);
   external_forces(t_next, f_ext_next_);
-  contact_forces(v_half_, f_contact_next_);
+  interface_forces(v_half_, f_contact_next_);
   boundary_values(t_next + 0.5 * dt_, vbar_next_half_);
   // Second half step, fused with the bookkeeping of the work done over the step.
   const double c = options_.damping;

@@ -21,6 +21,10 @@
 // acceleration like applied forces but are kept apart, so that their work (booked by
 // ContactWork as the trapezoid over the step) goes to StepRecord::contact_work.
 //
+// Cohesive cracks (set_cohesive, optional): CohesiveForces adds the tractions of the cohesive
+// law on the cracked edges at the same evaluations, into the same interface force vector, and
+// books its own share of the trapezoid, which goes to StepRecord::cohesive_work.
+//
 // Every loop is parallel over cells or nodes, writing its own slots, and every sum is an
 // OrderedSum: results are bit-for-bit the same for any thread count.
 #include <Eigen/Core>
@@ -30,6 +34,7 @@
 
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/CohesiveForces.hpp"
 #include "dynamics/ContactForces.hpp"
 #include "dynamics/InternalForce.hpp"
 #include "dynamics/LumpedMass.hpp"
@@ -61,6 +66,9 @@ class CentralDifference {
   /// Contact forces at every step; `contact` must outlive the integrator (it keeps the contact
   /// reports and the work account). Throws InputError after initialize().
   void set_contact(ContactForces& contact);
+  /// Cohesive tractions on cracked edges at every step; `cohesive` must outlive the integrator.
+  /// It may be set or grown (CohesiveForces::add_edge, then remap) at any time.
+  void set_cohesive(CohesiveForces& cohesive);
   /// Throws InputError naming the vertex if a DOF is prescribed twice or a vertex is unknown,
   /// and after initialize().
   void add_velocity_boundary(VelocityBoundary bc);
@@ -90,8 +98,8 @@ class CentralDifference {
   const Eigen::VectorXd& velocity() const { return v_; }
   const Eigen::VectorXd& acceleration() const { return a_; }
   const Eigen::VectorXd& internal_force() const { return f_int_; }
-  /// The contact forces of the last evaluation (zero without contact).
-  const Eigen::VectorXd& contact_force() const { return f_contact_; }
+  /// The contact and cohesive forces of the last evaluation (zero without either).
+  const Eigen::VectorXd& interface_force() const { return f_contact_; }
   const ContactForces* contact() const { return contact_; }
   /// Reaction forces at the prescribed DOFs (zero elsewhere).
   const Eigen::VectorXd& reaction() const { return reaction_; }
@@ -105,8 +113,9 @@ class CentralDifference {
  private:
   void bind();
   void external_forces(double t, Eigen::VectorXd& f);
-  /// Contact forces at the current displacements and velocities v (zero without contact).
-  void contact_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f);
+  /// Contact and cohesive forces at the current displacements and velocities v (zero without
+  /// either).
+  void interface_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f);
   void boundary_values(double t, std::vector<double>& out) const;
   /// Accelerations, reactions, forces and the record's state at the current time from u_ and v_
   /// (after initialize or remap).
@@ -126,6 +135,7 @@ class CentralDifference {
   BodyForce body_force_;
   ExternalForce external_force_;
   ContactForces* contact_ = nullptr;
+  CohesiveForces* cohesive_ = nullptr;
   std::vector<VelocityBoundary> boundaries_;
 
   std::vector<int> node_vertex_;

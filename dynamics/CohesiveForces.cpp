@@ -1,0 +1,177 @@
+#include "dynamics/CohesiveForces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/quadrature/TriangleRule.hpp"
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+namespace {
+
+/// The local index of edge e in cell c's loop.
+int local_edge(const PolygonMesh& mesh, int c, int e) {
+  const auto edges = mesh.cell_edges(c);
+  for (int k = 0; k < static_cast<int>(edges.size()); ++k)
+    if (edges[k] == e) return k;
+  throw InputError("cohesive forces: edge " + std::to_string(e) + " is not an edge of cell " +
+                   std::to_string(c));
+}
+
+}  // namespace
+
+CohesiveForces::CohesiveForces(const PolygonMesh& mesh, const CohesiveLaw& law)
+    : mesh_(mesh), law_(law), slot_(mesh.num_edges(), -1) {
+  if (!law.intrinsic())
+    throw InputError(
+        "cohesive.initial_stiffness: expected > 0 in dynamics (an extrinsic law's unloading "
+        "stiffness has no bound, and the explicit step would have none either)");
+}
+
+CohesiveForces::Face CohesiveForces::make_face(const PolygonMesh& mesh, int e) {
+  if (e < 0 || e >= mesh.num_edges())
+    throw InputError("cohesive forces: edge " + std::to_string(e) + ": expected 0 .. " +
+                     std::to_string(mesh.num_edges() - 1));
+  const MeshEdge& edge = mesh.edge(e);
+  if (edge.cell1 < 0)
+    throw InputError("cohesive forces: edge " + std::to_string(e) + " is on the boundary");
+  Face f;
+  f.edge = e;
+  const int k0 = local_edge(mesh, edge.cell0, e), k1 = local_edge(mesh, edge.cell1, e);
+  const int n0 = mesh.cell_size(edge.cell0), n1 = mesh.cell_size(edge.cell1);
+  // cell0 runs v0 -> v1 along its edge k0; cell1 runs v1 -> v0 along its edge k1.
+  f.side0 = {k0, (k0 + 1) % n0};
+  f.side1 = {(k1 + 1) % n1, k1};
+  const Point d = mesh.vertex(edge.v1) - mesh.vertex(edge.v0);
+  f.length = d.norm();
+  f.t = d / f.length;
+  f.n = Eigen::Vector2d(f.t.y(), -f.t.x());  // outward from cell0 (counter-clockwise)
+  return f;
+}
+
+void CohesiveForces::add_edge(int e) {
+  Face f = make_face(mesh_, e);
+  if (slot_[e] >= 0)
+    throw InputError("cohesive forces: edge " + std::to_string(e) + " is already cracked");
+  slot_[e] = static_cast<int>(faces_.size());
+  faces_.push_back(f);
+  edges_.push_back(e);
+}
+
+double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
+                                        const CohesiveLaw& law, const std::vector<char>& eligible) {
+  const double beta = law.parameters().shear_factor;
+  // The law's tangent never exceeds K0 diag(1, beta^2) on any branch.
+  const double k0 = law.parameters().initial_stiffness * std::max(1.0, beta * beta);
+  std::vector<std::vector<double>> row(mesh.num_cells());
+  for (int c = 0; c < mesh.num_cells(); ++c) row[c].assign(mesh.cell_size(c), 0.0);
+  const SegmentRule& rule = gauss2_segment();
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (!eligible[e] || mesh.edge(e).cell1 < 0) continue;
+    const Face f = make_face(mesh, e);
+    const int cells[4] = {mesh.edge(e).cell0, mesh.edge(e).cell0, mesh.edge(e).cell1,
+                          mesh.edge(e).cell1};
+    const int local[4] = {f.side0[0], f.side0[1], f.side1[0], f.side1[1]};
+    for (int q = 0; q < 2; ++q) {
+      const double s = rule.t[q], k = k0 * rule.weights[q] * f.length;
+      double b[4], sum = 0.0;
+      for (int j = 0; j < 4; ++j) {
+        b[j] = (j % 2 == 0 ? 1.0 - s : s) / std::sqrt(mass.pair_mass(cells[j], local[j]));
+        sum += b[j];
+      }
+      for (int j = 0; j < 4; ++j) row[cells[j]][local[j]] += k * b[j] * sum;
+    }
+  }
+  double most = 0.0;
+  for (const auto& r : row)
+    for (double x : r) most = std::max(most, x);
+  return most;
+}
+
+void CohesiveForces::bind(const SplitDofMap& dofs) {
+  for (Face& f : faces_) {
+    const MeshEdge& edge = mesh_.edge(f.edge);
+    for (int j = 0; j < 2; ++j) {
+      f.node0[j] = dofs.node(edge.cell0, f.side0[j]);
+      f.node1[j] = dofs.node(edge.cell1, f.side1[j]);
+    }
+  }
+}
+
+void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
+  const SegmentRule& rule = gauss2_segment();
+  double work = 0.0;
+  for (Face& face : faces_) {
+    Eigen::Vector2d jump[2];  // u_cell1 - u_cell0 at v0 and v1
+    for (int j = 0; j < 2; ++j)
+      jump[j] = u.segment<2>(2 * face.node1[j]) - u.segment<2>(2 * face.node0[j]);
+    for (int q = 0; q < 2; ++q) {
+      const double s = rule.t[q], w = rule.weights[q] * face.length;
+      const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
+      QuadraturePoint& p = face.points[q];
+      const Eigen::Vector2d d(g.dot(face.n), g.dot(face.t));
+      const Eigen::Vector2d tau = law_.respond(d, p.history).traction;
+      work -= 0.5 * w * (p.traction + tau).dot(d - p.opening);
+      p.opening = d;
+      p.traction = tau;
+      // The traction resists the opening: it pulls cell1's side back and cell0's side along.
+      const Eigen::Vector2d force = w * (tau[0] * face.n + tau[1] * face.t);
+      for (int j = 0; j < 2; ++j) {
+        const double share = j == 0 ? 1.0 - s : s;
+        f.segment<2>(2 * face.node1[j]) -= share * force;
+        f.segment<2>(2 * face.node0[j]) += share * force;
+      }
+    }
+  }
+  work_ += work;
+}
+
+double CohesiveForces::dissipated_energy(int e) const {
+  if (slot_[e] < 0) return 0.0;
+  const Face& face = faces_[slot_[e]];
+  const SegmentRule& rule = gauss2_segment();
+  double sum = 0.0;
+  for (int q = 0; q < 2; ++q)
+    sum +=
+        rule.weights[q] * face.length * law_.dissipated_energy(face.points[q].history.max_opening);
+  return sum;
+}
+
+double CohesiveForces::dissipated_energy() const {
+  double sum = 0.0;
+  for (int e : edges_) sum += dissipated_energy(e);
+  return sum;
+}
+
+double CohesiveForces::stored_energy() const {
+  const SegmentRule& rule = gauss2_segment();
+  double sum = 0.0;
+  for (const Face& face : faces_)
+    for (int q = 0; q < 2; ++q)
+      sum += rule.weights[q] * face.length *
+             law_.stored_energy(face.points[q].opening, face.points[q].history);
+  return sum;
+}
+
+Eigen::VectorXd CohesiveForces::max_openings() const {
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(mesh_.num_edges());
+  for (const Face& face : faces_)
+    w[face.edge] = 0.5 * (face.points[0].history.max_opening + face.points[1].history.max_opening);
+  return w;
+}
+
+bool CohesiveForces::broken(int e) const {
+  if (slot_[e] < 0) return false;
+  const Face& face = faces_[slot_[e]];
+  return face.points[0].history.max_opening >= law_.critical_opening() &&
+         face.points[1].history.max_opening >= law_.critical_opening();
+}
+
+int CohesiveForces::num_broken() const {
+  int count = 0;
+  for (int e : edges_) count += broken(e);
+  return count;
+}
+
+}  // namespace vorodg

@@ -1,0 +1,55 @@
+#pragma once
+// Extrinsic crack insertion for explicit dynamics (report sections 4 and 6): after a step, every
+// intact interior edge that may crack is checked against the Mohr-Coulomb criterion with tensile
+// cutoff (the same MohrCoulomb as quasi-static fracture), on the traction of the mean of its two
+// cells' stresses, sigma = (sigma_0 + sigma_1) / 2:
+//     normal = n . sigma n  (tension positive),   shear = t . sigma n.
+// Each cell's stress is its mean stress D B_c u_c (B_c the cell mean of the strain operator),
+// which is what the element integrates exactly; a stress at the edge itself would need the shape
+// functions' gradients there, which are one-sided and noisier on small RK cells.
+//
+// Which edges may crack is the scene's business (every interior edge, or a subset): the object
+// takes the mask. Cell stresses are computed in parallel into their own slots and edges are
+// checked in order, so the list of failing edges does not depend on the thread count.
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/dofs/SplitDofMap.hpp"
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/material/MohrCoulomb.hpp"
+#include "core/mesh/PolygonMesh.hpp"
+
+namespace vorodg {
+
+class CrackInsertion {
+ public:
+  /// `eligible[e]` per mesh edge (boundary entries ignored). `mesh` must outlive this object.
+  /// Throws InputError if the mask's size is not the mesh's number of edges.
+  CrackInsertion(const PolygonMesh& mesh, const ElasticityIntegrator& integrator,
+                 const MohrCoulomb& criterion, std::vector<char> eligible, int threads = 1);
+
+  /// Mean stress (Voigt xx, yy, xy) of every cell at node displacements u of `dofs`.
+  Eigen::Matrix3Xd cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
+                                 int threads) const;
+  /// The traction (normal, shear) on interior edge e from the given cell stresses, in the frame
+  /// of CohesiveForces (normal out of the edge's cell0, tangent v0 -> v1).
+  Eigen::Vector2d traction(const Eigen::Matrix3Xd& stresses, int e) const;
+  struct Failure {
+    int edge;
+    Eigen::Vector2d traction;  // at the check, (normal, shear)
+  };
+  /// The eligible interior edges not yet `cracked` whose criterion utilization is at least 1,
+  /// ascending, with their tractions.
+  std::vector<Failure> failing_edges(const SplitDofMap& dofs, const Eigen::VectorXd& u,
+                                     const std::vector<char>& cracked, int threads) const;
+  bool eligible(int e) const { return eligible_[e] != 0; }
+
+ private:
+  const PolygonMesh& mesh_;
+  Eigen::Matrix3d D_;
+  ElasticityIntegrator::MeanStrainOperators strain_;
+  MohrCoulomb criterion_;
+  std::vector<char> eligible_;
+};
+
+}  // namespace vorodg

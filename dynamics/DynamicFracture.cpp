@@ -1,0 +1,42 @@
+#include "dynamics/DynamicFracture.hpp"
+
+namespace vorodg {
+
+DynamicFracture::DynamicFracture(const PolygonMesh& mesh, CentralDifference& run,
+                                 CohesiveForces& cohesive, const CrackInsertion& insertion)
+    : mesh_(mesh),
+      run_(run),
+      cohesive_(cohesive),
+      insertion_(insertion),
+      cracked_(mesh.num_edges(), 0) {
+  for (int e : cohesive.edges()) cracked_[e] = 1;
+  run_.set_cohesive(cohesive_);
+}
+
+int DynamicFracture::step(int threads) {
+  run_.step();
+  const std::vector<CrackInsertion::Failure> failing =
+      insertion_.failing_edges(run_.dofs(), run_.displacement(), cracked_, threads);
+  if (failing.empty()) return 0;
+  for (const CrackInsertion::Failure& f : failing) {
+    cracked_[f.edge] = 1;
+    cohesive_.add_edge(f.edge);
+    events_.push_back({run_.step_count(), f.edge});
+  }
+  std::vector<char> connected(mesh_.num_edges());
+  for (int e = 0; e < mesh_.num_edges(); ++e) connected[e] = !cracked_[e];
+  run_.remap(SplitDofMap(mesh_, connected));
+  return static_cast<int>(failing.size());
+}
+
+CrackState DynamicFracture::crack_state() const {
+  return CrackState(mesh_, cracked_, cohesive_.max_openings());
+}
+
+CrackState DynamicFracture::broken_state() const {
+  std::vector<char> broken(mesh_.num_edges(), 0);
+  for (int e : cohesive_.edges()) broken[e] = cohesive_.broken(e);
+  return CrackState(mesh_, broken);
+}
+
+}  // namespace vorodg

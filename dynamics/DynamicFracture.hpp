@@ -1,0 +1,56 @@
+#pragma once
+// Extrinsic dynamic fracture (report sections 4 and 6): after every step of the integrator, the
+// intact edges that fail the Mohr-Coulomb criterion crack (CrackInsertion); the DOF map is
+// rebuilt bottom-up from the equivalence classes of (cell, vertex) pairs across the uncracked
+// edges (SplitDofMap), the integrator is remapped onto it (each split node's halves keep its
+// displacement and velocity with their own pairs' masses, so mass and momentum are kept), and
+// the cohesive law acts on the new faces from zero opening (CohesiveForces).
+//
+// An edge that cracks alone inside the body splits no node: its ends are still joined around
+// the vertex through the other edges, so it cannot open until a neighbouring edge cracks too.
+// It stays cracked and opens then, as the report's node-splitting scheme implies.
+//
+// One insertion pass per step: a split copies the displacements, so the cells' stresses, and
+// with them every utilization, are the same after it; nothing more fails at that instant.
+#include <vector>
+
+#include "dynamics/CentralDifference.hpp"
+#include "dynamics/CohesiveForces.hpp"
+#include "dynamics/CrackInsertion.hpp"
+#include "dynamics/CrackState.hpp"
+
+namespace vorodg {
+
+class DynamicFracture {
+ public:
+  /// Sets `cohesive` on `run`. Every argument must outlive this object.
+  DynamicFracture(const PolygonMesh& mesh, CentralDifference& run, CohesiveForces& cohesive,
+                  const CrackInsertion& insertion);
+
+  /// One step of the integrator, then the insertion check; returns the edges cracked after it.
+  int step(int threads);
+
+  struct Event {
+    long step;
+    int edge;
+  };
+  /// Every crack in the order it formed (the step after which it did).
+  const std::vector<Event>& events() const { return events_; }
+  /// Per mesh edge: 1 if cracked.
+  const std::vector<char>& cracked() const { return cracked_; }
+  /// The cracked edges with their mean largest openings.
+  CrackState crack_state() const;
+  /// Only the fully broken edges (both points past the critical opening): what separates
+  /// fragments, since a cohesive edge still holds its faces together.
+  CrackState broken_state() const;
+
+ private:
+  const PolygonMesh& mesh_;
+  CentralDifference& run_;
+  CohesiveForces& cohesive_;
+  const CrackInsertion& insertion_;
+  std::vector<char> cracked_;
+  std::vector<Event> events_;
+};
+
+}  // namespace vorodg

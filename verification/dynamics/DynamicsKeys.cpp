@@ -36,13 +36,37 @@ std::vector<DynamicsKey> make_keys() {
   return {
       key("name", "string", "file stem", "any", "the study's name in reports"),
       key("description", "string", "\"\"", "any", "one sentence for --list and the report"),
-      key("study", "string", "dynamics", "dynamics", "the study kind"),
-      key("problem", "string", "wave-bar", "wave-bar, free-body, wall-impact or two-blocks",
-          "what is thrown or struck (docs/dynamics.md, \"Problems\")"),
+      key("study", "string", "dynamics", "dynamics or fragmentation",
+          "the study kind: fragmentation adds crack insertion and the cohesive keys "
+          "(docs/fragmentation.md)"),
+      key("problem", "string", "wave-bar",
+          "wave-bar, free-body, wall-impact, two-blocks; strip-expansion (fragmentation)",
+          "what is thrown, struck or stretched (docs/dynamics.md, \"Problems\")"),
       key("domain", "[x0, y0, x1, y1]",
           per_problem + "wave-bar [0, 0, 1, 0.05], free-body [0, 0, 1, 1], wall-impact "
-                        "[0, 0, 0.4, 0.1], two-blocks [0, 0, 0.2, 0.1]",
+                        "[0, 0, 0.4, 0.1], two-blocks [0, 0, 0.2, 0.1], strip-expansion "
+                        "[0, 0, 0.002, 1e-05]",
           "x0 < x1, y0 < y1", "the (first) body, in m"),
+      bounded("strain_rate", "number", "1e5", "> 0",
+              "strip-expansion: the initial velocity is strain_rate (x - x_mid) along x, 1/s", 0.0,
+              true),
+      key("cohesive.law", "string", "linear", "linear or bilinear",
+          "fragmentation: the softening of the cohesive law (docs/fracture.md)"),
+      bounded("cohesive.strength", "number", "3e8", "> 0", "fragmentation: sigma_c, Pa", 0.0, true),
+      bounded("cohesive.fracture_energy", "number", "100", "> 0",
+              "fragmentation: G, the area under the law, J/m^2", 0.0, true),
+      bounded("cohesive.shear_factor", "number", "1", ">= 0",
+              "fragmentation: beta, the weight of sliding in the effective opening", 0.0, false),
+      bounded("cohesive.initial_stiffness", "number", "1", "> 0",
+              "fragmentation: K0 in units of E / h_avg (dynamics needs an initially elastic law; "
+              "its springs share the stable step)",
+              0.0, true),
+      bounded("criterion.cohesion", "number", "cohesive.strength", "> 0",
+              "fragmentation: Mohr-Coulomb cohesion c, Pa", 0.0, true),
+      bounded("criterion.friction", "number", "0", ">= 0",
+              "fragmentation: Mohr-Coulomb friction coefficient mu", 0.0, false),
+      bounded("criterion.tensile_cutoff", "number", "cohesive.strength", "> 0",
+              "fragmentation: the tensile cutoff sigma_o, Pa", 0.0, true),
       key("initial_velocity", "[vx, vy]",
           per_problem + "wave-bar [0, 0], free-body [1, 0.5], wall-impact and two-blocks [1, 0]",
           "finite", "uniform velocity of the (first) body at t = 0, m/s"),
@@ -91,15 +115,18 @@ std::vector<DynamicsKey> make_keys() {
       bounded("time.end", "number",
               per_problem + "wave-bar 2 L / c; wall-impact and two-blocks the flight to contact "
                             "plus 3 x 2 L / c_bar (L: the extent along the wall's normal; the "
-                            "longer side of either block); free-body 1000 steps",
+                            "longer side of either block); free-body 1000 steps; "
+                            "strip-expansion 20 x the time to reach the cutoff, "
+                            "sigma_o / (E strain_rate)",
               "> 0", "the end time, s (not with time.steps)", 0.0, true),
       bounded("time.steps", "integer", "none (time.end)", ">= 1",
               "the number of steps, instead of an end time (not with time.end)", 1.0, false),
       bounded("time.safety", "number", "0.9", "0 < safety < 1 (>= 1 only with --force)",
               "dt = safety x the critical step", 0.0, true),
-      key("time.estimate", "string", "lanczos", "lanczos or cells",
+      key("time.estimate", "string", "lanczos; fragmentation: cells", "lanczos or cells",
           "which critical step dt uses: the Lanczos estimate of the assembled system or the "
-          "cell-by-cell bound (both are reported)"),
+          "cell-by-cell bound (both are reported); fragmentation needs the cell bound, which "
+          "holds for every crack pattern, plus the cohesive springs' bound"),
       bounded("time.output_every", "integer", "100", ">= 1",
               "steps between rewrites of the history file and between .vtu frames", 1.0, false),
       bounded("time.history_every", "integer", "1", ">= 1", "steps between rows of the history",

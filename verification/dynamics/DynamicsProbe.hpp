@@ -28,6 +28,10 @@ struct DynamicsMeasures {
   bool contact_ended = true;  // no contact at the last step
   // wall: normal speeds of the centre of mass, towards the wall at t = 0 and away at the end
   double impact_velocity = NAN, rebound_velocity = NAN, rebound_estimate = NAN;
+  // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
+  double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
+  double cracked_edges = NAN, broken_edges = NAN;
+  double law_balance_error = NAN;  // max over steps, with the law's closed-form energies
 };
 
 class DynamicsProbe {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "core/element/ElasticityIntegrator.hpp"
@@ -18,6 +19,7 @@
 #include "dynamics/LumpedMass.hpp"
 #include "dynamics/StableTimeStep.hpp"
 #include "verification/dynamics/DynamicsHistory.hpp"
+#include "verification/dynamics/FragmentationRun.hpp"
 
 namespace fs = std::filesystem;
 
@@ -57,6 +59,9 @@ Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& b
     const DynamicsBody& b = scene.bodies[body[i]];
     const Point r = run.node_position(i) - centre[body[i]] / mass[body[i]];
     v.segment<2>(2 * i) = b.velocity + b.angular_velocity * Point(-r.y(), r.x());
+    if (scene.problem == DynamicsProblem::strip_expansion)  // stretched about the middle
+      v[2 * i] +=
+          scene.strain_rate * (run.node_position(i).x() - 0.5 * (b.domain.x0() + b.domain.x1()));
   }
   return v;
 }
@@ -160,8 +165,13 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   r.dt_lanczos = lanczos.critical();
   r.dt_cells = bound.critical();
   r.lanczos_iterations = lanczos.iterations();
-  // safety x the chosen estimate; >= 1 only got here with --force.
-  r.dt = scene.safety * (scene.estimate == StepEstimate::lanczos ? r.dt_lanczos : r.dt_cells);
+  // safety x the chosen estimate; >= 1 only got here with --force. With cracks, the cells' bound
+  // (valid for every split) and the cohesive springs' share.
+  std::optional<FragmentationRun> cracks;
+  if (scene.fragmentation) cracks.emplace(scene, mesh, bodies.h_avg);
+  r.dt = cracks
+             ? cracks->stable_step(bound, mass, scene.safety)
+             : scene.safety * (scene.estimate == StepEstimate::lanczos ? r.dt_lanczos : r.dt_cells);
   r.steps = scene.steps > 0 ? scene.steps : static_cast<long>(std::ceil(scene.end / r.dt - 1e-9));
   CentralDifference run(mesh, mass, std::move(force), dofs, r.dt, {scene.damping, 1});
   r.dofs = run.dofs().num_dofs();
@@ -169,6 +179,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   if (scene.wall) contact.add_plane(scene.wall->point, scene.wall->normal);
   if (scene.contact || scene.wall) run.set_contact(contact);
   add_boundaries(scene, mesh, run);
+  if (cracks) cracks->attach(run, integrator, 1);
   run.initialize(Eigen::VectorXd::Zero(run.dofs().num_dofs()),
                  initial_velocity(scene, bodies, run));
 
@@ -187,13 +198,19 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   const ContactForces* reports = run.contact();
   DynamicsProbe probe(scene, bodies, run);
   probe.observe();
+  if (cracks) cracks->observe(run.record());
   history.add(run.record(), reports);
   frame();
   const double setup = clock.seconds();
   try {
     for (long s = 1; s <= r.steps; ++s) {
-      const StepRecord& step = run.step();
+      if (cracks)
+        cracks->step();
+      else
+        run.step();
+      const StepRecord& step = run.record();
       probe.observe();
+      if (cracks) cracks->observe(step);
       const double energy = step.kinetic + step.elastic;
       const bool unstable = !std::isfinite(energy) || energy > kBlowUp * step.input_energy();
       const bool last = s == r.steps || unstable;
@@ -216,6 +233,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   r.steps = run.step_count();  // those done: fewer if the run stopped
   r.end_time = run.time();
   r.measures = probe.finish();
+  if (cracks) cracks->finish(out, name, mass, r.measures);
   r.seconds = clock.seconds();
   r.loop_seconds = r.seconds - setup;
   return r;

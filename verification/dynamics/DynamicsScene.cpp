@@ -10,6 +10,7 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "verification/dynamics/DynamicsKeys.hpp"
+#include "verification/dynamics/DynamicsSceneReader.hpp"
 #include "verification/model/SettingsSchema.hpp"
 #include "verification/study/SceneObject.hpp"
 
@@ -23,135 +24,32 @@ const std::map<std::string, DynamicsProblem>& problem_names() {
       {"wave-bar", DynamicsProblem::wave_bar},
       {"free-body", DynamicsProblem::free_body},
       {"wall-impact", DynamicsProblem::wall_impact},
-      {"two-blocks", DynamicsProblem::two_blocks}};
+      {"two-blocks", DynamicsProblem::two_blocks},
+      {"strip-expansion", DynamicsProblem::strip_expansion}};
   return names;
 }
 
-std::string vector_text(std::initializer_list<double> v) {
-  std::string out = "[";
-  for (double x : v) out.append(out.size() > 1 ? ", " : "").append(exact_text(x + 0.0));  // no -0
-  return out.append("]");
-}
-std::string point_text(const Point& p) {
-  return vector_text({p.x(), p.y()});
-}
-std::string rect_text(const Rectangle& r) {
-  return vector_text({r.x0(), r.y0(), r.x1(), r.y1()});
-}
 std::array<Point, 4> corners(const Rectangle& r) {
   return {r.lo(), Point(r.x1(), r.y0()), r.hi(), Point(r.x0(), r.y1())};
 }
 
-/// Reads one scene's keys: defaults and ranges from the key table, every value used noted.
-class Reader {
- public:
-  Reader(const json& root, const std::string& source, bool force)
-      : source_(source), force_(force), top_(root, "", source) {}
+}  // namespace
 
-  DynamicsScene read();
-
- private:
-  SceneObject object(const std::string& key) {
-    static const json empty = json::object();
-    return SceneObject(top_.has(key) ? top_.at(key) : empty, key, source_);
-  }
-  static std::string leaf(const std::string& full) { return full.substr(full.rfind('.') + 1); }
-  void note(const std::string& key, const std::string& value) { notes_[key] = value; }
-
-  double number(SceneObject& o, const std::string& full, std::optional<double> fallback = {});
-  int integer(SceneObject& o, const std::string& full, std::optional<int> fallback = {});
-  bool flag(SceneObject& o, const std::string& full);
-  std::string word(SceneObject& o, const std::string& full, const std::string& allowed);
-  Point point(SceneObject& o, const std::string& full, const Point& fallback);
-  Rectangle rectangle(SceneObject& o, const std::string& full, const Rectangle& fallback);
-
-  void read_bodies();
-  void read_material();
-  void read_wave_bar();
-  void read_wall();
-  void read_contact();
-  void read_time();
-  /// Rough length of a run when time.end is not given (docs: the key table).
-  void default_end();
-  void refuse_unless(bool applies, const std::string& key);
-
-  const std::string& source_;
-  bool force_;
-  SceneObject top_;
-  DynamicsScene s_;
-  std::map<std::string, std::string> notes_;
-};
-
-double Reader::number(SceneObject& o, const std::string& full, std::optional<double> fallback) {
-  const DynamicsKey& k = dynamics_key(full);
-  const double v = o.number(leaf(full), fallback ? *fallback : key_default(k));
-  if (const auto bad = check_key(k, v)) o.fail_value(leaf(full), *bad);
-  note(full, exact_text(v));
-  return v;
-}
-
-int Reader::integer(SceneObject& o, const std::string& full, std::optional<int> fallback) {
-  const DynamicsKey& k = dynamics_key(full);
-  const int v = o.integer(leaf(full), fallback ? *fallback : static_cast<int>(key_default(k)));
-  if (const auto bad = check_key(k, v)) o.fail_value(leaf(full), *bad);
-  note(full, std::to_string(v));
-  return v;
-}
-
-bool Reader::flag(SceneObject& o, const std::string& full) {
-  const bool v = o.flag(leaf(full), dynamics_key(full).fallback == "true");
-  note(full, v ? "true" : "false");
-  return v;
-}
-
-std::string Reader::word(SceneObject& o, const std::string& full, const std::string& allowed) {
-  const DynamicsKey& k = dynamics_key(full);
-  const std::string v = o.text(leaf(full), k.fallback);
-  if (allowed.find(" " + v + " ") == std::string::npos)
-    o.fail_value(leaf(full), "'" + v + "': expected " + k.range);
-  note(full, v);
-  return v;
-}
-
-Point Reader::point(SceneObject& o, const std::string& full, const Point& fallback) {
-  const std::vector<double> v = o.numbers(leaf(full), {fallback.x(), fallback.y()});
-  if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
-    o.fail_value(leaf(full), "expected two finite numbers " + dynamics_key(full).type);
-  note(full, point_text({v[0], v[1]}));
-  return {v[0], v[1]};
-}
-
-Rectangle Reader::rectangle(SceneObject& o, const std::string& full, const Rectangle& fallback) {
-  const std::vector<double> d =
-      o.numbers(leaf(full), {fallback.x0(), fallback.y0(), fallback.x1(), fallback.y1()});
-  if (d.size() != 4) o.fail_value(leaf(full), "expected four numbers [x0, y0, x1, y1]");
-  try {
-    const Rectangle r(d[0], d[1], d[2], d[3]);
-    note(full, rect_text(r));
-    return r;
-  } catch (const InputError& e) {
-    o.fail_value(leaf(full), e.what());
-  }
-}
-
-void Reader::refuse_unless(bool applies, const std::string& key) {
-  if (!applies && top_.has(key))
-    top_.fail_value(key, "not used by problem " + dynamics_problem_name(s_.problem));
-}
-
-void Reader::read_bodies() {
+void DynamicsSceneReader::read_bodies() {
   const DynamicsProblem p = s_.problem;
   const bool bar = p == DynamicsProblem::wave_bar, free = p == DynamicsProblem::free_body;
+  const bool strip = p == DynamicsProblem::strip_expansion;
   DynamicsBody a;
   a.domain =
       rectangle(top_, "domain",
-                bar    ? Rectangle(0, 0, 1, 0.05)
-                : free ? Rectangle(0, 0, 1, 1)
-                       : Rectangle(0, 0, p == DynamicsProblem::wall_impact ? 0.4 : 0.2, 0.1));
+                bar     ? Rectangle(0, 0, 1, 0.05)
+                : free  ? Rectangle(0, 0, 1, 1)
+                : strip ? Rectangle(0, 0, 0.002, 1e-5)
+                        : Rectangle(0, 0, p == DynamicsProblem::wall_impact ? 0.4 : 0.2, 0.1));
   a.velocity = point(top_, "initial_velocity",
-                     bar    ? Point(0, 0)
-                     : free ? Point(1, 0.5)
-                            : Point(1, 0));
+                     bar || strip ? Point(0, 0)
+                     : free       ? Point(1, 0.5)
+                                  : Point(1, 0));
   a.angular_velocity = number(top_, "angular_velocity", free ? 1.0 : 0.0);
   s_.bodies = {a};
   refuse_unless(p == DynamicsProblem::two_blocks, "second_block");
@@ -173,7 +71,7 @@ void Reader::read_bodies() {
   s_.bodies.push_back(b);
 }
 
-void Reader::read_material() {
+void DynamicsSceneReader::read_material() {
   SceneObject m = object("material");
   s_.E = number(m, "material.E");
   s_.nu = number(m, "material.nu");
@@ -185,7 +83,7 @@ void Reader::read_material() {
   s_.damping = number(top_, "damping");
 }
 
-void Reader::read_wave_bar() {
+void DynamicsSceneReader::read_wave_bar() {
   const bool bar = s_.problem == DynamicsProblem::wave_bar;
   refuse_unless(bar, "sides");
   refuse_unless(bar, "pulse");
@@ -199,7 +97,7 @@ void Reader::read_wave_bar() {
   o.finish();
 }
 
-void Reader::read_wall() {
+void DynamicsSceneReader::read_wall() {
   const bool impact = s_.problem == DynamicsProblem::wall_impact;
   if (!impact && !top_.has("wall")) {
     note("wall.point", "none");
@@ -237,7 +135,7 @@ void Reader::read_wall() {
   s_.wall = w;
 }
 
-void Reader::read_contact() {
+void DynamicsSceneReader::read_contact() {
   SceneObject c = object("contact");
   s_.contact = flag(c, "contact.enabled");
   s_.penalty.alpha = number(c, "contact.alpha");
@@ -245,7 +143,7 @@ void Reader::read_contact() {
   c.finish();
 }
 
-void Reader::default_end() {
+void DynamicsSceneReader::default_end() {
   const DynamicsBody& a = s_.bodies[0];
   switch (s_.problem) {
     case DynamicsProblem::free_body: s_.steps = 1000; break;
@@ -259,6 +157,9 @@ void Reader::default_end() {
       s_.end = gap / -a.velocity.dot(n) + 3.0 * 2.0 * length / s_.bar_speed();
       break;
     }
+    case DynamicsProblem::strip_expansion:
+      s_.end = 20.0 * s_.criterion.tensile_cutoff / (s_.E * s_.strain_rate);
+      break;
     case DynamicsProblem::two_blocks: {
       const Rectangle &d = a.domain, &e = s_.bodies[1].domain;
       const double gap = std::hypot(std::max({0.0, e.x0() - d.x1(), d.x0() - e.x1()}),
@@ -273,7 +174,7 @@ void Reader::default_end() {
   note("time.steps", s_.steps > 0 ? std::to_string(s_.steps) : "none (time.end)");
 }
 
-void Reader::read_time() {
+void DynamicsSceneReader::read_time() {
   SceneObject t = object("time");
   const bool end = t.has("end"), steps = t.has("steps");
   if (end && steps) t.fail_value("steps", "give time.end or time.steps, not both");
@@ -287,8 +188,14 @@ void Reader::read_time() {
     t.fail_value("safety", "expected < 1, found " + fmt(s_.safety) +
                                " (the run may blow up; --force allows it)");
   note("time.safety", exact_text(s_.safety));
-  s_.estimate = word(t, "time.estimate", " lanczos cells ") == "cells" ? StepEstimate::cells
-                                                                       : StepEstimate::lanczos;
+  s_.estimate =
+      word(t, "time.estimate", " lanczos cells ", s_.fragmentation ? "cells" : "lanczos") == "cells"
+          ? StepEstimate::cells
+          : StepEstimate::lanczos;
+  if (s_.fragmentation && s_.estimate == StepEstimate::lanczos)
+    t.fail_value("estimate",
+                 "'lanczos' holds for the uncracked map only: expected cells in a fragmentation "
+                 "study (the cell bound holds for every crack pattern)");
   s_.output_every = integer(t, "time.output_every");
   s_.history_every = integer(t, "time.history_every");
   t.finish();
@@ -297,13 +204,16 @@ void Reader::read_time() {
   o.finish();
 }
 
-DynamicsScene Reader::read() {
+DynamicsScene DynamicsSceneReader::read() {
   s_.name = top_.text("name", std::filesystem::path(source_).stem().string());
   s_.description = top_.text("description", "");
   s_.label = top_.text("label", "");
-  top_.text("study", "dynamics");
-  const std::string problem = word(top_, "problem", " wave-bar free-body wall-impact two-blocks ");
+  s_.fragmentation = word(top_, "study", " dynamics fragmentation ") == "fragmentation";
+  const std::string problem =
+      word(top_, "problem", " wave-bar free-body wall-impact two-blocks strip-expansion ");
   s_.problem = problem_names().at(problem);
+  if (s_.problem == DynamicsProblem::strip_expansion && !s_.fragmentation)
+    top_.fail_value("problem", "'strip-expansion': expected study fragmentation");
   read_material();
   try {
     IsotropicElasticity(s_.E, s_.nu, s_.plane);
@@ -314,6 +224,7 @@ DynamicsScene Reader::read() {
   read_wave_bar();
   read_wall();
   read_contact();
+  read_fracture();
   read_time();
   const json& meshes = top_.at("meshes");
   if (!meshes.is_array() || meshes.empty())
@@ -327,8 +238,6 @@ DynamicsScene Reader::read() {
     if (notes_.count(k.name)) s_.settings.emplace_back(k.name, notes_.at(k.name));
   return s_;
 }
-
-}  // namespace
 
 std::string dynamics_problem_name(DynamicsProblem p) {
   for (const auto& [name, value] : problem_names())
@@ -361,13 +270,13 @@ DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& s
     throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
   }
   if (!root.is_object()) throw InputError("scene " + source + ": expected a JSON object");
-  if (!root.contains("variants")) return Reader(root, source, force).read();
+  if (!root.contains("variants")) return DynamicsSceneReader(root, source, force).read();
   json base = root;
   base.erase("variants");
   const json& list = root["variants"];
   if (!list.is_array() || list.empty())
     throw InputError("scene " + source + ": variants: expected a non-empty array of objects");
-  DynamicsScene top = Reader(base, source, force).read();
+  DynamicsScene top = DynamicsSceneReader(base, source, force).read();
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (!list[i].is_object() || !list[i].contains("label"))
       throw InputError("scene " + source + ": variants[" + std::to_string(i) +
@@ -375,14 +284,15 @@ DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& s
     json merged = base;
     merged.merge_patch(list[i]);
     const std::string where = source + " variants[" + std::to_string(i) + "]";
-    top.variants.push_back(Reader(merged, where, force).read());
+    top.variants.push_back(DynamicsSceneReader(merged, where, force).read());
     top.variants.back().name = top.name;
   }
   return top;
 }
 
 bool is_dynamics_scene(const std::filesystem::path& path) {
-  return scene_study_kind(path) == "dynamics";
+  const std::string kind = scene_study_kind(path);
+  return kind == "dynamics" || kind == "fragmentation";
 }
 
 DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force) {

@@ -1,7 +1,9 @@
 #pragma once
 // The scene of a `dynamics` study (keys in docs/dynamics.md "The dynamics study"): one problem
 // (a wave bar, a free body, a block thrown at a rigid wall, two blocks thrown at each other), one
-// material, contact, the time stepping, over mesh families with levels and realizations.
+// material, contact, the time stepping, over mesh families with levels and realizations. A
+// `fragmentation` study is the same with cracks (docs/fragmentation.md): the cohesive law and the
+// insertion criterion, and the strip-expansion problem.
 // `variants` (objects merged over the top-level keys, each with a `label`) runs several such
 // studies side by side, each into its own subfolder.
 //
@@ -16,13 +18,15 @@
 #include <vector>
 
 #include "core/geometry/Rectangle.hpp"
+#include "core/material/CohesiveLaw.hpp"
 #include "core/material/IsotropicElasticity.hpp"
+#include "core/material/MohrCoulomb.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
 
-enum class DynamicsProblem { wave_bar, free_body, wall_impact, two_blocks };
+enum class DynamicsProblem { wave_bar, free_body, wall_impact, two_blocks, strip_expansion };
 enum class StepEstimate { lanczos, cells };
 
 std::string dynamics_problem_name(DynamicsProblem p);
@@ -64,6 +68,12 @@ struct DynamicsScene {
   StepEstimate estimate = StepEstimate::lanczos;
   int output_every = 0, history_every = 0;
   bool vtu = true;
+  // fragmentation (study kind): crack insertion with the cohesive law on every interior edge
+  bool fragmentation = false;
+  double strain_rate = 0.0;  // strip-expansion
+  CohesiveParameters cohesive;
+  double stiffness_factor = 0.0;  // K0 in units of E / h_avg
+  MohrCoulombParameters criterion;
   std::vector<SceneMesh> meshes;
   /// Every key and the value used, in the table's order (the echo and summary.json).
   std::vector<std::pair<std::string, std::string>> settings;
@@ -80,7 +90,7 @@ struct DynamicsScene {
 /// time.safety >= 1 (`vorodg run --force`).
 DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source,
                                    bool force = false);
-/// True if the scene file's study is `dynamics`.
+/// True if the scene file's study is `dynamics` or `fragmentation`.
 bool is_dynamics_scene(const std::filesystem::path& path);
 DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force = false);
 

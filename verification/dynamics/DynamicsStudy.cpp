@@ -38,7 +38,13 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"rebound_velocity", &M::rebound_velocity},
       {"rebound_estimate", &M::rebound_estimate},
       {"contact_time", &M::contact_time},
-      {"contact_time_estimate", &M::contact_time_estimate}};
+      {"contact_time_estimate", &M::contact_time_estimate},
+      {"fragments", &M::fragments},
+      {"max_fragment_mass_fraction", &M::max_fragment_mass_fraction},
+      {"dissipated_energy", &M::dissipated_energy},
+      {"cracked_edges", &M::cracked_edges},
+      {"broken_edges", &M::broken_edges},
+      {"law_balance_error", &M::law_balance_error}};
   return fields;
 }
 

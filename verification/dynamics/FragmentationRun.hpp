@@ -1,0 +1,50 @@
+#pragma once
+// The cracks of one fragmentation run (docs/fragmentation.md): the cohesive law with K0 in units
+// of E / h_avg, the Mohr-Coulomb insertion check on every interior edge, and DynamicFracture on
+// the run's integrator; the stable step with the faces' springs; after the run, the fragments and
+// the crack log as files, and the figures for results.csv.
+#include <filesystem>
+#include <string>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "dynamics/DynamicFracture.hpp"
+#include "dynamics/StableTimeStep.hpp"
+#include "verification/dynamics/DynamicsProbe.hpp"
+#include "verification/dynamics/DynamicsScene.hpp"
+
+namespace vorodg {
+
+class FragmentationRun {
+ public:
+  /// The law and criterion of `scene` on `mesh`; throws InputError naming cohesive keys the
+  /// mesh cannot carry (a K0 too small for the law's peak to come before delta_c).
+  FragmentationRun(const DynamicsScene& scene, const PolygonMesh& mesh, double h_avg);
+
+  /// safety x the critical step of the cells and the faces' springs together, for every crack
+  /// pattern the run can reach.
+  double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety) const;
+  /// Starts cracking on `run` (before its initialize()).
+  void attach(CentralDifference& run, const ElasticityIntegrator& integrator, int threads);
+  /// One step of the run with the insertion check after it.
+  void step();
+  /// After a step: the balance with the law's closed forms (kinetic + elastic + dissipated +
+  /// stored against what was put in), relative to the input energy; its largest value so far is
+  /// kept.
+  void observe(const StepRecord& record);
+  /// Fills the fragmentation figures of `m` and writes fragments/<id>.csv and cracks/<id>.csv.
+  void finish(const std::filesystem::path& out, const std::string& id, const LumpedMass& mass,
+              DynamicsMeasures& m) const;
+
+ private:
+  const PolygonMesh& mesh_;
+  CohesiveLaw law_;
+  MohrCoulomb criterion_;
+  std::vector<char> eligible_;
+  std::unique_ptr<CohesiveForces> cohesive_;
+  std::unique_ptr<CrackInsertion> insertion_;
+  std::unique_ptr<DynamicFracture> fracture_;
+  CentralDifference* run_ = nullptr;
+  double start_ = 0.0, worst_balance_ = 0.0;
+};
+
+}  // namespace vorodg

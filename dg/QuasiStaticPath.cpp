@@ -241,9 +241,16 @@ bool QuasiStaticPath::run(const Observer& observe) {
     }
     int iterations = 0, inserted = 0;
     if (!take_step(state, iterations, inserted)) {
-      failure_ = "step " + std::to_string(step) + " did not converge after " +
-                 std::to_string(options_.max_cuts) + " cuts (stroke " +
-                 std::to_string(model_.stroke(state.lambda)) + ")";
+      const std::string where = " (stroke " + std::to_string(model_.stroke(state.lambda)) +
+                                ", cmod " + std::to_string(cmod(state)) + ")";
+      failure_ = jumped_ ? "step " + std::to_string(step) +
+                               ": the path jumped to another equilibrium, the energy balance "
+                               "missing more than " +
+                               std::to_string(kJumpLimit) + " of the work at the smallest cut" +
+                               where + ": a snap that " + load_control_name(options_.control) +
+                               " control cannot follow"
+                         : "step " + std::to_string(step) + " did not converge after " +
+                               std::to_string(options_.max_cuts) + " cuts" + where;
       return false;
     }
     PathPoint p = point_of(state, step, last_);
@@ -251,6 +258,13 @@ bool QuasiStaticPath::run(const Observer& observe) {
     p.inserted = inserted;
     observe(p, full(state), state.points);
     last_ = p;
+    peak_load_ = std::max(peak_load_, std::abs(p.load));
+    if (softened(state) && std::abs(p.load) <= kVanishedLoad * peak_load_) {
+      stop_reason_ = "the load vanished at cmod " + std::to_string(p.cmod) + " (" +
+                     std::to_string(std::abs(p.load) / peak_load_) +
+                     " of the peak): the halves hinge about what is left of the ligament";
+      return true;
+    }
     if (options_.control == LoadControl::arc_length)  // aim at about five iterations a step
       arc_ *= std::clamp(std::sqrt(5.0 / std::max(iterations, 1)), 0.5, 2.0);
   }

@@ -74,6 +74,8 @@ class QuasiStaticPath {
   /// false if a step failed after every cut; failure() says why.
   bool run(const Observer& observe);
   const std::string& failure() const { return failure_; }
+  /// Why a complete path ended before its end point (empty if it reached it).
+  const std::string& stop_reason() const { return stop_reason_; }
   int factorizations() const { return factorizations_; }
 
  private:
@@ -128,6 +130,17 @@ class QuasiStaticPath {
   };
   BalanceDrift balance_drift(const State& trial) const;
   static constexpr double kSmallestBalancedStep = 1.0 / 64.0;
+  /// A step that still widens the balance's gap by this fraction of jump_scale() at its smallest
+  /// cut has not followed the path but jumped to another equilibrium (faces past delta_c with no
+  /// work done): the run fails there rather than book the jump.
+  static constexpr double kJumpLimit = 2e-3;
+  double jump_scale(const State& trial) const;
+  /// Once softened, the path ends when the load falls to this fraction of its peak: the halves
+  /// then hinge about what is left of the ligament, and further opening measures nothing.
+  static constexpr double kVanishedLoad = 1e-3;
+  bool jumped_ = false;
+  double peak_load_ = 0.0;
+  std::string stop_reason_;
   PathPoint last_;         // the last converged point
   double switched_ = 0.0;  // energy booked at insertions (PathPoint::energy.switched)
 

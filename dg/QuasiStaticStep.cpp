@@ -126,6 +126,15 @@ QuasiStaticPath::BalanceDrift QuasiStaticPath::balance_drift(const State& trial)
   return {gap - before, gap / std::max(after.external_work, 1e-300)};
 }
 
+/// The energy a jump is measured against: the larger of the work so far and the fracture energy
+/// of a crack across the whole body (G x height x thickness), so that a small slip early on,
+/// when little work has been done, is not mistaken for one.
+double QuasiStaticPath::jump_scale(const State& trial) const {
+  const double crack = model_.interfaces().law().parameters().fracture_energy *
+                       model_.space().mesh().domain().height() * model_.setup().thickness;
+  return std::max(point_of(trial, 0, last_).external_work, crack);
+}
+
 /// How far past the next insertion a trial state is: the largest Mohr-Coulomb utilization of the
 /// eligible intact points, less one (negative: no event yet). Kinks of the law (the peak, the
 /// bilinear kink, delta_c) and contact or unloading switches are not located: the energy-balance
@@ -196,6 +205,11 @@ bool QuasiStaticPath::take_step(State& state, int& iterations, int& inserted) {
       switched_ = switched_before;
       previous_widening = drift.widening;
       continue;
+    }
+    if (!kept && drift.widening > kJumpLimit * jump_scale(trial)) {
+      switched_ = switched_before;
+      jumped_ = true;
+      return false;
     }
     if (control == LoadControl::arc_length) previous_increment_ = trial.x - state.x;
     state = std::move(trial);

@@ -169,6 +169,7 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
   write_file_atomically(out / "cracks" / (id + ".csv"), crack_faces(model, last_points));
   r.complete = complete;
   r.failure = path.failure();
+  r.ended = path.stop_reason();
   r.factorizations = path.factorizations();
   r.seconds = clock.seconds();
   r.path_seconds = r.seconds - setup_seconds;

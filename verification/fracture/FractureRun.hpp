@@ -31,6 +31,7 @@ struct FractureRecord {
   int points = 0, newton_iterations = 0, factorizations = 0;
   bool complete = false;
   std::string failure;
+  std::string ended;  // why a complete run ended before its end point (QuasiStaticPath)
   double seconds = 0.0;
   double path_seconds = 0.0;  // of which following the path (after mesh, element and setup)
 };

@@ -58,6 +58,7 @@ json to_json(const FractureRecord& r) {
             {"factorizations", r.factorizations},
             {"complete", r.complete},
             {"failure", r.failure},
+            {"ended", r.ended},
             {"seconds", r.seconds}};
   if (!std::isnan(r.closed_form_error)) j["closed_form_error"] = r.closed_form_error;
   return j;
@@ -74,6 +75,7 @@ FractureRecord from_json(const json& j, const FractureRunId& id) {
   r.points = j.at("points"), r.newton_iterations = j.at("newton_iterations");
   r.factorizations = j.at("factorizations");
   r.complete = j.at("complete"), r.failure = j.at("failure"), r.seconds = j.at("seconds");
+  r.ended = j.value("ended", "");
   if (j.contains("closed_form_error")) r.closed_form_error = j.at("closed_form_error");
   return r;
 }
@@ -216,8 +218,10 @@ void write_reports(const FractureScene& scene, const FractureStudyResult& result
      << " of the external work.\n\nFiles: results.csv (one row per run), curves/<run>.csv "
         "(one row per converged point), cracks/<run>.csv (faces past the strength), "
         "vtu/<run>.pvd (deformed mesh, magnified, with interface states).\n";
-  for (const FractureRecord& r : result.records)
+  for (const FractureRecord& r : result.records) {
     if (!r.complete) md << "\n- " << r.run.id() << " is incomplete: " << r.failure << "\n";
+    if (!r.ended.empty()) md << "\n- " << r.run.id() << " ended early: " << r.ended << "\n";
+  }
   write_file_atomically(out / "summary.json", summary.dump(1) + "\n");
   write_file_atomically(out / "report.md", md.str());
 }
@@ -243,7 +247,8 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
         return RunOutcome{to_json(r), r.run.id() + ": peak " + fmt(r.peak_load, 5) + " N, " +
                                           std::to_string(r.points) + " points, " +
                                           fmt(r.seconds, 3) + " s" +
-                                          (r.complete ? "" : " (incomplete: " + r.failure + ")")};
+                                          (r.complete ? "" : " (incomplete: " + r.failure + ")") +
+                                          (r.ended.empty() ? "" : " (ended: " + r.ended + ")")};
       });
   FractureStudyResult result;
   for (const FractureRunId& id : runs) {

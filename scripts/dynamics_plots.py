@@ -9,9 +9,14 @@ Reads results.csv and history/<id>.csv in OUTDIR and writes, each atomically (te
 beside it, then renamed), printing its path:
   plots/<id>_energy.png  per run, two panels against time (ms):
                          top: kinetic and elastic energy, external work (loads and prescribed
-                         velocities), contact work, dissipated energy, and kinetic + elastic;
+                         velocities), contact work, damping, cohesive work (fragmentation), and
+                         kinetic + elastic;
                          bottom: the energy balance error |balance - balance(0)| / input (log)
                          and, when contacts occur, the number of contacts (right axis).
+  plots/<id>_fragments.png  per fragmentation run (fragments/<id>.csv): the fragments' x
+                         velocity against their centre's x, and their mass-fraction CDF.
+  plots/fragment_cdf_<mesh>_L<level>.png  per mesh and level of a fragmentation study: the
+                         fragment mass-fraction CDFs of all its realizations in one plot.
 A run without a history is left out (one line on stderr); the exit code is always 0.
 Only the Python standard library, numpy and matplotlib (Agg) are used.
 """
@@ -29,7 +34,8 @@ ENERGIES = (("kinetic_energy", "kinetic", "tab:blue"),
             ("elastic_energy", "elastic", "tab:orange"),
             ("external_work", "external work", "tab:green"),
             ("contact_work", "contact work", "tab:red"),
-            ("dissipated_energy", "dissipated", "tab:purple"))
+            ("dissipated_energy", "dissipated", "tab:purple"),
+            ("cohesive_work", "cohesive work", "tab:brown"))
 
 
 def skip(what, why):
@@ -82,6 +88,54 @@ def plot_energy(outdir, run, dpi):
     save_atomically(fig, os.path.join(outdir, "plots", run["id"] + "_energy.png"), dpi)
 
 
+def read_fragments(outdir, run):
+    table = read_table(os.path.join(outdir, "fragments", run["id"] + ".csv"))
+    return table if table and len(table.get("mass", [])) else None
+
+
+def mass_cdf(table):
+    """The fragment mass fractions, ascending, and (i + 1) / n."""
+    m = np.sort(np.asarray(table["mass"], dtype=float))
+    return m / m.sum(), np.arange(1, m.size + 1) / m.size
+
+
+def plot_fragments(outdir, run, table, dpi):
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
+    x, vx = (np.asarray(table[k], dtype=float) for k in ("x", "vx"))
+    left.plot(x * 1e3, vx, "o", markersize=3.5, color="tab:blue")
+    left.set(xlabel="fragment centre x (mm)", ylabel="fragment velocity x (m/s)")
+    light_grid(left)
+    fraction, cdf = mass_cdf(table)
+    right.step(fraction, cdf, where="post", color="tab:blue")
+    right.set(xscale="log", xlabel="fragment mass / total mass", ylabel="cumulative fraction")
+    light_grid(right)
+    fig.suptitle(f"{run['id']}: {len(x)} fragments, largest {fraction.max():.3f} of the mass",
+                 fontsize=10)
+    save_atomically(fig, os.path.join(outdir, "plots", run["id"] + "_fragments.png"), dpi)
+
+
+def plot_level_cdfs(outdir, runs, dpi):
+    groups = {}
+    for run in runs:
+        table = read_fragments(outdir, run)
+        if table:
+            groups.setdefault((run.get("mesh", "?"), run.get("level", "?")), []).append(
+                (run, table))
+    for (mesh, level), members in groups.items():
+        fig, ax = plt.subplots(figsize=(6.5, 4.5), layout="constrained")
+        for run, table in members:
+            fraction, cdf = mass_cdf(table)
+            ax.step(fraction, cdf, where="post", linewidth=1.0, alpha=0.8,
+                    label=f"R{run.get('realization', '?')}")
+        ax.set(xscale="log", xlabel="fragment mass / total mass", ylabel="cumulative fraction",
+               title=f"{mesh}, level {level}: {len(members)} realizations")
+        light_grid(ax)
+        if len(members) <= 12:
+            ax.legend(fontsize=8)
+        save_atomically(fig, os.path.join(outdir, "plots", f"fragment_cdf_{mesh}_L{level}.png"),
+                        dpi)
+
+
 def main(argv):
     args = outdir_arguments(__doc__, argv)
     runs = [r for r in read_runs(args.outdir) if r.get("id")]
@@ -94,6 +148,18 @@ def main(argv):
         except Exception as e:  # one bad figure must not cost the others
             plt.close("all")
             skip(f"the energy plot of {run['id']}", f"{type(e).__name__}: {e}")
+        table = read_fragments(args.outdir, run)
+        if table:
+            try:
+                plot_fragments(args.outdir, run, table, args.dpi)
+            except Exception as e:
+                plt.close("all")
+                skip(f"the fragment plot of {run['id']}", f"{type(e).__name__}: {e}")
+    try:
+        plot_level_cdfs(args.outdir, runs, args.dpi)
+    except Exception as e:
+        plt.close("all")
+        skip("the fragment CDFs", f"{type(e).__name__}: {e}")
     return 0
 
 

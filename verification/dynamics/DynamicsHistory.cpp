@@ -15,7 +15,7 @@ DynamicsHistory::DynamicsHistory(std::filesystem::path file) : file_(std::move(f
 const char* DynamicsHistory::columns() {
   return "step,time,kinetic_energy,elastic_energy,external_work,contact_work,dissipated_energy,"
          "momentum_x,momentum_y,angular_momentum,reaction_work,kinetic_leapfrog,contact_potential,"
-         "contacts,max_penetration,balance,balance_error";
+         "contacts,max_penetration,balance,balance_error,cohesive_work";
 }
 
 void DynamicsHistory::add(const StepRecord& r, const ContactForces* contact) {
@@ -34,7 +34,8 @@ void DynamicsHistory::add(const StepRecord& r, const ContactForces* contact) {
                    r.kinetic_leapfrog, c.potential})
     row << ',' << fmt(x, 12);
   row << ',' << c.contacts << ',' << fmt(c.max_depth, 12) << ',' << fmt(drift, 6) << ','
-      << fmt(r.input_energy() > 0.0 ? std::abs(drift) / r.input_energy() : 0.0, 6) << '\n';
+      << fmt(r.input_energy() > 0.0 ? std::abs(drift) / r.input_energy() : 0.0, 6) << ','
+      << fmt(r.cohesive_work, 12) << '\n';
   text_ += row.str();
 }
 

@@ -76,24 +76,27 @@ void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, Central
       run.add_velocity_boundary({mesh.side_vertices(s), 1, [](double) { return 0.0; }});
 }
 
-/// One frame of the series: the mesh at x = X + u with the displacement and velocity at the
-/// vertices and each cell's mean stress and von Mises stress.
+/// One frame of the series: the mesh at x = X + u with one point per node of the current DOF map
+/// (so a crack shows as a gap where its nodes split), the displacement and velocity at the
+/// points, each cell's mean stress and von Mises stress, and any extra cell fields.
 void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDifference& run,
                  const ElasticityIntegrator& integrator,
-                 const ElasticityIntegrator::MeanStrainOperators& strain) {
-  std::vector<Point> moved = mesh.vertices();
+                 const ElasticityIntegrator::MeanStrainOperators& strain,
+                 std::vector<VtuField> cell_fields) {
+  const int nodes = run.dofs().num_nodes();
+  std::vector<Point> moved(nodes);
   VtuField displacement{"displacement", 2, {}}, velocity{"velocity", 2, {}};
   VtuField stress{"mean_stress", 3, {}}, von_mises{"von_mises", 1, {}};
-  std::vector<int> node(mesh.num_vertices(), -1);
+  std::vector<int> cells;
+  cells.reserve(mesh.cell_vertex_list().size());
   for (int c = 0; c < mesh.num_cells(); ++c)
-    for (int k = 0; k < mesh.cell_size(c); ++k)
-      node[mesh.cell_vertices(c)[k]] = run.dofs().node(c, k);
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    const Eigen::Vector2d u = run.displacement().segment<2>(2 * node[v]);
-    moved[v] += u;
+    for (int k = 0; k < mesh.cell_size(c); ++k) cells.push_back(run.dofs().node(c, k));
+  for (int i = 0; i < nodes; ++i) {
+    const Eigen::Vector2d u = run.displacement().segment<2>(2 * i);
+    moved[i] = run.node_position(i) + u;
     for (int d = 0; d < 2; ++d) {
       displacement.values.push_back(u[d]);
-      velocity.values.push_back(run.velocity()[2 * node[v] + d]);
+      velocity.values.push_back(run.velocity()[2 * i + d]);
     }
   }
   const IsotropicElasticity& m = integrator.material();
@@ -109,12 +112,13 @@ void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDif
                          (sz - s[0]) * (sz - s[0])) +
                   3.0 * s[2] * s[2]));
   }
+  cell_fields.insert(cell_fields.begin(), {stress, von_mises});
   // The frame's domain is the deformed bounding box (the bodies have moved off the reference one).
   Point lo = moved.front(), hi = moved.front();
   for (const Point& p : moved) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const PolygonMesh deformed(Rectangle(lo.x(), lo.y(), hi.x(), hi.y()), moved, mesh.offsets(),
-                             mesh.cell_vertex_list());
-  write_vtu(file, deformed, {{displacement, velocity}, {stress, von_mises}});
+                             cells);
+  write_vtu(file, deformed, {{displacement, velocity}, cell_fields});
 }
 
 }  // namespace
@@ -192,7 +196,8 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
     const fs::path file =
         out / "vtu" / name / ("step_" + std::to_string(run.step_count()) + ".vtu");
     fs::create_directories(file.parent_path());
-    write_frame(file, mesh, run, integrator, strain);
+    write_frame(file, mesh, run, integrator, strain,
+                cracks ? cracks->cell_fields(mass) : std::vector<VtuField>{});
     series.add(run.time(), file);
   };
   const ContactForces* reports = run.contact();

@@ -66,6 +66,18 @@ void FragmentationRun::observe(const StepRecord& r) {
       std::max(worst_balance_, std::abs(held - put_in) / std::max(r.input_energy(), 1e-300));
 }
 
+std::vector<VtuField> FragmentationRun::cell_fields(const LumpedMass& mass) const {
+  const Fragments pieces(fracture_->broken_state(), mass);
+  VtuField fragment{"fragment", 1, {}}, cracked{"cracked_edges", 1, {}};
+  for (int c = 0; c < mesh_.num_cells(); ++c) {
+    fragment.values.push_back(pieces.fragment(c));
+    int n = 0;
+    for (int e : mesh_.cell_edges(c)) n += fracture_->cracked()[e];
+    cracked.values.push_back(n);
+  }
+  return {fragment, cracked};
+}
+
 void FragmentationRun::finish(const fs::path& out, const std::string& id, const LumpedMass& mass,
                               DynamicsMeasures& m) const {
   const Fragments pieces(fracture_->broken_state(), mass);

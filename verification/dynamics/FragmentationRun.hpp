@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/element/ElasticityIntegrator.hpp"
+#include "core/io/VtuMesh.hpp"
 #include "dynamics/DynamicFracture.hpp"
 #include "dynamics/StableTimeStep.hpp"
 #include "verification/dynamics/DynamicsProbe.hpp"
@@ -31,6 +32,9 @@ class FragmentationRun {
   /// stored against what was put in), relative to the input energy; its largest value so far is
   /// kept.
   void observe(const StepRecord& record);
+  /// For a .vtu frame: per cell its fragment (components across the fully broken edges) and its
+  /// number of cracked edges.
+  std::vector<VtuField> cell_fields(const LumpedMass& mass) const;
   /// Fills the fragmentation figures of `m` and writes fragments/<id>.csv and cracks/<id>.csv.
   void finish(const std::filesystem::path& out, const std::string& id, const LumpedMass& mass,
               DynamicsMeasures& m) const;

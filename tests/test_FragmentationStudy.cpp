@@ -4,11 +4,11 @@
 //     fragmentation study, the Lanczos step estimate (valid for the uncracked map only), a
 //     negative fracture energy, and a K0 too small for the law's peak to come before delta_c,
 //     each with an InputError;
-//   - one run of the stretched strip (2 mm x 10 um, 200 quads, alumina, rate 1e5 /s): fragments
-//     = broken edges + 1, the discrete energy balance to 1e-10 of the input, the balance with the
-//     law's closed forms within 2 % (measured 1.3 %: the step's error at the law's kinks,
-//     docs/fragmentation.md), fragments/<id>.csv masses summing to rho x area to 1e-12, and
-//     cracks/<id>.csv with one row per cracked edge.
+//   - one run of the stretched strip (2 mm x 10 um, 200 quads, alumina, rate 1e5 /s, the default
+//     K0 = 10 E / h): fragments = broken edges + 1, the discrete energy balance to 1e-10 of the
+//     input, the balance with the law's closed forms within 1 % (measured 8.1e-4: the step's
+//     error at the law's kinks, docs/fragmentation.md), fragments/<id>.csv masses summing to
+//     rho x area to 1e-12, and cracks/<id>.csv with one row per cracked edge.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -67,7 +67,7 @@ TEST(FragmentationStudy, StretchedStripRun) {
   EXPECT_GT(m.broken_edges, 1);
   EXPECT_EQ(m.fragments, m.broken_edges + 1);
   EXPECT_LT(m.max_energy_balance_error, 1e-10);
-  EXPECT_LT(m.law_balance_error, 0.02);
+  EXPECT_LT(m.law_balance_error, 0.01);
   std::ifstream fragments(out / "fragments" / (id.id() + ".csv"));
   std::string line;
   std::getline(fragments, line);

@@ -44,7 +44,8 @@ int list_scenes() {
     if (is_fracture_scene(f)) {  // its own keys: the convergence reader would refuse them
       std::cout << "fracture: " << read_fracture_scene(f).description << "\n";
     } else if (is_dynamics_scene(f)) {
-      std::cout << "dynamics: " << read_dynamics_scene(f, true).description << "\n";
+      const DynamicsScene d = read_dynamics_scene(f, true);
+      std::cout << (d.fragmentation ? "fragmentation: " : "dynamics: ") << d.description << "\n";
     } else {
       const Scene s = read_scene(f);
       std::cout << s.study << ": " << s.description << "\n";

@@ -57,7 +57,7 @@ std::vector<DynamicsKey> make_keys() {
               "fragmentation: G, the area under the law, J/m^2", 0.0, true),
       bounded("cohesive.shear_factor", "number", "1", ">= 0",
               "fragmentation: beta, the weight of sliding in the effective opening", 0.0, false),
-      bounded("cohesive.initial_stiffness", "number", "1", "> 0",
+      bounded("cohesive.initial_stiffness", "number", "10", "> 0",
               "fragmentation: K0 in units of E / h_avg (dynamics needs an initially elastic law; "
               "its springs share the stable step)",
               0.0, true),

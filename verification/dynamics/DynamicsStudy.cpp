@@ -155,7 +155,9 @@ std::string report_md(const DynamicsScene& scene, const DynamicsStudyResult& res
      << scene.description << "\n\nProblem " << dynamics_problem_name(scene.problem) << "; "
      << result.records.size() << " runs, " << result.incomplete
      << " incomplete. dt = " << fmt(scene.safety) << " x the " << step_estimate_name(scene.estimate)
-     << " estimate of the critical step.\n\n| run | cells | h_avg | dt [s] | dt_crit Lanczos / "
+     << " estimate of the critical step"
+     << (scene.fragmentation ? ", with the cohesive springs' share (docs/fragmentation.md)" : "")
+     << ".\n\n| run | cells | h_avg | dt [s] | dt_crit Lanczos / "
         "cells [s] | steps | energy balance error | momentum drift | ";
   switch (scene.problem) {
     case DynamicsProblem::wave_bar:
@@ -170,6 +172,16 @@ std::string report_md(const DynamicsScene& scene, const DynamicsStudyResult& res
             "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   }
   for (const DynamicsRecord& r : result.records) md << report_row(scene, r);
+  if (scene.fragmentation) {
+    md << "\n| run | fragments | broken / cracked edges | largest fragment (mass fraction) | "
+          "dissipated [J/m] | balance with the law's energies |\n|---|---|---|---|---|---|\n";
+    for (const DynamicsRecord& r : result.records) {
+      const DynamicsMeasures& m = r.measures;
+      md << "| " << r.run.id() << " | " << fmt(m.fragments) << " | " << fmt(m.broken_edges) << " / "
+         << fmt(m.cracked_edges) << " | " << fmt(m.max_fragment_mass_fraction, 3) << " | "
+         << fmt(m.dissipated_energy, 4) << " | " << fmt(m.law_balance_error, 2) << " |\n";
+    }
+  }
   md << "\nEnergy balance error: |balance - balance(0)| over the input energy at the end "
         "(docs/dynamics.md). Momentum drift: max |P - P(0)| over sum m|v(0)|, only where no wall, "
         "prescribed velocity or damping acts.\n\nFiles: results.csv (one row per run), "
@@ -194,7 +206,7 @@ void write_reports(const DynamicsScene& scene, const DynamicsStudyResult& result
     runs.push_back(j);
   }
   json summary = {{"scene", scene.name},
-                  {"study", "dynamics"},
+                  {"study", scene.fragmentation ? "fragmentation" : "dynamics"},
                   {"problem", dynamics_problem_name(scene.problem)},
                   {"settings", settings},
                   {"runs", result.records.size()},

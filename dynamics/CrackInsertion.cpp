@@ -10,14 +10,22 @@ namespace vorodg {
 CrackInsertion::CrackInsertion(const PolygonMesh& mesh, const ElasticityIntegrator& integrator,
                                const MohrCoulomb& criterion, std::vector<char> eligible,
                                int threads)
-    : mesh_(mesh),
-      D_(integrator.material().D()),
-      strain_(integrator.all_mean_strain_operators(threads)),
-      criterion_(criterion),
-      eligible_(std::move(eligible)) {
+    : mesh_(mesh), criterion_(criterion), eligible_(std::move(eligible)) {
   if (static_cast<int>(eligible_.size()) != mesh.num_edges())
     throw InputError("crack insertion: " + std::to_string(eligible_.size()) +
                      " edge flags, expected " + std::to_string(mesh.num_edges()));
+  const auto strain = integrator.all_mean_strain_operators(threads);
+  const Eigen::Matrix3d& D = integrator.material().D();
+  offset_.assign(mesh.num_cells() + 1, 0);
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    offset_[c + 1] = offset_[c] + 6 * static_cast<std::size_t>(mesh.cell_size(c));
+  stress_operator_.resize(offset_.back());
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    Eigen::Map<Eigen::MatrixXd>(stress_operator_.data() + offset_[c], 3, 2 * mesh.cell_size(c)) =
+        D * strain.block(c);
+  tangent_.reserve(mesh.num_edges());
+  for (const MeshEdge& e : mesh.edges())
+    tangent_.push_back((mesh.vertex(e.v1) - mesh.vertex(e.v0)).normalized());
 }
 
 Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
@@ -26,10 +34,13 @@ Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Ei
   Eigen::Matrix3Xd sigma(3, cells);
 #pragma omp parallel for schedule(static, 256) num_threads(std::max(threads, 1))
   for (int c = 0; c < cells; ++c) {
-    const int n = mesh_.cell_size(c);
-    Eigen::VectorXd uc(2 * n);
-    for (int k = 0; k < n; ++k) uc.segment<2>(2 * k) = u.segment<2>(2 * dofs.node(c, k));
-    sigma.col(c) = D_ * (strain_.block(c) * uc);
+    const double* S = stress_operator_.data() + offset_[c];
+    Eigen::Vector3d s = Eigen::Vector3d::Zero();
+    for (int k = 0; k < mesh_.cell_size(c); ++k, S += 6) {
+      const int node = dofs.node(c, k);
+      s += Eigen::Map<const Eigen::Matrix<double, 3, 2>>(S) * u.segment<2>(2 * node);
+    }
+    sigma.col(c) = s;
   }
   return sigma;
 }
@@ -37,7 +48,7 @@ Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Ei
 Eigen::Vector2d CrackInsertion::traction(const Eigen::Matrix3Xd& stresses, int e) const {
   const MeshEdge& edge = mesh_.edge(e);
   const Eigen::Vector3d s = 0.5 * (stresses.col(edge.cell0) + stresses.col(edge.cell1));
-  const Eigen::Vector2d t = (mesh_.vertex(edge.v1) - mesh_.vertex(edge.v0)).normalized();
+  const Eigen::Vector2d& t = tangent_[e];
   const Eigen::Vector2d n(t.y(), -t.x());
   const Eigen::Vector2d sn(s[0] * n.x() + s[2] * n.y(), s[2] * n.x() + s[1] * n.y());
   return {sn.dot(n), sn.dot(t)};

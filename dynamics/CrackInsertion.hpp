@@ -46,8 +46,12 @@ class CrackInsertion {
 
  private:
   const PolygonMesh& mesh_;
-  Eigen::Matrix3d D_;
-  ElasticityIntegrator::MeanStrainOperators strain_;
+  // Per cell, D times the cell mean of the strain operator (3 x 2n, column-major, cells one after
+  // another): the mean stress is this times the cell's DOFs, summed vertex by vertex without
+  // gathering them (the check runs after every step, so it allocates nothing).
+  std::vector<std::size_t> offset_;
+  std::vector<double> stress_operator_;
+  std::vector<Eigen::Vector2d> tangent_;  // per edge, v0 -> v1, unit
   MohrCoulomb criterion_;
   std::vector<char> eligible_;
 };

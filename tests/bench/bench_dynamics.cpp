@@ -8,13 +8,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <map>
 #include <memory>
 
+#include "BenchMeshes.hpp"
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
-#include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Random.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/GlobalTimeStep.hpp"
@@ -50,17 +49,7 @@ struct Model {
 };
 
 const Model& model(int n) {
-  static std::map<int, std::unique_ptr<Model>> cache;
-  auto& slot = cache[n];
-  if (!slot) {
-    MeshSpec spec;
-    spec.family = MeshFamily::rcp;
-    spec.domain = Rectangle(0, 0, 4, 1);
-    spec.size = std::sqrt(0.7 * spec.domain.area() / n);
-    spec.seed = 11;
-    slot = std::make_unique<Model>(spec);
-  }
-  return *slot;
+  return bench::once_per_size<Model>(n);
 }
 
 Eigen::VectorXd random_vector(int size, double amplitude) {

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 
+#include "BenchMeshes.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/meshgen/MeshFamily.hpp"
@@ -24,12 +25,7 @@ const PolygonMesh& rcp_mesh(int n) {
   static std::map<int, std::unique_ptr<PolygonMesh>> cache;
   auto& slot = cache[n];
   if (!slot) {
-    MeshSpec spec;
-    spec.family = MeshFamily::rcp;
-    spec.domain = Rectangle(0, 0, 4, 1);
-    spec.size = std::sqrt(0.7 * spec.domain.area() / n);
-    spec.seed = 11;
-    slot = std::make_unique<PolygonMesh>(generate_mesh(spec).mesh);
+    slot = std::make_unique<PolygonMesh>(generate_mesh(bench::rcp_spec(n)).mesh);
   }
   return *slot;
 }

@@ -111,7 +111,8 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
       QuadraturePoint& p = face.points[q];
       const Eigen::Vector2d d(g.dot(face.n), g.dot(face.t));
-      const Eigen::Vector2d tau = law_.respond(d, p.history).traction;
+      Eigen::Vector2d tau = law_.respond(d, p.history).traction;
+      if (d[0] < 0.0) tau[0] += closure_stiffness() * d[0];  // overclosure
       work -= 0.5 * w * (p.traction + tau).dot(d - p.opening);
       p.opening = d;
       p.traction = tau;
@@ -144,13 +145,19 @@ double CohesiveForces::dissipated_energy() const {
   return sum;
 }
 
+double CohesiveForces::closure_energy(const Eigen::Vector2d& opening) const {
+  const double overlap = std::min(opening[0], 0.0);
+  return 0.5 * closure_stiffness() * overlap * overlap;
+}
+
 double CohesiveForces::stored_energy() const {
   const SegmentRule& rule = gauss2_segment();
   double sum = 0.0;
   for (const Face& face : faces_)
     for (int q = 0; q < 2; ++q)
       sum += rule.weights[q] * face.length *
-             law_.stored_energy(face.points[q].opening, face.points[q].history);
+             (law_.stored_energy(face.points[q].opening, face.points[q].history) +
+              closure_energy(face.points[q].opening));
   return sum;
 }
 

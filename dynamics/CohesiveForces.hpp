@@ -7,8 +7,11 @@
 // between its end vertices (the RK shape functions restrict to the edge's hat functions), so the
 // opening g = u_cell1 - u_cell0 is linear between the jumps of the two end nodes. Two Gauss points
 // per edge, each with its own history, carry the law on g in the frame (g.n, g.t); the law
-// starts from zero opening and puts no normal traction on a closing face. Preventing
-// interpenetration of the faces is contact's job, not the law's.
+// starts from zero opening and puts no normal traction on a closing face. Against overclosure
+// a penalty k <g_n>_- acts at each point, k a fraction of K0 (closure_stiffness; within the
+// springs' bound below): surface contact leaves cells that share a vertex to it
+// (docs/contact.md), and the faces of a crack share two. Its energy k <g_n>_-^2 / 2 is stored,
+// not dissipated.
 //
 // Which law. Only an initially elastic (intrinsic) law is accepted, inserted extrinsically:
 // the edge is intact until the criterion holds, then the law starts from zero opening and zero
@@ -68,7 +71,8 @@ class CohesiveForces {
   /// Work of the cohesive tractions on the body so far (<= 0 up to the discretization error).
   double work() const { return work_; }
   /// The law's closed forms over the cracked edges (per unit thickness): dissipated energy, sum
-  /// of w G(delta_max), and the energy stored on the unloading lines at the last evaluation.
+  /// of w G(delta_max), and the energy stored on the unloading lines and in the overclosure
+  /// penalty at the last evaluation.
   double dissipated_energy() const;
   /// The same for cracked edge e alone (0 if not cracked).
   double dissipated_energy(int e) const;
@@ -94,6 +98,16 @@ class CohesiveForces {
     std::array<QuadraturePoint, 2> points;
   };
   static Face make_face(const PolygonMesh& mesh, int e);
+  /// The overclosure penalty's energy per unit area at an opening (normal, tangential).
+  double closure_energy(const Eigen::Vector2d& opening) const;
+  /// The penalty against overclosure: a fraction of K0. At K0 itself a closing face is a
+  /// spring whose contact lasts about one step at the stable step, and the switching of such a
+  /// spring on and off feeds energy in (measured: half the initial energy on a stretched strip
+  /// at safety 0.9); at a tenth its contact lasts about three times longer.
+  double closure_stiffness() const {
+    return kClosureFraction * law_.parameters().initial_stiffness;
+  }
+  static constexpr double kClosureFraction = 0.1;
   const PolygonMesh& mesh_;
   const CohesiveLaw& law_;
   std::vector<Face> faces_;

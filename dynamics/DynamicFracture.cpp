@@ -3,11 +3,13 @@
 namespace vorodg {
 
 DynamicFracture::DynamicFracture(const PolygonMesh& mesh, CentralDifference& run,
-                                 CohesiveForces& cohesive, const CrackInsertion& insertion)
+                                 CohesiveForces& cohesive, const CrackInsertion& insertion,
+                                 ContactForces* contact)
     : mesh_(mesh),
       run_(run),
       cohesive_(cohesive),
       insertion_(insertion),
+      contact_(contact),
       cracked_(mesh.num_edges(), 0) {
   for (int e : cohesive.edges()) cracked_[e] = 1;
   run_.set_cohesive(cohesive_);
@@ -21,6 +23,7 @@ int DynamicFracture::step(int threads) {
   for (const CrackInsertion::Failure& f : failing) {
     cracked_[f.edge] = 1;
     cohesive_.add_edge(f.edge);
+    if (contact_) contact_->surface().expose(f.edge);
     events_.push_back({run_.step_count(), f.edge});
   }
   std::vector<char> connected(mesh_.num_edges());

@@ -23,9 +23,11 @@ namespace vorodg {
 
 class DynamicFracture {
  public:
-  /// Sets `cohesive` on `run`. Every argument must outlive this object.
+  /// Sets `cohesive` on `run`. Every argument must outlive this object. With `contact` (the
+  /// run's), each cracked edge is exposed as free surface, so that pieces that come apart
+  /// touch again through surface contact.
   DynamicFracture(const PolygonMesh& mesh, CentralDifference& run, CohesiveForces& cohesive,
-                  const CrackInsertion& insertion);
+                  const CrackInsertion& insertion, ContactForces* contact = nullptr);
 
   /// One step of the integrator, then the insertion check; returns the edges cracked after it.
   int step(int threads);
@@ -49,6 +51,7 @@ class DynamicFracture {
   CentralDifference& run_;
   CohesiveForces& cohesive_;
   const CrackInsertion& insertion_;
+  ContactForces* contact_;
   std::vector<char> cracked_;
   std::vector<Event> events_;
 };

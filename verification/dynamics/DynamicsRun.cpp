@@ -183,7 +183,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   if (scene.wall) contact.add_plane(scene.wall->point, scene.wall->normal);
   if (scene.contact || scene.wall) run.set_contact(contact);
   add_boundaries(scene, mesh, run);
-  if (cracks) cracks->attach(run, integrator, 1);
+  if (cracks) cracks->attach(run, integrator, scene.contact ? &contact : nullptr, 1);
   run.initialize(Eigen::VectorXd::Zero(run.dofs().num_dofs()),
                  initial_velocity(scene, bodies, run));
 

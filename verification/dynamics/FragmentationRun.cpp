@@ -46,11 +46,11 @@ double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMa
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,
-                              int threads) {
+                              ContactForces* contact, int threads) {
   run_ = &run;
   cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
   insertion_ = std::make_unique<CrackInsertion>(mesh_, integrator, criterion_, eligible_, threads);
-  fracture_ = std::make_unique<DynamicFracture>(mesh_, run, *cohesive_, *insertion_);
+  fracture_ = std::make_unique<DynamicFracture>(mesh_, run, *cohesive_, *insertion_, contact);
 }
 
 void FragmentationRun::step() {

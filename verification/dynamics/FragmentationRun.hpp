@@ -24,8 +24,10 @@ class FragmentationRun {
   /// safety x the critical step of the cells and the faces' springs together, for every crack
   /// pattern the run can reach.
   double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety) const;
-  /// Starts cracking on `run` (before its initialize()).
-  void attach(CentralDifference& run, const ElasticityIntegrator& integrator, int threads);
+  /// Starts cracking on `run` (before its initialize()); with `contact` (the run's), cracks
+  /// expose new surface to it.
+  void attach(CentralDifference& run, const ElasticityIntegrator& integrator,
+              ContactForces* contact, int threads);
   /// One step of the run with the insertion check after it.
   void step();
   /// After a step: the balance with the law's closed forms (kinetic + elastic + dissipated +

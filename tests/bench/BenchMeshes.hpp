@@ -1,13 +1,22 @@
 #pragma once
-// What the benchmarks share: rcp meshes of about n cells on the 4 x 1 domain (seed 11), and one
-// object per mesh size built once for the whole program (an element table, a model).
+// What the benchmarks share: rcp meshes of about n cells on the 4 x 1 domain (seed 11), one
+// object per mesh size built once for the whole program (an element table, a model), and the
+// element setup options of their models.
 #include <cmath>
 #include <map>
 #include <memory>
 
+#include "core/element/ElementTable.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 
 namespace vorodg::bench {
+
+/// Element setup for the benchmarks' models: two threads (setup is not what they measure).
+inline ElementOptions setup_options() {
+  ElementOptions o;
+  o.threads = 2;
+  return o;
+}
 
 /// An rcp spec of about n cells on [0, 4] x [0, 1].
 inline MeshSpec rcp_spec(int n) {

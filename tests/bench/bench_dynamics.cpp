@@ -25,12 +25,6 @@ namespace {
 
 using namespace vorodg;
 
-ElementOptions setup_options() {
-  ElementOptions o;
-  o.threads = 2;
-  return o;
-}
-
 /// Everything for an rcp mesh of about n cells, built once per n (2 setup threads).
 struct Model {
   PolygonMesh mesh;
@@ -40,7 +34,7 @@ struct Model {
   StableTimeStep limit;
   explicit Model(const MeshSpec& spec)
       : mesh(generate_mesh(spec).mesh),
-        table(mesh, setup_options()),
+        table(mesh, bench::setup_options()),
         mass(table, 7800.0),
         matrices(
             ElasticityIntegrator(table, IsotropicElasticity(200e9, 0.3, PlaneModel::strain), false)

@@ -31,12 +31,6 @@ using namespace vorodg;
 constexpr double kE = 30e9, kDensity = 2400.0, kStrength = 3e6,
                  kToughness = 100.0;  // concrete-like
 
-ElementOptions setup_options() {
-  ElementOptions o;
-  o.threads = 2;
-  return o;
-}
-
 /// An rcp mesh of about n cells with its element data, built once per n.
 struct Model {
   PolygonMesh mesh;
@@ -51,7 +45,7 @@ struct Model {
   double dt;
   explicit Model(const MeshSpec& spec)
       : mesh(generate_mesh(spec).mesh),
-        table(mesh, setup_options()),
+        table(mesh, bench::setup_options()),
         mass(table, kDensity),
         integrator(table, IsotropicElasticity(kE, 0.2, PlaneModel::strain), false),
         matrices(integrator.all_cell_matrices(2)),

@@ -42,7 +42,6 @@ class CrackInsertion {
   /// ascending, with their tractions.
   std::vector<Failure> failing_edges(const SplitDofMap& dofs, const Eigen::VectorXd& u,
                                      const std::vector<char>& cracked, int threads) const;
-  bool eligible(int e) const { return eligible_[e] != 0; }
 
  private:
   const PolygonMesh& mesh_;

@@ -65,6 +65,8 @@ struct Outcome {
   StepRecord record;
   double dissipated = 0.0, stored = 0.0, broken_error = 0.0;
   int broken = 0;
+  int cracked_in_state = 0;       // CrackState::num_cracked of the crack state with openings
+  double smallest_opening = 0.0;  // over its cracked edges
   double momentum = 0.0, mass = 0.0, balance = 0.0, physical = 0.0;
 };
 
@@ -112,6 +114,11 @@ Outcome stretch(const Strip& strip, double safety, int threads) {
   out.stored = cohesive.stored_energy();
   out.broken = cohesive.num_broken();
   out.broken_state = fracture.broken_state();
+  const CrackState cracks = fracture.crack_state();
+  out.cracked_in_state = cracks.num_cracked();
+  out.smallest_opening = INFINITY;
+  for (int e : cohesive.edges())
+    out.smallest_opening = std::min(out.smallest_opening, cracks.openings()[e]);
   for (int e : cohesive.edges())
     if (cohesive.broken(e))
       out.broken_error =
@@ -149,6 +156,9 @@ TEST(DynamicFracture, BrittleStripFragmentsKeepTheirVelocity) {
       error / (0.5 * strip.rate * kLength), end_error / (0.5 * strip.rate * kLength), out.momentum,
       out.mass, out.balance);
   EXPECT_GT(out.broken, strip.model.mesh.num_cells() / 2);
+  // The crack state with openings: every cracked edge, each opened (a broken one past delta_c).
+  EXPECT_EQ(out.cracked_in_state, static_cast<int>(out.events.size()));
+  EXPECT_GT(out.smallest_opening, 0.0);
   EXPECT_EQ(fragments.num_fragments(), out.broken + 1);
   EXPECT_NEAR(fragments.masses().sum(), fragments.total_mass(), 1e-14 * fragments.total_mass());
   EXPECT_LT(out.mass, 1e-14);

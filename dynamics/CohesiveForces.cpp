@@ -89,6 +89,13 @@ double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMas
   return most;
 }
 
+double CohesiveForces::stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
+                                   const LumpedMass& mass, const CohesiveLaw& law,
+                                   const std::vector<char>& eligible, double safety) {
+  return safety * 2.0 /
+         std::sqrt(cells.max_eigenvalue() + eigenvalue_bound(mesh, mass, law, eligible));
+}
+
 void CohesiveForces::bind(const SplitDofMap& dofs) {
   for (Face& f : faces_) {
     const MeshEdge& edge = mesh_.edge(f.edge);

@@ -38,6 +38,7 @@
 #include "core/material/CohesiveLaw.hpp"
 #include "core/mesh/PolygonMesh.hpp"
 #include "dynamics/LumpedMass.hpp"
+#include "dynamics/StableTimeStep.hpp"
 
 namespace vorodg {
 
@@ -57,6 +58,11 @@ class CohesiveForces {
   /// lambda_max(B).
   static double eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
                                  const CohesiveLaw& law, const std::vector<char>& eligible);
+  /// safety x the critical step of the cells (`cells`, the cell-by-cell bound, valid for every
+  /// split) and the springs together: stable for every crack pattern a run can reach.
+  static double stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
+                            const LumpedMass& mass, const CohesiveLaw& law,
+                            const std::vector<char>& eligible, double safety);
   /// The cracked edges, in the order they cracked.
   const std::vector<int>& edges() const { return edges_; }
   bool cracked(int e) const { return slot_[e] >= 0; }

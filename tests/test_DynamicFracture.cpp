@@ -77,9 +77,8 @@ Outcome stretch(const Strip& strip, double safety, int threads) {
   options.threads = threads;
   const std::vector<char> every_edge(m.mesh.num_edges(), 1);
   // The cells' bound holds for every split of the map; the faces' springs add theirs.
-  const double springs = CohesiveForces::eigenvalue_bound(m.mesh, m.mass, strip.law, every_edge);
-  auto run =
-      m.integrator_with(safety * 2.0 / std::sqrt(m.limit.max_eigenvalue() + springs), options);
+  auto run = m.integrator_with(
+      CohesiveForces::stable_step(m.limit, m.mesh, m.mass, strip.law, every_edge, safety), options);
   CohesiveForces cohesive(m.mesh, strip.law);
   CrackInsertion insertion(m.mesh, m.integrator, strip.criterion, every_edge, threads);
   DynamicFracture fracture(m.mesh, *run, cohesive, insertion);

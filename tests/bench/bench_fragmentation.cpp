@@ -53,9 +53,7 @@ struct Model {
         law(CohesiveParameters{kStrength, kToughness, 1.0, SofteningShape::linear,
                                10.0 * kE / mesh.h_avg()}),
         every_edge(mesh.num_edges(), 1),
-        dt(0.9 * 2.0 /
-           std::sqrt(limit.max_eigenvalue() +
-                     CohesiveForces::eigenvalue_bound(mesh, mass, law, every_edge))) {}
+        dt(CohesiveForces::stable_step(limit, mesh, mass, law, every_edge, 0.9)) {}
 };
 
 const Model& model(int n) {

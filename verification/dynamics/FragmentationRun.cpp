@@ -41,8 +41,7 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
 
 double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
                                      double safety) const {
-  const double springs = CohesiveForces::eigenvalue_bound(mesh_, mass, law_, eligible_);
-  return safety * 2.0 / std::sqrt(cells.max_eigenvalue() + springs);
+  return CohesiveForces::stable_step(cells, mesh_, mass, law_, eligible_, safety);
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,

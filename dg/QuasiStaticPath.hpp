@@ -111,7 +111,8 @@ class QuasiStaticPath {
   static constexpr int kEventSearches = 60;
   static constexpr int kSettlingRounds = 100;
   static constexpr int kSettlingIterations = 60;
-  static constexpr double kHalvingHelps = 0.35;  // between 1/4 (trapezoids at a kink) and 1/2
+  static constexpr int kProbeIterations = 60;
+  static constexpr double kHalvingHelps = 0.5;  // a kink: under 1/2; a jump: about 1
   double staged_target(double at, double main_end, double fraction) const;
   Target step_target(const State& start, LoadControl control, double fraction) const;
   double max_utilization(const State& s, const Eigen::VectorXd& u) const;
@@ -137,7 +138,10 @@ class QuasiStaticPath {
   double jump_scale(const State& trial) const;
   /// Once softened, the path ends when the load falls to this fraction of its peak: the halves
   /// then hinge about what is left of the ligament, and further opening measures nothing.
-  static constexpr double kVanishedLoad = 1e-3;
+  static constexpr double kVanishedLoad = 1e-4;
+  /// A jump from a state whose load has already fallen to this fraction of its peak is the
+  /// beam's final snap, the end of the test, not a failure (docs/fracture.md).
+  static constexpr double kFinalSnapLoad = 1e-2;
   bool jumped_ = false;
   double peak_load_ = 0.0;
   std::string stop_reason_;

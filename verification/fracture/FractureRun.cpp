@@ -13,6 +13,7 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "core/util/Random.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/CohesiveFracture.hpp"
 #include "dg/QuasiStaticPath.hpp"
@@ -88,6 +89,22 @@ GeneratedMesh run_mesh(const FractureScene& scene, const FractureRunId& run) {
 }
 
 }  // namespace
+
+std::vector<FractureRunId> fracture_runs(const FractureScene& scene) {
+  std::vector<FractureRunId> runs;
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const SceneMesh& mesh = scene.meshes[m];
+    for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
+      for (int r = 0; r < mesh.realizations; ++r) {
+        FractureRunId id;
+        id.mesh = static_cast<int>(m), id.level = level, id.realization = r;
+        id.label = mesh.label;
+        id.seed = derive_seed(derive_seed(mesh.seed, level), r);
+        runs.push_back(id);
+      }
+  }
+  return runs;
+}
 
 void check_fracture_meshes(const FractureScene& scene, const std::vector<FractureRunId>& runs) {
   std::set<std::pair<int, int>> seen;

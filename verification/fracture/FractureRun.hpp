@@ -36,6 +36,9 @@ struct FractureRecord {
   double path_seconds = 0.0;  // of which following the path (after mesh, element and setup)
 };
 
+/// Every run of the scene: each mesh, level and realization, with its seed.
+std::vector<FractureRunId> fracture_runs(const FractureScene& scene);
+
 /// Builds the first realization of every mesh level and its fracture setup, so that a scene
 /// whose geometry the meshes cannot carry (no vertex at the load point, no edges along the crack
 /// line) is refused as bad input before anything runs or is written.

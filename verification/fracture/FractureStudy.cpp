@@ -10,7 +10,6 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
-#include "core/util/Random.hpp"
 #include "verification/report/Extrapolation.hpp"
 #include "verification/report/KolmogorovSmirnov.hpp"
 #include "verification/report/SampleStatistics.hpp"
@@ -21,22 +20,6 @@ using nlohmann::json;
 
 namespace vorodg {
 namespace {
-
-std::vector<FractureRunId> expand(const FractureScene& scene) {
-  std::vector<FractureRunId> runs;
-  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    const SceneMesh& mesh = scene.meshes[m];
-    for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
-      for (int r = 0; r < mesh.realizations; ++r) {
-        FractureRunId id;
-        id.mesh = static_cast<int>(m), id.level = level, id.realization = r;
-        id.label = mesh.label;
-        id.seed = derive_seed(derive_seed(mesh.seed, level), r);
-        runs.push_back(id);
-      }
-  }
-  return runs;
-}
 
 json to_json(const FractureRecord& r) {
   json j = {{"id", r.run.id()},
@@ -230,7 +213,7 @@ void write_reports(const FractureScene& scene, const FractureStudyResult& result
 
 FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::path& out, int threads,
                                        bool progress) {
-  const std::vector<FractureRunId> runs = expand(scene);
+  const std::vector<FractureRunId> runs = fracture_runs(scene);
   check_fracture_meshes(scene, runs);
   fs::create_directories(out);
   std::vector<std::string> ids;

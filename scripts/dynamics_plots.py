@@ -17,9 +17,13 @@ beside it, then renamed), printing its path:
                          velocity against their centre's x, and their mass-fraction CDF.
   plots/fragment_cdf_<mesh>_L<level>.png  per mesh and level of a fragmentation study: the
                          fragment mass-fraction CDFs of all its realizations in one plot.
+  plots/perturbation_hamming.png  for the folder of a `perturb` study (perturbation.csv): each
+                         variant's Hamming distance to perturb-0 against the step, log axis
+                         (zero distances are not drawn; the report lists them).
 A run without a history is left out (one line on stderr); the exit code is always 0.
 Only the Python standard library, numpy and matplotlib (Agg) are used.
 """
+import csv
 import os
 import sys
 
@@ -136,8 +140,42 @@ def plot_level_cdfs(outdir, runs, dpi):
                         dpi)
 
 
+def plot_perturbation(outdir, dpi):
+    """Figure 22: the crack-state distance of each perturbed run to the reference run."""
+    curves = {}
+    with open(os.path.join(outdir, "perturbation.csv"), newline="") as f:
+        for row in csv.DictReader(f):
+            key = (row["variant"], row["value"], row["run"])
+            curves.setdefault(key, []).append((int(row["step"]), int(row["distance"])))
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    drawn = 0
+    for (variant, value, run), points in sorted(curves.items()):
+        steps = np.array([p[0] for p in points])
+        distance = np.array([p[1] for p in points], dtype=float)
+        shown = distance > 0
+        if shown.any():
+            ax.step(steps[shown], distance[shown], where="post", label=f"{value} ({run})")
+            drawn += 1
+    ax.set_yscale("log")
+    ax.set_xlabel("step")
+    ax.set_ylabel("Hamming distance to perturb-0")
+    ax.set_title(f"{drawn} of {len(curves)} runs differ from the reference")
+    light_grid(ax)
+    if drawn:
+        ax.legend(fontsize=7)
+    os.makedirs(os.path.join(outdir, "plots"), exist_ok=True)
+    save_atomically(fig, os.path.join(outdir, "plots", "perturbation_hamming.png"), dpi)
+
+
 def main(argv):
     args = outdir_arguments(__doc__, argv)
+    if os.path.exists(os.path.join(args.outdir, "perturbation.csv")):
+        try:
+            plot_perturbation(args.outdir, args.dpi)
+        except Exception as e:
+            plt.close("all")
+            skip("the perturbation plot", f"{type(e).__name__}: {e}")
+        return 0
     runs = [r for r in read_runs(args.outdir) if r.get("id")]
     if not runs:
         skip("every figure", f"no runs in {os.path.join(args.outdir, 'results.csv')}")

@@ -10,6 +10,7 @@
 #include "core/util/Stopwatch.hpp"
 #include "verification/cli/CliSupport.hpp"
 #include "verification/dynamics/DynamicsStudy.hpp"
+#include "verification/dynamics/PerturbationReport.hpp"
 #include "verification/fracture/FractureStudy.hpp"
 #include "verification/study/ExtremesReport.hpp"
 #include "verification/study/Scene.hpp"
@@ -109,6 +110,10 @@ int run_dynamics(const fs::path& path, const StudyOptions& options, bool no_plot
     incomplete += r.incomplete;
     runs += r.records.size();
     if (!no_plots) draw_dynamics_plots(out);
+  }
+  if (!scene.perturb_key.empty() && incomplete == 0) {
+    write_perturbation_report(scene, options.out);
+    if (!no_plots) draw_dynamics_plots(options.out);
   }
   std::cout << "\n" << scene.name << ": " << runs << " runs, " << clock.seconds() << " s\n";
   if (incomplete > 0) {

@@ -137,6 +137,12 @@ std::vector<DynamicsKey> make_keys() {
           "mesh families with sizes, realizations, seed"),
       key("variants[]", "objects with a label", "none", "",
           "each merged over the top-level keys; each runs into DIR/<label>/"),
+      key("perturb.key", "string", "none", "a top-level key or a JSON pointer (/wall/point)",
+          "the key a sensitivity study varies (instead of variants[]); its runs go to "
+          "DIR/perturb-<i>/, and DIR/perturbation.csv holds each run's Hamming distance to "
+          "perturb-0's crack state after every step"),
+      key("perturb.values[]", "list", "none", "two or more values of the key",
+          "the values, the first the reference"),
   };
 }
 

@@ -262,6 +262,45 @@ double DynamicsScene::wave_speed() const {
   return rollers ? dilatational_speed() : bar_speed();
 }
 
+namespace {
+
+/// `perturb: {key, values}`: one variant per value, labelled perturb-<i>, with the key (a
+/// top-level name, or a JSON pointer such as /wall/point) set to the value.
+DynamicsScene perturbed_scene(const json& root, const std::string& source, bool force) {
+  const json& p = root["perturb"];
+  const std::string where = "scene " + source + ": perturb";
+  if (root.contains("variants")) throw InputError(where + ": expected either perturb or variants");
+  if (!p.is_object() || !p.contains("key") || !p["key"].is_string() || !p.contains("values") ||
+      !p["values"].is_array() || p["values"].size() < 2 || p.size() != 2)
+    throw InputError(where + ": expected {\"key\": name, \"values\": [two or more values]}");
+  const std::string key = p["key"];
+  if (key.empty() || key == "/") throw InputError(where + ".key: expected a scene key");
+  json::json_pointer pointer;
+  try {
+    pointer = json::json_pointer(key.front() == '/' ? key : "/" + key);
+  } catch (const json::exception&) {
+    throw InputError(where + ".key: '" + key + "' is not a key or a JSON pointer");
+  }
+  json base = root;
+  base.erase("perturb");
+  base["variants"] = json::array();
+  for (std::size_t i = 0; i < p["values"].size(); ++i) {
+    json variant = base;
+    variant.erase("variants");
+    variant[pointer] = p["values"][i];  // the whole scene, so that merging it changes only this
+    variant["label"] = "perturb-" + std::to_string(i);
+    base["variants"].push_back(variant);
+  }
+  DynamicsScene top = parse_dynamics_scene(base.dump(), source, force);
+  if (!top.fragmentation)
+    throw InputError(where + ": expected study fragmentation (it compares crack states)");
+  top.perturb_key = key;
+  for (const json& v : p["values"]) top.perturb_values.push_back(v.dump());
+  return top;
+}
+
+}  // namespace
+
 DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source, bool force) {
   json root;
   try {
@@ -270,6 +309,7 @@ DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& s
     throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
   }
   if (!root.is_object()) throw InputError("scene " + source + ": expected a JSON object");
+  if (root.contains("perturb")) return perturbed_scene(root, source, force);
   if (!root.contains("variants")) return DynamicsSceneReader(root, source, force).read();
   json base = root;
   base.erase("variants");

@@ -78,6 +78,9 @@ struct DynamicsScene {
   /// Every key and the value used, in the table's order (the echo and summary.json).
   std::vector<std::pair<std::string, std::string>> settings;
   std::vector<DynamicsScene> variants;
+  /// perturb (top level only): the key its variants change and each variant's value (JSON).
+  std::string perturb_key;
+  std::vector<std::string> perturb_values;
 
   /// The speeds of the material: uniaxial stress (bar) and uniaxial strain (dilatational).
   double bar_speed() const;

@@ -17,6 +17,10 @@ beside it, then renamed), printing its path:
                          velocity against their centre's x, and their mass-fraction CDF.
   plots/fragment_cdf_<mesh>_L<level>.png  per mesh and level of a fragmentation study: the
                          fragment mass-fraction CDFs of all its realizations in one plot.
+  plots/fragments_by_variant.png  for the folder of a fragmentation study with variants (one
+                         subfolder each): the fragment count (mean, standard deviation and every
+                         run) and the largest fragment's mass fraction against the one scene key
+                         the variants vary (log axes over a decade or more).
   plots/perturbation_hamming.png  for the folder of a `perturb` study (perturbation.csv): each
                          variant's Hamming distance to perturb-0 against the step, log axis
                          (zero distances are not drawn; the report lists them).
@@ -24,6 +28,7 @@ A run without a history is left out (one line on stderr); the exit code is alway
 Only the Python standard library, numpy and matplotlib (Agg) are used.
 """
 import csv
+import json
 import os
 import sys
 
@@ -167,8 +172,68 @@ def plot_perturbation(outdir, dpi):
     save_atomically(fig, os.path.join(outdir, "plots", "perturbation_hamming.png"), dpi)
 
 
+def read_variants(outdir):
+    """[(label, settings, rows of results.csv)] of the fragmentation subfolders of outdir."""
+    variants = []
+    for name in sorted(os.listdir(outdir)):
+        summary = os.path.join(outdir, name, "summary.json")
+        if not os.path.isfile(summary):
+            continue
+        with open(summary) as f:
+            s = json.load(f)
+        if s.get("study") == "fragmentation":
+            variants.append((name, s.get("settings", {}), read_runs(os.path.join(outdir, name))))
+    return variants
+
+
+def varied_key(variants):
+    """The one numeric setting whose value differs between the variants (None otherwise). The
+    time.* settings are left out: when a scene does not set them they follow from the others."""
+    keys = [k for k in variants[0][1]
+            if not k.startswith("time.") and len({str(v[1].get(k)) for v in variants}) > 1]
+    numeric = [k for k in keys if all(np.isfinite(number(str(v[1].get(k)))) for v in variants)]
+    return numeric[0] if len(numeric) == 1 else None
+
+
+def plot_variants(outdir, variants, dpi):
+    """Fragment count and largest fragment against the key the variants vary."""
+    key = varied_key(variants)
+    variants.sort(key=lambda v: number(str(v[1].get(key))) if key else v[0])
+    x = np.array([number(str(v[1].get(key))) if key else i for i, v in enumerate(variants)])
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, column, label in ((axes[0], "fragments", "fragments"),
+                              (axes[1], "max_fragment_mass_fraction", "largest fragment / mass")):
+        values = [np.array([number(r[column]) for r in v[2]]) for v in variants]
+        for xi, v in zip(x, values):
+            ax.plot(np.full(v.size, xi), v, ".", color="0.7")
+        means = np.array([v.mean() for v in values])
+        spread = np.array([v.std(ddof=1) if v.size > 1 else 0.0 for v in values])
+        ax.errorbar(x, means, yerr=spread, fmt="o-", capsize=3, label="mean and sd")
+        if key and x.min() > 0 and x.max() >= 10 * x.min():
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+        ax.set_xlabel(key or "variant")
+        if not key:
+            ax.set_xticks(x, [v[0] for v in variants])
+        ax.set_ylabel(label)
+        light_grid(ax)
+    axes[0].legend(fontsize=8)
+    runs = sum(len(v[2]) for v in variants)
+    fig.suptitle(f"{len(variants)} variants, {runs} runs")
+    fig.tight_layout()
+    os.makedirs(os.path.join(outdir, "plots"), exist_ok=True)
+    save_atomically(fig, os.path.join(outdir, "plots", "fragments_by_variant.png"), dpi)
+
+
 def main(argv):
     args = outdir_arguments(__doc__, argv)
+    variants = read_variants(args.outdir)
+    if len(variants) >= 2:
+        try:
+            plot_variants(args.outdir, variants, args.dpi)
+        except Exception as e:
+            plt.close("all")
+            skip("the plot across variants", f"{type(e).__name__}: {e}")
     if os.path.exists(os.path.join(args.outdir, "perturbation.csv")):
         try:
             plot_perturbation(args.outdir, args.dpi)
@@ -178,7 +243,8 @@ def main(argv):
         return 0
     runs = [r for r in read_runs(args.outdir) if r.get("id")]
     if not runs:
-        skip("every figure", f"no runs in {os.path.join(args.outdir, 'results.csv')}")
+        if not variants:
+            skip("every figure", f"no runs in {os.path.join(args.outdir, 'results.csv')}")
         return 0
     for run in runs:
         try:

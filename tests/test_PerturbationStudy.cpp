@@ -6,7 +6,9 @@
 //   - on the stretched strip (200 quads, rate 1e5 /s), a repeated reference value gives distance 0
 //     after every step (identical inputs, identical crack states), and a rate 2 % higher gives a
 //     crack state that differs at some step; perturbation.csv has one row per step at which
-//     either run cracked.
+//     either run cracked;
+//   - `vorodg run` on such a scene writes the report and both plots (the Hamming distance, and
+//     the fragment count against the varied key).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -16,6 +18,7 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
+#include "support/RunVorodg.hpp"
 #include "verification/dynamics/DynamicsRun.hpp"
 #include "verification/dynamics/PerturbationReport.hpp"
 
@@ -23,6 +26,7 @@ namespace vorodg {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace vorodg::testing;
 
 std::string strip(const std::string& extra, const std::string& study = "fragmentation") {
   return "{\"study\": \"" + study + R"(", "name": "sensitivity", "problem": "strip-expansion",
@@ -88,6 +92,24 @@ TEST(PerturbationStudy, IdenticalInputsGiveIdenticalCracks) {
   EXPECT_GT(largest["perturb-2"], 0);
   EXPECT_TRUE(fs::exists(out / "perturbation.md"));
   fs::remove_all(out);
+}
+
+TEST(PerturbationStudy, RunWritesTheReportAndPlots) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("vorodg_perturb_cli_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path scene = dir / "sensitivity.json", out = dir / "out";
+  std::ofstream(scene) << strip(R"("perturb": {"key": "strain_rate", "values": [1e5, 1.02e5]})");
+  const RunResult r =
+      run_program(VORODG_EXE, {"run", scene.string(), "-o", out.string(), "--quiet"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "perturb-1" / "results.csv"));
+  EXPECT_TRUE(fs::exists(out / "perturbation.csv"));
+  EXPECT_TRUE(fs::exists(out / "perturbation.md"));
+  EXPECT_TRUE(fs::exists(out / "plots" / "perturbation_hamming.png")) << r.err;
+  EXPECT_TRUE(fs::exists(out / "plots" / "fragments_by_variant.png")) << r.err;
+  fs::remove_all(dir);
 }
 
 }  // namespace

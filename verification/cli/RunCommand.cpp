@@ -111,10 +111,9 @@ int run_dynamics(const fs::path& path, const StudyOptions& options, bool no_plot
     runs += r.records.size();
     if (!no_plots) draw_dynamics_plots(out);
   }
-  if (!scene.perturb_key.empty() && incomplete == 0) {
-    write_perturbation_report(scene, options.out);
-    if (!no_plots) draw_dynamics_plots(options.out);
-  }
+  if (!scene.perturb_key.empty() && incomplete == 0) write_perturbation_report(scene, options.out);
+  if (scene.fragmentation && scene.variants.size() >= 2 && !no_plots)
+    draw_dynamics_plots(options.out);  // across the variants (and the perturbation plot)
   std::cout << "\n" << scene.name << ": " << runs << " runs, " << clock.seconds() << " s\n";
   if (incomplete > 0) {
     std::cerr << "vorodg: " << incomplete << " dynamics runs are incomplete (see report.md)\n";

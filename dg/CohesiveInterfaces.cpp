@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/quadrature/TriangleRule.hpp"
+#include "dg/SeriesShearLaw.hpp"
 
 namespace vorodg {
 namespace {
@@ -11,6 +12,15 @@ namespace {
 // A separated piece held only by contact would make the tangent singular: open points keep this
 // fraction of eps in the tangent (not in the residual, so converged states are unchanged).
 constexpr double kOpenTangentFraction = 1e-9;
+
+/// The sticking branch's normal traction at zero normal opening under a shear opening g_t: what
+/// the law's envelope leaves beside the shear traction eps g_t, sqrt(sigma_c^2 - (eps g_t /
+/// beta)^2) (see CohesiveInterfaces::cohesive_law).
+double sticking_strength(const CohesiveLaw& law, double eps, double gt) {
+  const double beta = law.parameters().shear_factor, strength = law.parameters().strength;
+  const double r = beta > 0.0 ? eps * gt / beta : 0.0;
+  return std::sqrt(std::max(strength * strength - r * r, 0.0));
+}
 
 }  // namespace
 
@@ -71,33 +81,34 @@ void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, Inte
                                       Eigen::Vector2d& tau, Eigen::Matrix2d& C) const {
   const Eigen::Vector2d d = g - point.offset;
   const bool fresh = !law_.intrinsic() && point.history.max_opening == 0.0;
-  if (fresh && (d[0] < 0.0 || (d[0] == 0.0 && d[1] == 0.0))) {
-    // Inserted but not yet opened: the face sticks, stiff as the coupling, and its normal
-    // traction meets the law's sigma_c continuously where opening starts. At the insertion
-    // point itself (no opening at all) the normal tangent is the law's softening slope: the
-    // face fails because it is being loaded, so Newton should see it open, not stick (with
-    // eps there it predicts no opening, then overshoots onto the softening branch, and cycles).
-    tau = Eigen::Vector2d(law_.parameters().strength + eps * d[0], eps * d[1]);
-    C = eps * Eigen::Matrix2d::Identity();
-    if (d[0] == 0.0) C(0, 0) = law_.envelope_slope(0.0);
+  const double beta = law_.parameters().shear_factor, strength = law_.parameters().strength;
+  const double shear = eps * d[1];  // the sticking branch's shear traction
+  if (fresh && d[0] <= 0.0 && (std::abs(shear) < beta * strength || d[1] == 0.0)) {
+    // Inserted but not yet opened: the face sticks, stiff as the coupling. Its normal traction
+    // at zero opening is what the law's envelope leaves beside the shear,
+    // s = sqrt(sigma_c^2 - (eps g_t / beta)^2), so that where the face opens it meets the law
+    // (in series with the shear spring) in traction and in energy; the potential is
+    // s(g_t) g_n + eps (g_n^2 + g_t^2) / 2. A shear past beta sigma_c slides on the law instead.
+    // At the insertion point itself (no opening at all) the normal tangent is the law's
+    // softening slope: the face fails because it is being loaded, so Newton should see it open,
+    // not stick (with eps there it predicts no opening, then overshoots onto the softening
+    // branch, and cycles).
+    const double sn = sticking_strength(law_, eps, d[1]);
+    const double k = beta > 0.0 ? eps * eps / (beta * beta) : 0.0;  // d(r^2)/d(g_t^2)
+    const double ds = -k * d[1] / sn, dds = -k * strength * strength / (sn * sn * sn);
+    tau = Eigen::Vector2d(sn + eps * d[0], ds * d[0] + shear);
+    C << eps, ds, ds, eps + dds * d[0];
+    if (d[0] == 0.0 && d[1] == 0.0) C(0, 0) = law_.envelope_slope(0.0);
     return;
   }
-  const auto r = law_.respond(d, point.history);
-  tau = r.traction;
-  C = r.tangent;
-  // The secant stiffness of sliding, beta^2 T / delta, grows without bound as the effective
-  // opening vanishes; above eps (the coupling's stiffness) sliding is held by eps instead, in
-  // the traction and in its tangent alike, so the iteration stays consistent.
-  // (An intrinsic law's secant never exceeds K0, so it needs no cap, and keeps its tangent
-  // consistent; the cap leaves out d t_n / d g_t, which slows Newton to a linear rate.)
-  const double beta2 = law_.parameters().shear_factor * law_.parameters().shear_factor;
-  if (r.effective_opening > 0.0 && !law_.intrinsic()) {
-    const double sliding = beta2 * law_.envelope(point.history.max_opening) /
-                           std::max(point.history.max_opening, r.effective_opening);
-    if (sliding > eps) {
-      tau[1] = eps * d[1];
-      C(1, 1) = eps, C(0, 1) = C(1, 0) = 0.0;
-    }
+  if (law_.intrinsic()) {  // its secant never exceeds K0: the law alone
+    const auto r = law_.respond(d, point.history);
+    tau = r.traction;
+    C = r.tangent;
+  } else {  // sliding in series with the coupling's spring eps (dg/SeriesShearLaw)
+    const SeriesShearResponse r = series_shear_respond(law_, eps, d, point.history);
+    tau = r.traction;
+    C = r.tangent;
   }
   if (law_.envelope(point.history.max_opening) == 0.0 && point.history.max_opening > 0.0)
     point.state = PointState::open;  // fully softened: nothing left to carry
@@ -181,8 +192,8 @@ InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
     if (points[p].state == PointState::cohesive && !law_.intrinsic() && dmax == 0.0) {
       // Inserted, not yet opened: the sticking branch's potential (see cohesive_law).
       const double dn = std::min(d[0], 0.0);
-      e.cohesive +=
-          w * (law_.parameters().strength * dn + 0.5 * eps * (dn * dn + d[1] * d[1]) + closure);
+      e.cohesive += w * (sticking_strength(law_, eps, d[1]) * dn +
+                         0.5 * eps * (dn * dn + d[1] * d[1]) + closure);
       continue;
     }
     if (points[p].state == PointState::open) {  // traction-free: only contact stores energy
@@ -190,7 +201,10 @@ InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
       e.dissipated += w * law_.dissipated_energy(dmax);
       continue;
     }
-    e.cohesive += w * (law_.stored_energy(d, points[p].history) + closure);
+    const double stored = law_.intrinsic()
+                              ? law_.stored_energy(d, points[p].history)
+                              : series_shear_stored_energy(law_, eps, d, points[p].history);
+    e.cohesive += w * (stored + closure);
     e.dissipated += w * law_.dissipated_energy(dmax);
   }
   return e;

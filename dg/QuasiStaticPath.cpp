@@ -243,10 +243,14 @@ bool QuasiStaticPath::run(const Observer& observe) {
     }
     int iterations = 0, inserted = 0;
     if (!take_step(state, iterations, inserted)) {
-      if (jumped_ && softened(state) && std::abs(last_.load) <= kFinalSnapLoad * peak_load_) {
-        stop_reason_ = "the last ligament snapped after cmod " + std::to_string(last_.cmod) +
-                       " (load " + std::to_string(std::abs(last_.load) / peak_load_) +
-                       " of the peak): a jump no quasi-static control follows, not booked";
+      if (softened(state) && std::abs(last_.load) <= kFinalSnapLoad * peak_load_) {
+        const std::string after = " after cmod " + std::to_string(last_.cmod) + " (load " +
+                                  std::to_string(std::abs(last_.load) / peak_load_) +
+                                  " of the peak)";
+        stop_reason_ = jumped_ ? "the last ligament snapped" + after +
+                                     ": a jump no quasi-static control follows, not booked"
+                               : "the remnants could not be followed" + after +
+                                     ": a step failed after every cut";
         return true;
       }
       const std::string where = " (stroke " + std::to_string(model_.stroke(state.lambda)) +
@@ -269,8 +273,7 @@ bool QuasiStaticPath::run(const Observer& observe) {
     peak_load_ = std::max(peak_load_, std::abs(p.load));
     if (softened(state) && std::abs(p.load) <= kVanishedLoad * peak_load_) {
       stop_reason_ = "the load vanished at cmod " + std::to_string(p.cmod) + " (" +
-                     std::to_string(std::abs(p.load) / peak_load_) +
-                     " of the peak): the halves hinge about what is left of the ligament";
+                     std::to_string(std::abs(p.load) / peak_load_) + " of the peak)";
       return true;
     }
     if (options_.control == LoadControl::arc_length)  // aim at about five iterations a step

@@ -139,8 +139,9 @@ class QuasiStaticPath {
   /// Once softened, the path ends when the load falls to this fraction of its peak: the halves
   /// then hinge about what is left of the ligament, and further opening measures nothing.
   static constexpr double kVanishedLoad = 1e-4;
-  /// A jump from a state whose load has already fallen to this fraction of its peak is the
-  /// beam's final snap, the end of the test, not a failure (docs/fracture.md).
+  /// A step that jumps or fails from a state whose load has already fallen to this fraction of
+  /// its peak ends the test (the beam's final snap, or remnants no step can follow), not a
+  /// failure (docs/fracture.md).
   static constexpr double kFinalSnapLoad = 1e-2;
   bool jumped_ = false;
   double peak_load_ = 0.0;

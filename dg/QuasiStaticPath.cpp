@@ -111,7 +111,7 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
               std::max(std::abs(target.value), 1e-300);
         break;
       case LoadControl::arc_length:
-        gap = std::abs((out.x - start.x).norm() - target.value) / target.value;
+        gap = std::abs(released(start, out) - target.value) / target.value;
         break;
     }
     // Residual relative to the larger of the strength's force scale and the reactions (whose
@@ -149,19 +149,13 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
       const double denominator = gauge_lambda - gauge_free.dot(b);
       if (denominator == 0.0) return false;
       dl = (target.value - c - gauge_free.dot(a)) / denominator;
-    } else {  // |dx + a - dl b| = s: a quadratic in dl
-      const Eigen::VectorXd v = out.x - start.x + a;
-      const double A = b.squaredNorm(), B = -2.0 * b.dot(v),
-                   C = v.squaredNorm() - target.value * target.value;
-      const double disc = B * B - 4 * A * C;
-      if (!(A > 0.0) || disc < 0.0) return false;
-      const double r[2] = {(-B + std::sqrt(disc)) / (2 * A), (-B - std::sqrt(disc)) / (2 * A)};
-      // The root that keeps going the way the path went (forward in lambda at the start).
-      auto score = [&](double root) {
-        const Eigen::VectorXd dx = v - root * b;
-        return previous_increment_.size() ? dx.dot(previous_increment_) : root;
-      };
-      dl = score(r[0]) >= score(r[1]) ? r[0] : r[1];
+    } else {  // released(start, x + dx, lambda + dl) = s, linearized: dP = t (q.dx + k_rr dl)
+      const double t = model_.setup().thickness, p0 = model_.load(start.force);
+      const Eigen::VectorXd& r = cons.reference();
+      const double k_rr = r.dot(K * r);
+      const double denominator = 0.5 * (p0 - start.lambda * t * (k_rr - q.dot(b)));
+      if (denominator == 0.0) return false;
+      dl = (target.value - released(start, out) + 0.5 * start.lambda * t * q.dot(a)) / denominator;
     }
     const Eigen::VectorXd dx = a - dl * b;
     const double alpha = iterations > 0 ? line_search(start, out, dx, dl, R.norm()) : 1.0;
@@ -197,6 +191,31 @@ double QuasiStaticPath::line_search(const State& start, const State& at, const E
   return alpha;
 }
 
+/// Where the first pre-inserted (intrinsic) point reaches its peak, by scaling the probe: the law
+/// is linear until then, with the effective opening sigma_c / K0 at the peak. The probe's own
+/// lambda if nothing opens (no point is cohesive).
+double QuasiStaticPath::first_peak(const State& probe, double lambda_probe) const {
+  const CohesiveParameters& law = model_.interfaces().law().parameters();
+  const Eigen::VectorXd u = full(probe);
+  double widest = 0.0;
+  for (int p = 0; p < model_.interfaces().num_points(); ++p) {
+    if (probe.points[p].state != PointState::cohesive) continue;
+    const Eigen::Vector2d g = model_.interfaces().opening(u, p) - probe.points[p].offset;
+    widest = std::max(widest, std::hypot(std::max(g[0], 0.0), law.shear_factor * g[1]));
+  }
+  if (!(widest > 0.0) || !(law.initial_stiffness > 0.0)) return lambda_probe;
+  return lambda_probe * (law.strength / law.initial_stiffness) / widest;
+}
+
+/// The energy released from `start` to `at` when every unloading is secant (Clapeyron: the
+/// stored energy is P lambda / 2, P the load conjugate to lambda): the trapezoid of the external
+/// work less the change in stored energy, (P_0 lambda - P lambda_0) / 2. It grows along the path
+/// through snap-back, where neither the stroke nor any displacement norm does (after Gutierrez,
+/// and Verhoosel, Remmers and Gutierrez).
+double QuasiStaticPath::released(const State& start, const State& at) const {
+  return 0.5 * (model_.load(start.force) * at.lambda - model_.load(at.force) * start.lambda);
+}
+
 bool QuasiStaticPath::run(const Observer& observe) {
   State state;
   state.x = Eigen::VectorXd::Zero(model_.num_free_dofs());
@@ -227,12 +246,15 @@ bool QuasiStaticPath::run(const Observer& observe) {
   double U1 = 0.0;
   for (int p : model_.eligible_points(probe.points))
     U1 = std::max(U1, model_.interfaces().utilization(lambda_scale * u1, p));
-  const double lambda_event = U1 > 0.0 && std::isfinite(U1) ? lambda_scale / U1 : lambda_scale;
+  const double lambda_event =
+      U1 > 0.0 && std::isfinite(U1) ? lambda_scale / U1 : first_peak(probe, lambda_probe);
   const bool gauge_silent = std::abs(cmod(probe)) <= 1e-6 * probe.x.lpNorm<Eigen::Infinity>();
   if (options_.control == LoadControl::cmod && gauge_silent) elastic_step_ = 1.5 * lambda_event;
-  const double lambda_span =
-      options_.max_stroke > 0.0 ? options_.max_stroke / model_.stroke(1.0) : 2.0 * lambda_event;
-  arc_ = probe.x.norm() / lambda_probe * lambda_span / options_.steps;
+  // Arc-length: the energy released per step, starting from G x height x thickness (a crack
+  // across the whole body) over the nominal steps.
+  arc_start_ = model_.interfaces().law().parameters().fracture_energy *
+               model_.space().mesh().domain().height() * model_.setup().thickness / options_.steps;
+  arc_ = arc_start_;
   if (options_.control == LoadControl::arc_length) elastic_step_ = 1.5 * lambda_event;
 
   const int limit = 20 * (options_.steps + options_.tail_steps) + 1000;
@@ -276,8 +298,9 @@ bool QuasiStaticPath::run(const Observer& observe) {
                      std::to_string(std::abs(p.load) / peak_load_) + " of the peak)";
       return true;
     }
-    if (options_.control == LoadControl::arc_length)  // aim at about five iterations a step
-      arc_ *= std::clamp(std::sqrt(5.0 / std::max(iterations, 1)), 0.5, 2.0);
+    if (options_.control == LoadControl::arc_length)  // about five iterations, never past ds_0
+      arc_ = std::min(arc_ * std::clamp(std::sqrt(5.0 / std::max(iterations, 1)), 0.5, 2.0),
+                      arc_start_);
   }
   return true;
 }

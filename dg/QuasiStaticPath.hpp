@@ -6,7 +6,9 @@
 //   displacement: lambda = lambda_0 + d lambda (snap-back cannot be followed);
 //   cmod:         the crack mouth opening gauge . u = cmod_0 + d cmod (indirect displacement
 //                 control: the opening grows monotonically through snap-back);
-//   arc-length:   |x - x_0| = ds over the free DOFs (cylindrical, Crisfield's root choice).
+//   arc-length:   the energy released over the step, (P_0 lambda - P lambda_0) / 2 with P the
+//                 load conjugate to lambda, is ds (dissipation-based arc-length; it grows through
+//                 snap-back, where a displacement norm turns back).
 // The extra equation is solved by bordering: two back-solves with one factor per iteration. The
 // symbolic factorization is kept for the run (the pattern never changes); the factor is LL^T
 // until the tangent is indefinite, LDL^T after. A step that fails is halved, up to max_cuts
@@ -116,6 +118,8 @@ class QuasiStaticPath {
   double staged_target(double at, double main_end, double fraction) const;
   Target step_target(const State& start, LoadControl control, double fraction) const;
   double max_utilization(const State& s, const Eigen::VectorXd& u) const;
+  double released(const State& start, const State& at) const;
+  double first_peak(const State& probe, double lambda_probe) const;
   Eigen::VectorXd full(const State& s) const { return model_.constraints().expand(s.x, s.lambda); }
   double cmod(const State& s) const { return model_.mouth_gauge().dot(full(s)); }
   bool softened(const State& s) const;
@@ -157,8 +161,8 @@ class QuasiStaticPath {
   int factorizations_ = 0;
   double force_scale_ = 1.0;
   double elastic_step_ = 0.0;  // stroke per step before anything softens (cmod, arc-length)
-  double arc_ = 0.0;           // arc-length: the current step's radius
-  Eigen::VectorXd previous_increment_;  // arc-length: the last step's dx, for the root choice
+  double arc_ = 0.0;           // arc-length: the energy the current step releases
+  double arc_start_ = 0.0;     // and its first (and largest) value
   std::string failure_;
 };
 

@@ -212,7 +212,6 @@ bool QuasiStaticPath::take_step(State& state, int& iterations, int& inserted) {
       jumped_ = true;
       return false;
     }
-    if (control == LoadControl::arc_length) previous_increment_ = trial.x - state.x;
     state = std::move(trial);
     return true;
   }

@@ -114,7 +114,7 @@ class QuasiStaticPath {
   static constexpr int kSettlingRounds = 100;
   static constexpr int kSettlingIterations = 60;
   static constexpr int kProbeIterations = 60;
-  static constexpr double kHalvingHelps = 0.5;  // a kink: under 1/2; a jump: about 1
+  static constexpr double kHalvingHelps = 0.6;  // a kink: under 1/2; a jump: about 1
   double staged_target(double at, double main_end, double fraction) const;
   Target step_target(const State& start, LoadControl control, double fraction) const;
   double max_utilization(const State& s, const Eigen::VectorXd& u) const;

@@ -195,9 +195,11 @@ bool QuasiStaticPath::take_step(State& state, int& iterations, int& inserted) {
     // The step is kept if, after it, the balance holds within balance_tolerance of the work, or
     // the step does not widen the gap. Else it is halved, down to 1/64, while halving helps. A
     // kink at a fraction theta of the step costs the trapezoids theta (1 - theta) of the step
-    // squared; halving leaves at most half of it (at theta -> 0) and usually far less, and a
-    // smooth stretch an eighth. A widening that halving leaves above kHalvingHelps of itself does
-    // not depend on the step (a jump), and cutting further would only multiply the solves.
+    // squared; halving leaves (1 - 2 theta) / (2 (1 - theta)) of it, just under half at theta ->
+    // 0 (a face opening right after an insertion), so the bound sits above half with a margin
+    // for round-off; a smooth stretch leaves an eighth. A widening that halving leaves above
+    // kHalvingHelps of itself does not depend on the step (a jump), and cutting further would
+    // only multiply the solves.
     const BalanceDrift drift = balance_drift(trial);
     const bool kept = drift.relative_gap <= options_.balance_tolerance || drift.widening <= 0.0;
     const bool halving_helped =

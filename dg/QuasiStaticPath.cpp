@@ -195,16 +195,18 @@ double QuasiStaticPath::line_search(const State& start, const State& at, const E
 /// is linear until then, with the effective opening sigma_c / K0 at the peak. The probe's own
 /// lambda if nothing opens (no point is cohesive).
 double QuasiStaticPath::first_peak(const State& probe, double lambda_probe) const {
-  const CohesiveParameters& law = model_.interfaces().law().parameters();
+  const CohesiveLaw& law = model_.interfaces().law();
   const Eigen::VectorXd u = full(probe);
   double widest = 0.0;
   for (int p = 0; p < model_.interfaces().num_points(); ++p) {
     if (probe.points[p].state != PointState::cohesive) continue;
+    CohesiveLaw::State scratch = probe.points[p].history;  // the law's effective opening only
     const Eigen::Vector2d g = model_.interfaces().opening(u, p) - probe.points[p].offset;
-    widest = std::max(widest, std::hypot(std::max(g[0], 0.0), law.shear_factor * g[1]));
+    widest = std::max(widest, law.respond(g, scratch).effective_opening);
   }
-  if (!(widest > 0.0) || !(law.initial_stiffness > 0.0)) return lambda_probe;
-  return lambda_probe * (law.strength / law.initial_stiffness) / widest;
+  const CohesiveParameters& c = law.parameters();
+  if (!(widest > 0.0) || !(c.initial_stiffness > 0.0)) return lambda_probe;
+  return lambda_probe * (c.strength / c.initial_stiffness) / widest;
 }
 
 /// The energy released from `start` to `at` when every unloading is secant (Clapeyron: the
@@ -252,8 +254,7 @@ bool QuasiStaticPath::run(const Observer& observe) {
   if (options_.control == LoadControl::cmod && gauge_silent) elastic_step_ = 1.5 * lambda_event;
   // Arc-length: the energy released per step, starting from G x height x thickness (a crack
   // across the whole body) over the nominal steps.
-  arc_start_ = model_.interfaces().law().parameters().fracture_energy *
-               model_.space().mesh().domain().height() * model_.setup().thickness / options_.steps;
+  arc_start_ = crack_energy() / options_.steps;
   arc_ = arc_start_;
   if (options_.control == LoadControl::arc_length) elastic_step_ = 1.5 * lambda_event;
 

@@ -140,6 +140,8 @@ class QuasiStaticPath {
   /// work done): the run fails there rather than book the jump.
   static constexpr double kJumpLimit = 2e-3;
   double jump_scale(const State& trial) const;
+  /// G x height x thickness: the fracture energy of a crack across the whole body.
+  double crack_energy() const;
   /// Once softened, the path ends when the load falls to this fraction of its peak: the halves
   /// then hinge about what is left of the ligament, and further opening measures nothing.
   static constexpr double kVanishedLoad = 1e-4;

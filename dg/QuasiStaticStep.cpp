@@ -130,9 +130,12 @@ QuasiStaticPath::BalanceDrift QuasiStaticPath::balance_drift(const State& trial)
 /// of a crack across the whole body (G x height x thickness), so that a small slip early on,
 /// when little work has been done, is not mistaken for one.
 double QuasiStaticPath::jump_scale(const State& trial) const {
-  const double crack = model_.interfaces().law().parameters().fracture_energy *
-                       model_.space().mesh().domain().height() * model_.setup().thickness;
-  return std::max(point_of(trial, 0, last_).external_work, crack);
+  return std::max(point_of(trial, 0, last_).external_work, crack_energy());
+}
+
+double QuasiStaticPath::crack_energy() const {
+  return model_.interfaces().law().parameters().fracture_energy *
+         model_.space().mesh().domain().height() * model_.setup().thickness;
 }
 
 /// How far past the next insertion a trial state is: the largest Mohr-Coulomb utilization of the

@@ -50,10 +50,29 @@ CohesiveForces::Face CohesiveForces::make_face(const PolygonMesh& mesh, int e) {
   return f;
 }
 
+void CohesiveForces::set_edge_strength(std::vector<double> factor) {
+  if (!faces_.empty())
+    throw InputError("cohesive forces: the strength may vary only before any edge cracks");
+  if (!factor.empty() && static_cast<int>(factor.size()) != mesh_.num_edges())
+    throw InputError("cohesive forces: " + std::to_string(factor.size()) +
+                     " edge strengths, expected " + std::to_string(mesh_.num_edges()));
+  edge_strength_ = std::move(factor);
+}
+
 void CohesiveForces::add_edge(int e) {
   Face f = make_face(mesh_, e);
   if (slot_[e] >= 0)
     throw InputError("cohesive forces: edge " + std::to_string(e) + " is already cracked");
+  if (!edge_strength_.empty()) {
+    CohesiveParameters p = law_.parameters();
+    p.strength *= edge_strength_[e];
+    try {
+      face_laws_.emplace_back(p);
+    } catch (const InputError& error) {
+      throw InputError("cohesive forces: edge " + std::to_string(e) + " with strength x " +
+                       std::to_string(edge_strength_[e]) + ": " + error.what());
+    }
+  }
   slot_[e] = static_cast<int>(faces_.size());
   faces_.push_back(f);
   edges_.push_back(e);
@@ -109,7 +128,9 @@ void CohesiveForces::bind(const SplitDofMap& dofs) {
 void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
   const SegmentRule& rule = gauss2_segment();
   double work = 0.0;
-  for (Face& face : faces_) {
+  for (std::size_t slot = 0; slot < faces_.size(); ++slot) {
+    Face& face = faces_[slot];
+    const CohesiveLaw& law = law_of(slot);
     Eigen::Vector2d jump[2];  // u_cell1 - u_cell0 at v0 and v1
     for (int j = 0; j < 2; ++j)
       jump[j] = u.segment<2>(2 * face.node1[j]) - u.segment<2>(2 * face.node0[j]);
@@ -118,7 +139,7 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
       QuadraturePoint& p = face.points[q];
       const Eigen::Vector2d d(g.dot(face.n), g.dot(face.t));
-      Eigen::Vector2d tau = law_.respond(d, p.history).traction;
+      Eigen::Vector2d tau = law.respond(d, p.history).traction;
       if (d[0] < 0.0) tau[0] += closure_stiffness() * d[0];  // overclosure
       work -= 0.5 * w * (p.traction + tau).dot(d - p.opening);
       p.opening = d;
@@ -138,11 +159,12 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
 double CohesiveForces::dissipated_energy(int e) const {
   if (slot_[e] < 0) return 0.0;
   const Face& face = faces_[slot_[e]];
+  const CohesiveLaw& law = law_of(slot_[e]);
   const SegmentRule& rule = gauss2_segment();
   double sum = 0.0;
   for (int q = 0; q < 2; ++q)
     sum +=
-        rule.weights[q] * face.length * law_.dissipated_energy(face.points[q].history.max_opening);
+        rule.weights[q] * face.length * law.dissipated_energy(face.points[q].history.max_opening);
   return sum;
 }
 
@@ -160,11 +182,13 @@ double CohesiveForces::closure_energy(const Eigen::Vector2d& opening) const {
 double CohesiveForces::stored_energy() const {
   const SegmentRule& rule = gauss2_segment();
   double sum = 0.0;
-  for (const Face& face : faces_)
-    for (int q = 0; q < 2; ++q)
+  for (std::size_t slot = 0; slot < faces_.size(); ++slot)
+    for (int q = 0; q < 2; ++q) {
+      const Face& face = faces_[slot];
       sum += rule.weights[q] * face.length *
-             (law_.stored_energy(face.points[q].opening, face.points[q].history) +
+             (law_of(slot).stored_energy(face.points[q].opening, face.points[q].history) +
               closure_energy(face.points[q].opening));
+    }
   return sum;
 }
 
@@ -178,8 +202,9 @@ Eigen::VectorXd CohesiveForces::max_openings() const {
 bool CohesiveForces::broken(int e) const {
   if (slot_[e] < 0) return false;
   const Face& face = faces_[slot_[e]];
-  return face.points[0].history.max_opening >= law_.critical_opening() &&
-         face.points[1].history.max_opening >= law_.critical_opening();
+  const double critical = law_of(slot_[e]).critical_opening();
+  return face.points[0].history.max_opening >= critical &&
+         face.points[1].history.max_opening >= critical;
 }
 
 int CohesiveForces::num_broken() const {

@@ -48,6 +48,10 @@ class CohesiveForces {
   /// (initial_stiffness > 0).
   CohesiveForces(const PolygonMesh& mesh, const CohesiveLaw& law);
 
+  /// A strength varying from edge to edge (MaterialVariation::edge_strength): edge e's law has
+  /// strength factor[e] x sigma_c, with G and K0 unchanged. Call before the first add_edge.
+  /// Throws InputError naming the edge where the scaled law is invalid, or if edges cracked.
+  void set_edge_strength(std::vector<double> factor);
   /// Interior edge e cracks: its points start from zero opening. Throws InputError for a
   /// boundary edge or an edge already cracked.
   void add_edge(int e);
@@ -114,8 +118,14 @@ class CohesiveForces {
     return kClosureFraction * law_.parameters().initial_stiffness;
   }
   static constexpr double kClosureFraction = 0.1;
+  /// The law of face `slot` (the shared one unless the strength varies).
+  const CohesiveLaw& law_of(std::size_t slot) const {
+    return face_laws_.empty() ? law_ : face_laws_[slot];
+  }
   const PolygonMesh& mesh_;
   const CohesiveLaw& law_;
+  std::vector<double> edge_strength_;   // per edge; empty: uniform
+  std::vector<CohesiveLaw> face_laws_;  // per face when the strength varies
   std::vector<Face> faces_;
   std::vector<int> edges_;
   std::vector<int> slot_;  // per mesh edge: its face, or -1

@@ -28,6 +28,14 @@ CrackInsertion::CrackInsertion(const PolygonMesh& mesh, const ElasticityIntegrat
     tangent_.push_back((mesh.vertex(e.v1) - mesh.vertex(e.v0)).normalized());
 }
 
+void CrackInsertion::vary(const MaterialVariation& variation) {
+  if (variation.empty()) return;
+  for (int c = 0; c < mesh_.num_cells(); ++c)
+    for (std::size_t i = offset_[c]; i < offset_[c + 1]; ++i)
+      stress_operator_[i] *= variation.stiffness[c];
+  edge_strength_ = variation.edge_strength(mesh_);
+}
+
 Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
                                                int threads) const {
   const int cells = mesh_.num_cells();
@@ -63,7 +71,9 @@ std::vector<CrackInsertion::Failure> CrackInsertion::failing_edges(const SplitDo
   for (int e = 0; e < mesh_.num_edges(); ++e) {
     if (!eligible_[e] || cracked[e] || mesh_.edge(e).cell1 < 0) continue;
     const Eigen::Vector2d t = traction(sigma, e);
-    if (criterion_.utilization(t[0], t[1]) >= 1.0) failing.push_back({e, t});
+    // c and sigma_o scaled by f: the utilization of t / f under the scene's criterion.
+    const double f = edge_strength_.empty() ? 1.0 : edge_strength_[e];
+    if (criterion_.utilization(t[0] / f, t[1] / f) >= 1.0) failing.push_back({e, t});
   }
   return failing;
 }

@@ -18,6 +18,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/material/MohrCoulomb.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/MaterialVariation.hpp"
 
 namespace vorodg {
 
@@ -27,6 +28,11 @@ class CrackInsertion {
   /// Throws InputError if the mask's size is not the mesh's number of edges.
   CrackInsertion(const PolygonMesh& mesh, const ElasticityIntegrator& integrator,
                  const MohrCoulomb& criterion, std::vector<char> eligible, int threads = 1);
+
+  /// A material varying from cell to cell: each cell's stresses scale with its stiffness factor,
+  /// and each edge's criterion with its strength factor (its cohesion and cutoff). Call before
+  /// the first check.
+  void vary(const MaterialVariation& variation);
 
   /// Mean stress (Voigt xx, yy, xy) of every cell at node displacements u of `dofs`.
   Eigen::Matrix3Xd cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
@@ -53,6 +59,7 @@ class CrackInsertion {
   std::vector<Eigen::Vector2d> tangent_;  // per edge, v0 -> v1, unit
   MohrCoulomb criterion_;
   std::vector<char> eligible_;
+  std::vector<double> edge_strength_;  // per edge; empty: uniform
 };
 
 }  // namespace vorodg

@@ -15,8 +15,16 @@ beside it, then renamed), printing its path:
                          and, when contacts occur, the number of contacts (right axis).
   plots/<id>_fragments.png  per fragmentation run (fragments/<id>.csv): the fragments' x
                          velocity against their centre's x, and their mass-fraction CDF.
+  plots/<id>_snapshots.png  per run with snapshots (snapshots/<id>.csv, outputs.snapshots): the
+                         deformed mesh at each snapshot time, cells coloured by fragment
+                         (cracks show as gaps where nodes split); reads .vtu with meshio.
   plots/fragment_cdf_<mesh>_L<level>.png  per mesh and level of a fragmentation study: the
                          fragment mass-fraction CDFs of all its realizations in one plot.
+  plots/largest_fragment_vs_h.png  for a fragmentation study over two or more mesh levels: the
+                         largest fragment's mass fraction of every complete run against h_avg,
+                         with each level's mean and standard deviation (left), and each
+                         level's pooled fragment mass-fraction CDF (right; the report's KS
+                         distances compare these).
   plots/fragments_by_variant.png  for the folder of a fragmentation study with variants (one
                          subfolder each): the fragment count (mean, standard deviation and every
                          run) and the largest fragment's mass fraction against the one scene key
@@ -24,8 +32,10 @@ beside it, then renamed), printing its path:
   plots/perturbation_hamming.png  for the folder of a `perturb` study (perturbation.csv): each
                          variant's Hamming distance to perturb-0 against the step, log axis
                          (zero distances are not drawn; the report lists them).
+  plots/perturbation_fragment_cdf.png  for the same folder: the fragment mass-fraction CDF of
+                         every perturbed run in one plot, perturb-0's in black (Figure 16).
 A run without a history is left out (one line on stderr); the exit code is always 0.
-Only the Python standard library, numpy and matplotlib (Agg) are used.
+Only the Python standard library, numpy, matplotlib (Agg) and, for snapshots, meshio are used.
 """
 import csv
 import json
@@ -123,6 +133,36 @@ def plot_fragments(outdir, run, table, dpi):
     save_atomically(fig, os.path.join(outdir, "plots", run["id"] + "_fragments.png"), dpi)
 
 
+def plot_snapshots(outdir, run, dpi):
+    """The deformed mesh at each snapshot, cells coloured by fragment."""
+    table = read_table(os.path.join(outdir, "snapshots", run["id"] + ".csv"))
+    if not table:
+        return
+    import meshio  # only here: a slow import that runs without snapshots do not need
+    from matplotlib.collections import PolyCollection
+    frames = [meshio.read(os.path.join(outdir, "vtu", f)) for f in table["file"]]
+    lo = np.min([m.points[:, :2].min(axis=0) for m in frames], axis=0)
+    hi = np.max([m.points[:, :2].max(axis=0) for m in frames], axis=0)
+    wide = (hi - lo)[0] > (hi - lo)[1]
+    n = len(frames)
+    fig, axes = plt.subplots(n if wide else 1, 1 if wide else n, squeeze=False,
+                             figsize=(10, 1.2 + 10 * n * (hi - lo)[1] / (hi - lo)[0]) if wide
+                             else (1.2 + 2.6 * n, 7), layout="constrained")
+    for ax, mesh, t in zip(axes.ravel(), frames, table["time"]):
+        points = mesh.points[:, :2]
+        polygons = [points[c] for block in mesh.cells for c in block.data]
+        fragment = np.concatenate([np.ravel(v) for v in mesh.cell_data.get("fragment", [])])
+        cells = PolyCollection(polygons, edgecolor="k", linewidth=0.1, cmap="tab20")
+        if fragment.size == len(polygons):
+            cells.set_array(fragment % 20)
+        ax.add_collection(cells)
+        ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), aspect="equal",
+               title=f"t = {1e3 * number(t):.3g} ms")
+        ax.tick_params(labelsize=7)
+    fig.suptitle(f"{run['id']}: cells coloured by fragment", fontsize=10)
+    save_atomically(fig, os.path.join(outdir, "plots", run["id"] + "_snapshots.png"), dpi)
+
+
 def plot_level_cdfs(outdir, runs, dpi):
     groups = {}
     for run in runs:
@@ -143,6 +183,33 @@ def plot_level_cdfs(outdir, runs, dpi):
             ax.legend(fontsize=8)
         save_atomically(fig, os.path.join(outdir, "plots", f"fragment_cdf_{mesh}_L{level}.png"),
                         dpi)
+
+
+def plot_levels(outdir, runs, dpi):
+    """The largest fragment against h_avg, and the pooled CDF of each level."""
+    levels = {}
+    for run in runs:
+        table = read_fragments(outdir, run)
+        if table and run.get("complete") == "1":
+            levels.setdefault((run.get("mesh", "?"), run.get("level", "?")), []).append(
+                (number(run["h_avg"]), number(run["max_fragment_mass_fraction"]), table))
+    if len(levels) < 2:
+        return
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
+    for (mesh, level), members in sorted(levels.items(), key=lambda kv: -kv[1][0][0]):
+        h, largest = np.array([m[0] for m in members]), np.array([m[1] for m in members])
+        dots = left.plot(h, largest, "o", alpha=0.35, markersize=4)[0]
+        left.errorbar(h.mean(), largest.mean(), yerr=largest.std(ddof=1) if h.size > 1 else 0,
+                      fmt="s", color=dots.get_color(), capsize=4, label=f"{mesh} L{level}")
+        pooled = np.sort(np.concatenate([mass_cdf(m[2])[0] for m in members]))
+        right.step(pooled, np.arange(1, pooled.size + 1) / pooled.size, where="post",
+                   color=dots.get_color(), label=f"{mesh} L{level} ({len(members)} runs)")
+    left.set(xscale="log", xlabel="h_avg (m)", ylabel="largest fragment / total mass")
+    right.set(xscale="log", xlabel="fragment mass / total mass", ylabel="cumulative fraction")
+    for ax in (left, right):
+        light_grid(ax)
+        ax.legend(fontsize=8)
+    save_atomically(fig, os.path.join(outdir, "plots", "largest_fragment_vs_h.png"), dpi)
 
 
 def plot_perturbation(outdir, dpi):
@@ -170,6 +237,35 @@ def plot_perturbation(outdir, dpi):
         ax.legend(fontsize=7)
     os.makedirs(os.path.join(outdir, "plots"), exist_ok=True)
     save_atomically(fig, os.path.join(outdir, "plots", "perturbation_hamming.png"), dpi)
+
+
+def plot_perturbation_cdfs(outdir, dpi):
+    """Figure 16: the fragment mass-fraction CDF of every variant's runs in one plot, the
+    reference (perturb-0) in black."""
+    fig, ax = plt.subplots(figsize=(7, 4.5), layout="constrained")
+    drawn = 0
+    for name in sorted(os.listdir(outdir), key=lambda n: (len(n), n)):
+        if not name.startswith("perturb-"):
+            continue
+        for run in read_runs(os.path.join(outdir, name)):
+            table = read_fragments(os.path.join(outdir, name), run)
+            if not table:
+                continue
+            fraction, cdf = mass_cdf(table)
+            reference = name == "perturb-0"
+            ax.step(fraction, cdf, where="post", color="black" if reference else None,
+                    linewidth=2.0 if reference else 0.9, alpha=1.0 if reference else 0.7,
+                    label=f"{name} ({run['id']})", zorder=3 if reference else 2)
+            drawn += 1
+    if not drawn:
+        plt.close(fig)
+        return
+    ax.set(xscale="log", xlabel="fragment mass / total mass", ylabel="cumulative fraction",
+           title=f"fragment mass CDFs of {drawn} runs (perturb-0 in black)")
+    light_grid(ax)
+    if drawn <= 16:
+        ax.legend(fontsize=7)
+    save_atomically(fig, os.path.join(outdir, "plots", "perturbation_fragment_cdf.png"), dpi)
 
 
 def read_variants(outdir):
@@ -235,11 +331,13 @@ def main(argv):
             plt.close("all")
             skip("the plot across variants", f"{type(e).__name__}: {e}")
     if os.path.exists(os.path.join(args.outdir, "perturbation.csv")):
-        try:
-            plot_perturbation(args.outdir, args.dpi)
-        except Exception as e:
-            plt.close("all")
-            skip("the perturbation plot", f"{type(e).__name__}: {e}")
+        for what, plot in (("the perturbation plot", plot_perturbation),
+                           ("the CDFs across the perturbed runs", plot_perturbation_cdfs)):
+            try:
+                plot(args.outdir, args.dpi)
+            except Exception as e:
+                plt.close("all")
+                skip(what, f"{type(e).__name__}: {e}")
         return 0
     runs = [r for r in read_runs(args.outdir) if r.get("id")]
     if not runs:
@@ -252,6 +350,11 @@ def main(argv):
         except Exception as e:  # one bad figure must not cost the others
             plt.close("all")
             skip(f"the energy plot of {run['id']}", f"{type(e).__name__}: {e}")
+        try:
+            plot_snapshots(args.outdir, run, args.dpi)
+        except Exception as e:
+            plt.close("all")
+            skip(f"the snapshots of {run['id']}", f"{type(e).__name__}: {e}")
         table = read_fragments(args.outdir, run)
         if table:
             try:
@@ -259,11 +362,13 @@ def main(argv):
             except Exception as e:
                 plt.close("all")
                 skip(f"the fragment plot of {run['id']}", f"{type(e).__name__}: {e}")
-    try:
-        plot_level_cdfs(args.outdir, runs, args.dpi)
-    except Exception as e:
-        plt.close("all")
-        skip("the fragment CDFs", f"{type(e).__name__}: {e}")
+    for what, plot in (("the fragment CDFs", plot_level_cdfs),
+                       ("the plot over the levels", plot_levels)):
+        try:
+            plot(args.outdir, runs, args.dpi)
+        except Exception as e:
+            plt.close("all")
+            skip(what, f"{type(e).__name__}: {e}")
     return 0
 
 

@@ -1,8 +1,10 @@
 // Sensitivity studies (`perturb` in a fragmentation scene; verification/dynamics/
 // PerturbationReport, docs/fragmentation.md):
 //   - the reader turns perturb {key, values} into one variant per value, labelled perturb-<i>,
-//     with the key set by name or JSON pointer and nothing else changed; it refuses perturb beside
-//     variants, fewer than two values, a key that is not a string, and a dynamics study;
+//     with the key set by name or JSON pointer and nothing else changed; perturb {variation,
+//     seeds} into the uniform material and one variant per seed with the variation set; it refuses
+//     perturb beside variants, fewer than two values, a key that is not a string, and a dynamics
+//     study;
 //   - on the stretched strip (200 quads, rate 1e5 /s), a repeated reference value gives distance 0
 //     after every step (identical inputs, identical crack states), and a rate 2 % higher gives a
 //     crack state that differs at some step; perturbation.csv has one row per step at which
@@ -52,6 +54,21 @@ TEST(PerturbationStudy, PerturbBecomesOneVariantPerValue) {
   EXPECT_EQ(p.variants[1].cohesive.strength, 3.3e8);
   EXPECT_EQ(p.variants[1].cohesive.fracture_energy, 100.0);
   EXPECT_EQ(p.variants[1].strain_rate, 1e5);
+}
+
+TEST(PerturbationStudy, MaterialVariationBesideTheUniformMaterial) {
+  const DynamicsScene s =
+      parse_dynamics_scene(strip(R"("perturb": {"variation": 0.05, "seeds": [4, 9]})"), "test");
+  ASSERT_EQ(s.variants.size(), 3u);
+  EXPECT_EQ(s.variants[0].variation, 0.0);  // the reference: the uniform material
+  EXPECT_EQ(s.variants[1].variation, 0.05);
+  EXPECT_EQ(s.variants[1].variation_seed, 4u);
+  EXPECT_EQ(s.variants[2].variation_seed, 9u);
+  EXPECT_EQ(s.perturb_key, "/material/variation_seed");
+  EXPECT_EQ(s.perturb_values.front(), "\"uniform\"");
+  EXPECT_THROW(parse_dynamics_scene(strip(R"("perturb": {"variation": 0.05})"), "t"), InputError);
+  EXPECT_THROW(parse_dynamics_scene(strip(R"("perturb": {"variation": 1.5, "seeds": [1]})"), "t"),
+               InputError);
 }
 
 TEST(PerturbationStudy, RefusesWhatItCannotCompare) {

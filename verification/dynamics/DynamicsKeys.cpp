@@ -40,12 +40,14 @@ std::vector<DynamicsKey> make_keys() {
           "the study kind: fragmentation adds crack insertion and the cohesive keys "
           "(docs/fragmentation.md)"),
       key("problem", "string", "wave-bar",
-          "wave-bar, free-body, wall-impact, two-blocks; strip-expansion (fragmentation)",
+          "wave-bar, free-body, wall-impact, two-blocks, column-impact, projectile-impact; "
+          "strip-expansion (fragmentation)",
           "what is thrown, struck or stretched (docs/dynamics.md, \"Problems\")"),
       key("domain", "[x0, y0, x1, y1]",
           per_problem + "wave-bar [0, 0, 1, 0.05], free-body [0, 0, 1, 1], wall-impact "
                         "[0, 0, 0.4, 0.1], two-blocks [0, 0, 0.2, 0.1], strip-expansion "
-                        "[0, 0, 0.002, 1e-05]",
+                        "[0, 0, 0.002, 1e-05], column-impact [0, 0, 0.3, 1.83], "
+                        "projectile-impact [0, 0, 4, 0.3]",
           "x0 < x1, y0 < y1", "the (first) body, in m"),
       bounded("strain_rate", "number", "1e5", "> 0",
               "strip-expansion: the initial velocity is strain_rate (x - x_mid) along x, 1/s", 0.0,
@@ -68,7 +70,8 @@ std::vector<DynamicsKey> make_keys() {
       bounded("criterion.tensile_cutoff", "number", "cohesive.strength", "> 0",
               "fragmentation: the tensile cutoff sigma_o, Pa", 0.0, true),
       key("initial_velocity", "[vx, vy]",
-          per_problem + "wave-bar [0, 0], free-body [1, 0.5], wall-impact and two-blocks [1, 0]",
+          per_problem + "wave-bar, strip-expansion and projectile-impact [0, 0], free-body "
+                        "[1, 0.5], wall-impact and two-blocks [1, 0], column-impact [0, -7.6]",
           "finite", "uniform velocity of the (first) body at t = 0, m/s"),
       bounded("angular_velocity", "number", per_problem + "free-body 1, else 0", "finite",
               "spin of the (first) body about its centre of mass at t = 0, rad/s (small "
@@ -96,14 +99,37 @@ std::vector<DynamicsKey> make_keys() {
       key("material.plane", "string", "stress", "stress or strain", "plane stress or strain"),
       bounded("material.density", "number", "7800", "> 0", "mass density, kg/m^3", 0.0, true),
       key("material.mean_dilation", "bool", "false", "true or false", "B-bar strain operator"),
+      bounded("material.variation", "number", "0", "0 <= x < 1",
+              "per-cell factors uniform in [1 - x, 1 + x] on E and, independently, on the strength "
+              "(an edge takes the mean of its cells'; docs/impact.md)",
+              0.0, false, 1.0, true),
+      bounded("material.variation_seed", "integer", "1", ">= 0",
+              "the seed of the per-cell factors (each cell its own stream)", 0.0, false),
       bounded("damping", "number", "0", ">= 0",
               "mass-proportional damping c, 1/s (the force -c M v)", 0.0, false),
+      key("gravity", "[gx, gy]", per_problem + "column-impact [0, -9.81], else [0, 0]", "finite",
+          "body force per unit mass, m/s^2"),
+      bounded("obliquity", "number", "45", "0 <= obliquity < 90",
+              "column-impact: the tilt of the plane the column falls on, degrees (the plane "
+              "passes through the column's bottom-left corner, its normal [sin, cos] of the tilt)",
+              0.0, false, 90.0, true),
+      bounded("projectile.speed", "number", "20", "> 0",
+              "projectile-impact: the rigid projectile's constant downward speed, m/s", 0.0, true),
+      bounded("projectile.width", "number", "0.1", "> 0",
+              "projectile-impact: the width of its flat nose, m (the top vertices under it move "
+              "down at its speed from t = 0, free to slide)",
+              0.0, true),
+      bounded("projectile.position", "number", "the middle of the top side", "nose within the top",
+              "projectile-impact: x of the nose's centre, m", {}, false),
       key("wall.point", "[x, y]",
-          per_problem + "wall-impact: the body's leading point along its velocity; a `wall` "
-                        "in another problem: the middle of the right side; else no wall",
+          per_problem + "wall-impact: the body's leading point along its velocity; "
+                        "column-impact: the column's bottom-left corner; a `wall` in another "
+                        "problem: the middle of the right side; else no wall",
           "no point of a body behind the wall at t = 0",
           "a point of a fixed rigid plane (any problem may have one)"),
-      key("wall.normal", "[nx, ny]", "wall-impact: against the initial velocity; else [-1, 0]",
+      key("wall.normal", "[nx, ny]",
+          "wall-impact: against the initial velocity; column-impact: [sin, cos] of the "
+          "obliquity; else [-1, 0]",
           "not [0, 0]", "the plane's normal, pointing into free space (normalized)"),
       key("contact.enabled", "bool", "true", "true or false",
           "contact between the surface cells of every body (the wall acts whatever this says)"),
@@ -117,7 +143,8 @@ std::vector<DynamicsKey> make_keys() {
                             "plus 3 x 2 L / c_bar (L: the extent along the wall's normal; the "
                             "longer side of either block); free-body 1000 steps; "
                             "strip-expansion 20 x the time to reach the cutoff, "
-                            "sigma_o / (E strain_rate)",
+                            "sigma_o / (E strain_rate); column-impact 0.3; projectile-impact "
+                            "3e-3",
               "> 0", "the end time, s (not with time.steps)", 0.0, true),
       bounded("time.steps", "integer", "none (time.end)", ">= 1",
               "the number of steps, instead of an end time (not with time.end)", 1.0, false),
@@ -133,6 +160,9 @@ std::vector<DynamicsKey> make_keys() {
               1.0, false),
       key("outputs.vtu", "bool", "true", "true or false",
           "write the .pvd series of the deformed mesh"),
+      key("outputs.snapshots", "list of numbers", "none", "ascending times >= 0",
+          "extra frames at the first step at or after each time, s: vtu/<run>/snapshot_<i>.vtu, "
+          "listed in snapshots/<run>.csv and drawn in plots/<run>_snapshots.png"),
       key("meshes[]", "list (required)", "", "as in every study (docs/scenes.md)",
           "mesh families with sizes, realizations, seed"),
       key("variants[]", "objects with a label", "none", "",

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "dynamics/CellRotation.hpp"
+
 namespace vorodg {
 namespace {
 
@@ -19,10 +21,8 @@ DynamicsProbe::DynamicsProbe(const DynamicsScene& scene, const BodiesMesh& bodie
   total_mass_ = mass.sum();
   for (int i = 0; i < mass.size(); ++i)
     momentum_scale_ += mass[i] * run.velocity().segment<2>(2 * i).norm();
-  // Only what no wall, no prescribed velocity and no (mass-proportional) damping acts on keeps
-  // its momentum.
-  conserves_momentum_ =
-      !scene.wall && scene.problem != DynamicsProblem::wave_bar && scene.damping == 0.0;
+  // Only what no wall, prescribed velocity, gravity or damping acts on keeps its momentum.
+  conserves_momentum_ = !scene.external_momentum();
   if (conserves_momentum_) m_.momentum_drift = 0.0;
   if (conserves_momentum_ && scene.problem == DynamicsProblem::free_body)
     m_.angular_momentum_drift = 0.0;
@@ -88,6 +88,13 @@ void DynamicsProbe::observe_contact() {
   if (std::isnan(m_.contact_start)) m_.contact_start = run_.time();
   m_.contact_end = run_.time();
   ++m_.contact_steps;
+}
+
+void DynamicsProbe::observe_rotation() {
+  const double largest = max_cell_rotation(bodies_.mesh, run_.dofs(), run_.displacement());
+  m_.max_rotation = std::max(m_.max_rotation, largest);
+  if (std::isnan(m_.large_rotation_time) && largest > kLargeRotation)
+    m_.large_rotation_time = run_.time();
 }
 
 void DynamicsProbe::observe() {

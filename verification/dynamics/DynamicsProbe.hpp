@@ -32,7 +32,14 @@ struct DynamicsMeasures {
   double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
   double cracked_edges = NAN, broken_edges = NAN;
   double law_balance_error = NAN;  // max over steps, with the law's closed-form energies
+  // small rotations (CellRotation), sampled at the output steps
+  double max_rotation = 0.0;         // the largest cell's mean rotation, rad
+  double large_rotation_time = NAN;  // first output time at which it passed kLargeRotation
 };
+
+/// A cell rotated further than this (rad) is drawn, and meets contact, stretched by more than
+/// theta^2 / 2 = 0.5 %: past it the small-strain model no longer describes where fragments are.
+constexpr double kLargeRotation = 0.1;
 
 class DynamicsProbe {
  public:
@@ -41,6 +48,8 @@ class DynamicsProbe {
 
   /// After every step: books the step's record and contact reports.
   void observe();
+  /// At the output steps: the cells' rotations against kLargeRotation.
+  void observe_rotation();
   /// After the last step: the rebound, the contact time.
   const DynamicsMeasures& finish();
   const DynamicsMeasures& measures() const { return m_; }

@@ -4,9 +4,11 @@
 #include <numbers>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
+#include "core/io/AtomicFile.hpp"
 #include "core/io/PvdCollection.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "core/util/Errors.hpp"
@@ -17,9 +19,11 @@
 #include "dynamics/ContactForces.hpp"
 #include "dynamics/GlobalTimeStep.hpp"
 #include "dynamics/LumpedMass.hpp"
+#include "dynamics/MaterialVariation.hpp"
 #include "dynamics/StableTimeStep.hpp"
 #include "verification/dynamics/DynamicsHistory.hpp"
 #include "verification/dynamics/FragmentationRun.hpp"
+#include "verification/model/SettingsSchema.hpp"
 
 namespace fs = std::filesystem;
 
@@ -66,7 +70,25 @@ Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& b
   return v;
 }
 
+/// projectile-impact: the top vertices under the projectile's nose move down at its speed.
+void add_projectile(const DynamicsProjectile& p, const PolygonMesh& mesh, CentralDifference& run) {
+  std::vector<int> under;
+  for (int v : mesh.side_vertices(Side::top))
+    if (std::abs(mesh.vertex(v).x() - p.position) <= 0.5 * p.width) under.push_back(v);
+  if (under.empty())
+    throw InputError("projectile: no vertex of the top side within its nose [" +
+                     fmt(p.position - 0.5 * p.width) + ", " + fmt(p.position + 0.5 * p.width) +
+                     "]: expected a nose wider than the cells");
+  const double speed = p.speed;
+  run.add_velocity_boundary({under, 1, [speed](double) { return -speed; }});
+}
+
 void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, CentralDifference& run) {
+  if (scene.gravity != Eigen::Vector2d::Zero()) {
+    const Eigen::Vector2d g = scene.gravity;
+    run.set_body_force([g](double) { return g; });
+  }
+  if (scene.projectile) add_projectile(*scene.projectile, mesh, run);
   if (scene.problem != DynamicsProblem::wave_bar) return;
   const double amplitude = scene.pulse_amplitude, duration = scene.pulse_duration;
   run.add_velocity_boundary(
@@ -78,11 +100,12 @@ void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, Central
 
 /// One frame of the series: the mesh at x = X + u with one point per node of the current DOF map
 /// (so a crack shows as a gap where its nodes split), the displacement and velocity at the
-/// points, each cell's mean stress and von Mises stress, and any extra cell fields.
+/// points, each cell's mean stress (times its stiffness factor, if the material varies) and von
+/// Mises stress, and any extra cell fields.
 void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDifference& run,
                  const ElasticityIntegrator& integrator,
                  const ElasticityIntegrator::MeanStrainOperators& strain,
-                 std::vector<VtuField> cell_fields) {
+                 const std::vector<double>& stiffness, std::vector<VtuField> cell_fields) {
   const int nodes = run.dofs().num_nodes();
   std::vector<Point> moved(nodes);
   VtuField displacement{"displacement", 2, {}}, velocity{"velocity", 2, {}};
@@ -104,7 +127,8 @@ void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDif
     Eigen::VectorXd uc(2 * mesh.cell_size(c));
     for (int k = 0; k < mesh.cell_size(c); ++k)
       uc.segment<2>(2 * k) = run.displacement().segment<2>(2 * run.dofs().node(c, k));
-    const Eigen::Vector3d s = m.D() * (strain.block(c) * uc);
+    const Eigen::Vector3d s =
+        (stiffness.empty() ? 1.0 : stiffness[c]) * (m.D() * (strain.block(c) * uc));
     const double sz = m.model() == PlaneModel::strain ? m.nu() * (s[0] + s[1]) : 0.0;
     stress.values.insert(stress.values.end(), {s[0], s[1], s[2]});
     von_mises.values.push_back(
@@ -161,6 +185,13 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
                                         scene.mean_dilation);
   const auto strain = integrator.all_mean_strain_operators(1);
   auto matrices = integrator.all_cell_matrices(1);
+  // A material varying from cell to cell (each mesh realization its own field).
+  const MaterialVariation variation = MaterialVariation::uniform(
+      mesh.num_cells(), scene.variation, derive_seed(scene.variation_seed, id.seed));
+  if (!variation.empty())
+    for (int c = 0; c < mesh.num_cells(); ++c)
+      for (std::size_t i = matrices.offset[c]; i < matrices.offset[c + 1]; ++i)
+        matrices.data[i] *= variation.stiffness[c];
   const StableTimeStep bound(mesh, matrices, mass);
   const SplitDofMap dofs = SplitDofMap::continuous(mesh);
   InternalForce force(mesh, std::move(matrices));
@@ -183,7 +214,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   if (scene.wall) contact.add_plane(scene.wall->point, scene.wall->normal);
   if (scene.contact || scene.wall) run.set_contact(contact);
   add_boundaries(scene, mesh, run);
-  if (cracks) cracks->attach(run, integrator, scene.contact ? &contact : nullptr, 1);
+  if (cracks) cracks->attach(run, integrator, variation, scene.contact ? &contact : nullptr, 1);
   run.initialize(Eigen::VectorXd::Zero(run.dofs().num_dofs()),
                  initial_velocity(scene, bodies, run));
 
@@ -191,14 +222,30 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   fs::create_directories(out / "history");
   DynamicsHistory history(out / "history" / (name + ".csv"));
   PvdCollection series(out / "vtu" / (name + ".pvd"));
-  auto frame = [&] {
-    if (!scene.vtu) return;
-    const fs::path file =
-        out / "vtu" / name / ("step_" + std::to_string(run.step_count()) + ".vtu");
+  auto write = [&](const std::string& stem) {
+    const fs::path file = out / "vtu" / name / (stem + ".vtu");
     fs::create_directories(file.parent_path());
-    write_frame(file, mesh, run, integrator, strain,
+    write_frame(file, mesh, run, integrator, strain, variation.stiffness,
                 cracks ? cracks->cell_fields(mass) : std::vector<VtuField>{});
-    series.add(run.time(), file);
+    return file;
+  };
+  auto frame = [&] {
+    if (scene.vtu) series.add(run.time(), write("step_" + std::to_string(run.step_count())));
+  };
+  // The snapshots: a frame at the first step at or after each requested time, and their list.
+  std::size_t next_snapshot = 0;
+  std::ostringstream snapshots;
+  snapshots << "snapshot,requested_time,time,step,file\n";
+  auto snapshot = [&] {
+    for (; next_snapshot < scene.snapshots.size() &&
+           run.time() >= scene.snapshots[next_snapshot] - 1e-9 * r.dt;
+         ++next_snapshot) {
+      const std::string stem = "snapshot_" + std::to_string(next_snapshot);
+      write(stem);
+      snapshots << next_snapshot << ',' << exact_text(scene.snapshots[next_snapshot]) << ','
+                << exact_text(run.time()) << ',' << run.step_count() << ',' << name << '/' << stem
+                << ".vtu\n";
+    }
   };
   const ContactForces* reports = run.contact();
   DynamicsProbe probe(scene, bodies, run);
@@ -206,6 +253,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   if (cracks) cracks->observe(run.record());
   history.add(run.record(), reports);
   frame();
+  snapshot();
   const double setup = clock.seconds();
   try {
     for (long s = 1; s <= r.steps; ++s) {
@@ -221,9 +269,11 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
       const bool last = s == r.steps || unstable;
       if (s % scene.history_every == 0 || last) history.add(step, reports);
       if (s % scene.output_every == 0 || last) {
+        probe.observe_rotation();
         history.flush();
         if (!unstable) frame();  // a blown-up state has no picture worth drawing
       }
+      if (!unstable) snapshot();
       if (unstable)
         throw NumericalError("unstable at step " + std::to_string(s) + " (t = " + fmt(step.time) +
                              " s): the energy grew to " + fmt(energy / step.input_energy(), 3) +
@@ -235,6 +285,10 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
     r.failure = e.what();
   }
   history.flush();
+  if (!scene.snapshots.empty()) {
+    fs::create_directories(out / "snapshots");
+    write_file_atomically(out / "snapshots" / (name + ".csv"), snapshots.str());
+  }
   r.steps = run.step_count();  // those done: fewer if the run stopped
   r.end_time = run.time();
   r.measures = probe.finish();

@@ -25,7 +25,9 @@ const std::map<std::string, DynamicsProblem>& problem_names() {
       {"free-body", DynamicsProblem::free_body},
       {"wall-impact", DynamicsProblem::wall_impact},
       {"two-blocks", DynamicsProblem::two_blocks},
-      {"strip-expansion", DynamicsProblem::strip_expansion}};
+      {"strip-expansion", DynamicsProblem::strip_expansion},
+      {"column-impact", DynamicsProblem::column_impact},
+      {"projectile-impact", DynamicsProblem::projectile_impact}};
   return names;
 }
 
@@ -39,17 +41,22 @@ void DynamicsSceneReader::read_bodies() {
   const DynamicsProblem p = s_.problem;
   const bool bar = p == DynamicsProblem::wave_bar, free = p == DynamicsProblem::free_body;
   const bool strip = p == DynamicsProblem::strip_expansion;
+  const bool column = p == DynamicsProblem::column_impact;
+  const bool beam = p == DynamicsProblem::projectile_impact;
   DynamicsBody a;
   a.domain =
       rectangle(top_, "domain",
-                bar     ? Rectangle(0, 0, 1, 0.05)
-                : free  ? Rectangle(0, 0, 1, 1)
-                : strip ? Rectangle(0, 0, 0.002, 1e-5)
-                        : Rectangle(0, 0, p == DynamicsProblem::wall_impact ? 0.4 : 0.2, 0.1));
+                bar      ? Rectangle(0, 0, 1, 0.05)
+                : free   ? Rectangle(0, 0, 1, 1)
+                : strip  ? Rectangle(0, 0, 0.002, 1e-5)
+                : column ? Rectangle(0, 0, 0.3, 1.83)
+                : beam   ? Rectangle(0, 0, 4.0, 0.3)
+                         : Rectangle(0, 0, p == DynamicsProblem::wall_impact ? 0.4 : 0.2, 0.1));
   a.velocity = point(top_, "initial_velocity",
-                     bar || strip ? Point(0, 0)
-                     : free       ? Point(1, 0.5)
-                                  : Point(1, 0));
+                     bar || strip || beam ? Point(0, 0)
+                     : free               ? Point(1, 0.5)
+                     : column             ? Point(0, -7.6)
+                                          : Point(1, 0));
   a.angular_velocity = number(top_, "angular_velocity", free ? 1.0 : 0.0);
   s_.bodies = {a};
   refuse_unless(p == DynamicsProblem::two_blocks, "second_block");
@@ -79,6 +86,8 @@ void DynamicsSceneReader::read_material() {
                                                                       : PlaneModel::strain;
   s_.density = number(m, "material.density");
   s_.mean_dilation = flag(m, "material.mean_dilation");
+  s_.variation = number(m, "material.variation");
+  s_.variation_seed = static_cast<std::uint64_t>(integer(m, "material.variation_seed"));
   m.finish();
   s_.damping = number(top_, "damping");
 }
@@ -98,7 +107,7 @@ void DynamicsSceneReader::read_wave_bar() {
 }
 
 void DynamicsSceneReader::read_wall() {
-  const bool impact = s_.problem == DynamicsProblem::wall_impact;
+  const bool impact = s_.hits_wall();
   if (!impact && !top_.has("wall")) {
     note("wall.point", "none");
     note("wall.normal", "none");
@@ -113,9 +122,10 @@ void DynamicsSceneReader::read_wall() {
   const Point centre = 0.5 * (body.domain.lo() + body.domain.hi());
   const double reach = 0.5 * (std::abs(ahead.x()) * body.domain.width() +
                               std::abs(ahead.y()) * body.domain.height());
+  const bool column = s_.problem == DynamicsProblem::column_impact;
   DynamicsWall w;
-  w.point = point(o, "wall.point", centre + reach * ahead);
-  w.normal = point(o, "wall.normal", -ahead);
+  w.point = point(o, "wall.point", column ? column_wall().point : Point(centre + reach * ahead));
+  w.normal = point(o, "wall.normal", column ? column_wall().normal : Point(-ahead));
   if (w.normal.norm() == 0.0) o.fail_value("normal", "expected not [0, 0]");
   w.normal.normalize();
   o.finish();
@@ -157,6 +167,8 @@ void DynamicsSceneReader::default_end() {
       s_.end = gap / -a.velocity.dot(n) + 3.0 * 2.0 * length / s_.bar_speed();
       break;
     }
+    case DynamicsProblem::column_impact: s_.end = 0.3; break;
+    case DynamicsProblem::projectile_impact: s_.end = 3e-3; break;
     case DynamicsProblem::strip_expansion:
       s_.end = 20.0 * s_.criterion.tensile_cutoff / (s_.E * s_.strain_rate);
       break;
@@ -201,6 +213,16 @@ void DynamicsSceneReader::read_time() {
   t.finish();
   SceneObject o = object("outputs");
   s_.vtu = flag(o, "outputs.vtu");
+  s_.snapshots = o.numbers("snapshots", {});
+  std::string listed;
+  for (std::size_t i = 0; i < s_.snapshots.size(); ++i) {
+    const double t = s_.snapshots[i];
+    if (!std::isfinite(t) || t < 0.0 || (i > 0 && !(t > s_.snapshots[i - 1])))
+      o.fail_value("snapshots", "expected ascending times >= 0, found " + fmt(t) + " at [" +
+                                    std::to_string(i) + "]");
+    listed += (listed.empty() ? "" : ", ") + exact_text(t);
+  }
+  note("outputs.snapshots", listed.empty() ? "none" : "[" + listed + "]");
   o.finish();
 }
 
@@ -209,8 +231,9 @@ DynamicsScene DynamicsSceneReader::read() {
   s_.description = top_.text("description", "");
   s_.label = top_.text("label", "");
   s_.fragmentation = word(top_, "study", " dynamics fragmentation ") == "fragmentation";
-  const std::string problem =
-      word(top_, "problem", " wave-bar free-body wall-impact two-blocks strip-expansion ");
+  const std::string problem = word(top_, "problem",
+                                   " wave-bar free-body wall-impact two-blocks strip-expansion "
+                                   "column-impact projectile-impact ");
   s_.problem = problem_names().at(problem);
   if (s_.problem == DynamicsProblem::strip_expansion && !s_.fragmentation)
     top_.fail_value("problem", "'strip-expansion': expected study fragmentation");
@@ -221,6 +244,7 @@ DynamicsScene DynamicsSceneReader::read() {
     throw InputError("scene " + source_ + ": material: " + e.what());
   }
   read_bodies();
+  read_impact();
   read_wave_bar();
   read_wall();
   read_contact();
@@ -262,44 +286,14 @@ double DynamicsScene::wave_speed() const {
   return rollers ? dilatational_speed() : bar_speed();
 }
 
-namespace {
-
-/// `perturb: {key, values}`: one variant per value, labelled perturb-<i>, with the key (a
-/// top-level name, or a JSON pointer such as /wall/point) set to the value.
-DynamicsScene perturbed_scene(const json& root, const std::string& source, bool force) {
-  const json& p = root["perturb"];
-  const std::string where = "scene " + source + ": perturb";
-  if (root.contains("variants")) throw InputError(where + ": expected either perturb or variants");
-  if (!p.is_object() || !p.contains("key") || !p["key"].is_string() || !p.contains("values") ||
-      !p["values"].is_array() || p["values"].size() < 2 || p.size() != 2)
-    throw InputError(where + ": expected {\"key\": name, \"values\": [two or more values]}");
-  const std::string key = p["key"];
-  if (key.empty() || key == "/") throw InputError(where + ".key: expected a scene key");
-  json::json_pointer pointer;
-  try {
-    pointer = json::json_pointer(key.front() == '/' ? key : "/" + key);
-  } catch (const json::exception&) {
-    throw InputError(where + ".key: '" + key + "' is not a key or a JSON pointer");
-  }
-  json base = root;
-  base.erase("perturb");
-  base["variants"] = json::array();
-  for (std::size_t i = 0; i < p["values"].size(); ++i) {
-    json variant = base;
-    variant.erase("variants");
-    variant[pointer] = p["values"][i];  // the whole scene, so that merging it changes only this
-    variant["label"] = "perturb-" + std::to_string(i);
-    base["variants"].push_back(variant);
-  }
-  DynamicsScene top = parse_dynamics_scene(base.dump(), source, force);
-  if (!top.fragmentation)
-    throw InputError(where + ": expected study fragmentation (it compares crack states)");
-  top.perturb_key = key;
-  for (const json& v : p["values"]) top.perturb_values.push_back(v.dump());
-  return top;
+bool DynamicsScene::hits_wall() const {
+  return problem == DynamicsProblem::wall_impact || problem == DynamicsProblem::column_impact;
 }
 
-}  // namespace
+bool DynamicsScene::external_momentum() const {
+  return wall || problem == DynamicsProblem::wave_bar || projectile || damping != 0.0 ||
+         gravity != Eigen::Vector2d::Zero();
+}
 
 DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source, bool force) {
   json root;

@@ -3,7 +3,9 @@
 // (a wave bar, a free body, a block thrown at a rigid wall, two blocks thrown at each other), one
 // material, contact, the time stepping, over mesh families with levels and realizations. A
 // `fragmentation` study is the same with cracks (docs/fragmentation.md): the cohesive law and the
-// insertion criterion, and the strip-expansion problem.
+// insertion criterion, and the strip-expansion problem. The impact problems of the report (a
+// column falling onto an inclined rigid plane, a beam struck by a rigid projectile) may run in
+// either study kind (their keys in ImpactKeys.cpp).
 // `variants` (objects merged over the top-level keys, each with a `label`) runs several such
 // studies side by side, each into its own subfolder.
 //
@@ -26,7 +28,15 @@
 
 namespace vorodg {
 
-enum class DynamicsProblem { wave_bar, free_body, wall_impact, two_blocks, strip_expansion };
+enum class DynamicsProblem {
+  wave_bar,
+  free_body,
+  wall_impact,
+  two_blocks,
+  strip_expansion,
+  column_impact,
+  projectile_impact
+};
 enum class StepEstimate { lanczos, cells };
 
 std::string dynamics_problem_name(DynamicsProblem p);
@@ -45,6 +55,15 @@ struct DynamicsWall {
   Point normal = Point(-1.0, 0.0);  // into free space; normalized by the reader
 };
 
+/// A rigid flat-nosed projectile of infinite mass moving down at constant speed onto the top side
+/// of the body: the vertical velocity of the top vertices under its nose is prescribed from t = 0
+/// (bonded in the normal direction, free to slide).
+struct DynamicsProjectile {
+  double speed = 0.0;     // m/s, downwards
+  double width = 0.0;     // of the nose, m
+  double position = 0.0;  // x of the nose's centre, m
+};
+
 struct DynamicsScene {
   std::filesystem::path path;
   std::string name, description, label;  // label: the variant's (empty at the top level)
@@ -53,12 +72,17 @@ struct DynamicsScene {
   double E = 0.0, nu = 0.0, density = 0.0;
   PlaneModel plane = PlaneModel::stress;
   bool mean_dilation = false;
-  double damping = 0.0;  // mass-proportional, 1/s
+  double variation = 0.0;            // per-cell factors on E and strength in [1 - x, 1 + x]
+  std::uint64_t variation_seed = 1;  // their stream (MaterialVariation)
+  double damping = 0.0;              // mass-proportional, 1/s
+  Eigen::Vector2d gravity = Eigen::Vector2d::Zero();  // body force per unit mass, m/s^2
   // wave-bar
   bool rollers = false;  // sides: rollers on the long sides (uniaxial strain)
   double pulse_amplitude = 0.0, pulse_duration = 0.0;
   // contact
   std::optional<DynamicsWall> wall;
+  double obliquity = 0.0;  // column-impact: the plane's tilt, degrees
+  std::optional<DynamicsProjectile> projectile;
   bool contact = true;  // surface-to-surface contact
   PenaltyParameters penalty;
   // time
@@ -68,6 +92,7 @@ struct DynamicsScene {
   StepEstimate estimate = StepEstimate::lanczos;
   int output_every = 0, history_every = 0;
   bool vtu = true;
+  std::vector<double> snapshots;  // times of extra frames (ascending), s
   // fragmentation (study kind): crack insertion with the cohesive law on every interior edge
   bool fragmentation = false;
   double strain_rate = 0.0;  // strip-expansion
@@ -87,6 +112,11 @@ struct DynamicsScene {
   double dilatational_speed() const;
   /// wave-bar: the speed the pulse should travel at (dilatational with rollers, else bar).
   double wave_speed() const;
+  /// True where the body hits a fixed rigid plane (wall-impact, column-impact).
+  bool hits_wall() const;
+  /// True where something outside the bodies changes their momentum: a wall, a prescribed
+  /// velocity, gravity or damping.
+  bool external_momentum() const;
 };
 
 /// Reads a dynamics scene from its JSON text; throws InputError naming the key. `force` allows

@@ -2,7 +2,7 @@
 // The reader behind parse_dynamics_scene (internal to verification/dynamics): the scene's keys
 // with defaults and ranges from the key table (DynamicsKeys), every value used noted for the
 // echo. The primitives are in DynamicsSceneReader.cpp, the problems' keys in DynamicsScene.cpp,
-// the fragmentation keys in FragmentationKeys.cpp.
+// the fragmentation keys in FragmentationKeys.cpp, the impact problems' in ImpactKeys.cpp.
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -16,6 +16,9 @@ namespace vorodg {
 std::string vector_text(std::initializer_list<double> v);
 std::string point_text(const Point& p);
 std::string rect_text(const Rectangle& r);
+
+/// A scene with `perturb` as variants perturb-<i> (PerturbedScene.cpp).
+DynamicsScene perturbed_scene(const nlohmann::json& root, const std::string& source, bool force);
 
 /// Reads one scene's keys: defaults and ranges from the key table, every value used noted.
 class DynamicsSceneReader {
@@ -52,6 +55,11 @@ class DynamicsSceneReader {
   /// fragmentation: the cohesive law, the criterion and the strip's strain rate
   /// (FragmentationKeys.cpp).
   void read_fracture();
+  /// gravity, and the column's and the projectile's keys (ImpactKeys.cpp).
+  void read_impact();
+  /// The plane a column-impact column falls on: through its bottom-left corner, tilted by the
+  /// obliquity (ImpactKeys.cpp).
+  DynamicsWall column_wall() const;
   /// Rough length of a run when time.end is not given (docs: the key table).
   void default_end();
   void refuse_unless(bool applies, const std::string& key);

@@ -11,6 +11,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
 #include "verification/dynamics/DynamicsHistory.hpp"
+#include "verification/dynamics/FragmentLevels.hpp"
 #include "verification/study/ResumableRuns.hpp"
 
 namespace fs = std::filesystem;
@@ -44,7 +45,9 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"dissipated_energy", &M::dissipated_energy},
       {"cracked_edges", &M::cracked_edges},
       {"broken_edges", &M::broken_edges},
-      {"law_balance_error", &M::law_balance_error}};
+      {"law_balance_error", &M::law_balance_error},
+      {"max_rotation", &M::max_rotation},
+      {"large_rotation_time", &M::large_rotation_time}};
   return fields;
 }
 
@@ -174,12 +177,17 @@ std::string report_md(const DynamicsScene& scene, const DynamicsStudyResult& res
   for (const DynamicsRecord& r : result.records) md << report_row(scene, r);
   if (scene.fragmentation) {
     md << "\n| run | fragments | broken / cracked edges | largest fragment (mass fraction) | "
-          "dissipated [J/m] | balance with the law's energies |\n|---|---|---|---|---|---|\n";
+          "dissipated [J/m] | balance with the law's energies | largest cell rotation [rad] "
+          "(first past "
+       << fmt(kLargeRotation) << " at [s]) |\n|---|---|---|---|---|---|---|\n";
     for (const DynamicsRecord& r : result.records) {
       const DynamicsMeasures& m = r.measures;
       md << "| " << r.run.id() << " | " << fmt(m.fragments) << " | " << fmt(m.broken_edges) << " / "
          << fmt(m.cracked_edges) << " | " << fmt(m.max_fragment_mass_fraction, 3) << " | "
-         << fmt(m.dissipated_energy, 4) << " | " << fmt(m.law_balance_error, 2) << " |\n";
+         << fmt(m.dissipated_energy, 4) << " | " << fmt(m.law_balance_error, 2) << " | "
+         << fmt(m.max_rotation, 3)
+         << (std::isfinite(m.large_rotation_time) ? " (" + fmt(m.large_rotation_time, 3) + ")" : "")
+         << " |\n";
     }
   }
   md << "\nEnergy balance error: |balance - balance(0)| over the input energy at the end "
@@ -215,7 +223,13 @@ void write_reports(const DynamicsScene& scene, const DynamicsStudyResult& result
   for (const auto& [name, field] : measure_fields())
     if (const double w = worst(result.records, field); std::isfinite(w)) summary["worst"][name] = w;
   write_file_atomically(out / "summary.json", summary.dump(1) + "\n");
-  write_file_atomically(out / "report.md", report_md(scene, result));
+  std::string md = report_md(scene, result);
+  if (scene.fragmentation) {
+    const std::vector<FragmentLevel> levels = fragment_levels(result.records, out);
+    write_file_atomically(out / "levels.csv", fragment_levels_csv(levels));
+    md += fragment_levels_md(levels);
+  }
+  write_file_atomically(out / "report.md", md);
 }
 
 }  // namespace

@@ -45,10 +45,13 @@ double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMa
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,
-                              ContactForces* contact, int threads) {
+                              const MaterialVariation& variation, ContactForces* contact,
+                              int threads) {
   run_ = &run;
   cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
+  cohesive_->set_edge_strength(variation.edge_strength(mesh_));
   insertion_ = std::make_unique<CrackInsertion>(mesh_, integrator, criterion_, eligible_, threads);
+  insertion_->vary(variation);
   fracture_ = std::make_unique<DynamicFracture>(mesh_, run, *cohesive_, *insertion_, contact);
 }
 

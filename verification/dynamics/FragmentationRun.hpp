@@ -9,6 +9,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "dynamics/DynamicFracture.hpp"
+#include "dynamics/MaterialVariation.hpp"
 #include "dynamics/StableTimeStep.hpp"
 #include "verification/dynamics/DynamicsProbe.hpp"
 #include "verification/dynamics/DynamicsScene.hpp"
@@ -24,10 +25,11 @@ class FragmentationRun {
   /// safety x the critical step of the cells and the faces' springs together, for every crack
   /// pattern the run can reach.
   double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety) const;
-  /// Starts cracking on `run` (before its initialize()); with `contact` (the run's), cracks
+  /// Starts cracking on `run` (before its initialize()) of a material varying as `variation`
+  /// (empty: uniform; the run's cell matrices already scaled); with `contact` (the run's), cracks
   /// expose new surface to it.
   void attach(CentralDifference& run, const ElasticityIntegrator& integrator,
-              ContactForces* contact, int threads);
+              const MaterialVariation& variation, ContactForces* contact, int threads);
   /// One step of the run with the insertion check after it.
   void step();
   /// After a step: the balance with the law's closed forms (kinetic + elastic + dissipated +

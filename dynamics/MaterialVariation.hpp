@@ -1,0 +1,29 @@
+#pragma once
+// Per-cell variation of the material (the report's Figure 16): each cell's Young's modulus and
+// strength are the scene's times factors drawn uniformly from [1 - x, 1 + x], independently, from
+// a seed. The stiffness factor scales the cell's stiffness matrix and its stresses (nu and the
+// density are unchanged); the strength factor of an edge, the mean of its two cells', scales the
+// criterion's cohesion and cutoff there and the cohesive law's strength (G and K0 unchanged).
+// Each cell draws from its own stream (derive_seed(seed, cell)), so the factors do not depend on
+// the order anything runs in.
+#include <cstdint>
+#include <vector>
+
+#include "core/mesh/PolygonMesh.hpp"
+
+namespace vorodg {
+
+struct MaterialVariation {
+  std::vector<double> stiffness;  // per cell; empty: uniform material
+  std::vector<double> strength;   // per cell; empty: uniform material
+
+  /// Factors uniform in [1 - amount, 1 + amount]; amount = 0 gives the uniform material (empty).
+  /// Throws InputError unless 0 <= amount < 1.
+  static MaterialVariation uniform(int cells, double amount, std::uint64_t seed);
+  bool empty() const { return stiffness.empty(); }
+  /// Per mesh edge, the mean of its cells' strength factors (its one cell on the boundary); empty
+  /// for the uniform material.
+  std::vector<double> edge_strength(const PolygonMesh& mesh) const;
+};
+
+}  // namespace vorodg

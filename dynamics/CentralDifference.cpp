@@ -112,8 +112,9 @@ void CentralDifference::initialize(const Eigen::VectorXd& u0, const Eigen::Vecto
   record_.initial_balance_integer = record_.balance_integer();
 }
 
-void CentralDifference::restart() {
-  const double elastic = force_.compute(u_, f_int_, options_.threads);
+void CentralDifference::restart(bool cells_unchanged) {
+  const double elastic = cells_unchanged ? force_.reassemble(f_int_, options_.threads)
+                                         : force_.compute(u_, f_int_, options_.threads);
   external_forces(record_.time, f_ext_);
   if (contact_) contact_->restart();  // the state may have jumped: a new work segment
   interface_forces(v_, f_contact_);
@@ -216,19 +217,28 @@ void CentralDifference::remap(SplitDofMap dofs) {
   const Eigen::VectorXd u_old = u_, v_old = v_;
   dofs_ = std::move(dofs);
   bind();
-  // Per new node: its first old node, whether all its pairs share it, and mass-weighted sums.
+  // Per new node: its first old node, and whether all its pairs share it.
   const int nodes = dofs_.num_nodes();
   std::vector<int> source(nodes, -1);
   std::vector<char> single(nodes, 1);
-  Eigen::VectorXd mu = Eigen::VectorXd::Zero(2 * nodes), mv = mu;
   for (int c = 0; c < mesh_.num_cells(); ++c)
     for (int k = 0; k < mesh_.cell_size(c); ++k) {
       const int to = dofs_.node(c, k), from = old.node(c, k);
       if (source[to] < 0) source[to] = from;
       if (source[to] != from) single[to] = 0;
-      mu.segment<2>(2 * to) += mass_.pair_mass(c, k) * u_old.segment<2>(2 * from);
-      mv.segment<2>(2 * to) += mass_.pair_mass(c, k) * v_old.segment<2>(2 * from);
     }
+  const bool split = std::all_of(single.begin(), single.end(), [](char s) { return s != 0; });
+  // Merged nodes take their pairs' mass-weighted means.
+  Eigen::VectorXd mu, mv;
+  if (!split) {
+    mu = mv = Eigen::VectorXd::Zero(2 * nodes);
+    for (int c = 0; c < mesh_.num_cells(); ++c)
+      for (int k = 0; k < mesh_.cell_size(c); ++k) {
+        const int to = dofs_.node(c, k), from = old.node(c, k);
+        mu.segment<2>(2 * to) += mass_.pair_mass(c, k) * u_old.segment<2>(2 * from);
+        mv.segment<2>(2 * to) += mass_.pair_mass(c, k) * v_old.segment<2>(2 * from);
+      }
+  }
   u_.resize(2 * nodes);
   v_.resize(2 * nodes);
   for (int i = 0; i < nodes; ++i) {
@@ -238,7 +248,8 @@ void CentralDifference::remap(SplitDofMap dofs) {
     v_.segment<2>(2 * i) = single[i] ? v_old.segment<2>(2 * source[i]).eval()
                                      : (mv.segment<2>(2 * i) / mass_node_[i]).eval();
   }
-  restart();
+  // A split leaves every cell's displacements as they were at the last force evaluation.
+  restart(split);
   record_.remap_energy += record_.kinetic_leapfrog + record_.elastic - before;
 }
 

@@ -118,8 +118,9 @@ class CentralDifference {
   void interface_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f);
   void boundary_values(double t, std::vector<double>& out) const;
   /// Accelerations, reactions, forces and the record's state at the current time from u_ and v_
-  /// (after initialize or remap).
-  void restart();
+  /// (after initialize or remap). `cells_unchanged`: every cell's displacements are those of the
+  /// last force evaluation (a split), so the internal force is reassembled, not recomputed.
+  void restart(bool cells_unchanged = false);
   /// The record's state from per-step sums: work increments (external, reaction, damping), then
   /// kinetic, a.M a, momentum x, y, angular momentum.
   void book(const std::array<double, 8>& sums, double elastic);

@@ -88,8 +88,12 @@ double InternalForce::compute(const Eigen::VectorXd& u, Eigen::VectorXd& f, int 
   if (u.size() != 2 * num_nodes())
     throw InputError("internal force: " + std::to_string(u.size()) + " displacements for " +
                      std::to_string(num_nodes()) + " bound nodes");
-  f.resize(u.size());
   cell_forces(u.data(), threads);
+  return reassemble(f, threads);
+}
+
+double InternalForce::reassemble(Eigen::VectorXd& f, int threads) {
+  f.resize(2 * num_nodes());
   gather(f.data(), threads);
   const auto energy = energy_sum_.sum<1>(num_cells(), threads,
                                          [&](int c, double* acc) { acc[0] += cell_energy_[c]; });

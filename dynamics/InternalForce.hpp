@@ -41,6 +41,10 @@ class InternalForce {
   /// f = K u over the bound map's node DOFs (u_x, u_y per node; f is resized) and returns the
   /// elastic energy 1/2 u.K u, the sum of the cell energies in cell order.
   double compute(const Eigen::VectorXd& u, Eigen::VectorXd& f, int threads);
+  /// The same f and energy from the last compute's cell forces, on the map bound since: valid
+  /// when every cell's displacements are what they were then, as after a split (which copies
+  /// them), and then bit-for-bit what compute would give, for a gather's cost.
+  double reassemble(Eigen::VectorXd& f, int threads);
 
   int num_cells() const { return static_cast<int>(offsets_.size()) - 1; }
   int cell_size(int c) const { return offsets_[c + 1] - offsets_[c]; }

@@ -12,6 +12,7 @@
 #include "core/util/Format.hpp"
 #include "verification/dynamics/DynamicsHistory.hpp"
 #include "verification/dynamics/FragmentLevels.hpp"
+#include "verification/dynamics/FragmentationRun.hpp"
 #include "verification/study/ResumableRuns.hpp"
 
 namespace fs = std::filesystem;
@@ -46,6 +47,7 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"cracked_edges", &M::cracked_edges},
       {"broken_edges", &M::broken_edges},
       {"law_balance_error", &M::law_balance_error},
+      {"law_balance_breach_time", &M::law_balance_breach_time},
       {"max_rotation", &M::max_rotation},
       {"large_rotation_time", &M::large_rotation_time}};
   return fields;
@@ -184,8 +186,12 @@ std::string report_md(const DynamicsScene& scene, const DynamicsStudyResult& res
       const DynamicsMeasures& m = r.measures;
       md << "| " << r.run.id() << " | " << fmt(m.fragments) << " | " << fmt(m.broken_edges) << " / "
          << fmt(m.cracked_edges) << " | " << fmt(m.max_fragment_mass_fraction, 3) << " | "
-         << fmt(m.dissipated_energy, 4) << " | " << fmt(m.law_balance_error, 2) << " | "
-         << fmt(m.max_rotation, 3)
+         << fmt(m.dissipated_energy, 4) << " | " << fmt(m.law_balance_error, 2)
+         << (std::isfinite(m.law_balance_breach_time)
+                 ? " (past " + fmt(100 * kLawBalanceLimit) + " % at " +
+                       fmt(m.law_balance_breach_time, 3) + " s)"
+                 : "")
+         << " | " << fmt(m.max_rotation, 3)
          << (std::isfinite(m.large_rotation_time) ? " (" + fmt(m.large_rotation_time, 3) + ")" : "")
          << " |\n";
     }

@@ -64,8 +64,9 @@ void FragmentationRun::observe(const StepRecord& r) {
   const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
                       cohesive_->stored_energy() + r.damping_dissipation;
   const double put_in = start_ + r.external_work + r.reaction_work + r.contact_work;
-  worst_balance_ =
-      std::max(worst_balance_, std::abs(held - put_in) / std::max(r.input_energy(), 1e-300));
+  const double balance = std::abs(held - put_in) / std::max(r.input_energy(), 1e-300);
+  worst_balance_ = std::max(worst_balance_, balance);
+  if (std::isnan(breach_time_) && balance > kLawBalanceLimit) breach_time_ = r.time;
 }
 
 std::vector<VtuField> FragmentationRun::cell_fields(const LumpedMass& mass) const {
@@ -89,6 +90,7 @@ void FragmentationRun::finish(const fs::path& out, const std::string& id, const 
   m.cracked_edges = static_cast<double>(cohesive_->edges().size());
   m.broken_edges = cohesive_->num_broken();
   m.law_balance_error = worst_balance_;
+  m.law_balance_breach_time = breach_time_;
   const Eigen::Matrix2Xd v = pieces.velocities(run_->dofs(), run_->velocity());
   std::ostringstream f;
   f << "fragment,mass,cells,x,y,vx,vy\n";

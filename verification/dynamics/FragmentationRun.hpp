@@ -16,6 +16,9 @@
 
 namespace vorodg {
 
+/// The energy balance with the law's energies a run must keep, of the input energy.
+constexpr double kLawBalanceLimit = 0.01;
+
 class FragmentationRun {
  public:
   /// The law and criterion of `scene` on `mesh`; throws InputError naming cohesive keys the
@@ -53,6 +56,7 @@ class FragmentationRun {
   std::unique_ptr<DynamicFracture> fracture_;
   CentralDifference* run_ = nullptr;
   double start_ = 0.0, worst_balance_ = 0.0;
+  double breach_time_ = NAN;  // when the balance first passed kLawBalanceLimit
 };
 
 }  // namespace vorodg

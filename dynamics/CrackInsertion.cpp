@@ -44,9 +44,17 @@ Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Ei
   for (int c = 0; c < cells; ++c) {
     const double* S = stress_operator_.data() + offset_[c];
     Eigen::Vector3d s = Eigen::Vector3d::Zero();
-    for (int k = 0; k < mesh_.cell_size(c); ++k, S += 6) {
-      const int node = dofs.node(c, k);
-      s += Eigen::Map<const Eigen::Matrix<double, 3, 2>>(S) * u.segment<2>(2 * node);
+    if (frames_) {
+      // In the cell's turning frame, where the edges keep their reference normals.
+      thread_local Eigen::VectorXd local;
+      frames_->local_displacements(c, dofs, u, local);
+      for (int k = 0; k < mesh_.cell_size(c); ++k, S += 6)
+        s += Eigen::Map<const Eigen::Matrix<double, 3, 2>>(S) * local.segment<2>(2 * k);
+    } else {
+      for (int k = 0; k < mesh_.cell_size(c); ++k, S += 6) {
+        const int node = dofs.node(c, k);
+        s += Eigen::Map<const Eigen::Matrix<double, 3, 2>>(S) * u.segment<2>(2 * node);
+      }
     }
     sigma.col(c) = s;
   }

@@ -18,6 +18,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/material/MohrCoulomb.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/CorotationalFrames.hpp"
 #include "dynamics/MaterialVariation.hpp"
 
 namespace vorodg {
@@ -33,8 +34,13 @@ class CrackInsertion {
   /// and each edge's criterion with its strength factor (its cohesion and cutoff). Call before
   /// the first check.
   void vary(const MaterialVariation& variation);
+  /// Corotational kinematics: each cell's stress from its displacements in its turning frame
+  /// (InternalForce::frames()), in which the edges keep their reference normals. `frames` must
+  /// outlive this object; nullptr for small rotations.
+  void turn_with(const CorotationalFrames* frames) { frames_ = frames; }
 
-  /// Mean stress (Voigt xx, yy, xy) of every cell at node displacements u of `dofs`.
+  /// Mean stress (Voigt xx, yy, xy) of every cell at node displacements u of `dofs` (in the
+  /// cell's turning frame under turn_with).
   Eigen::Matrix3Xd cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
                                  int threads) const;
   /// The traction (normal, shear) on interior edge e from the given cell stresses, in the frame
@@ -60,6 +66,7 @@ class CrackInsertion {
   MohrCoulomb criterion_;
   std::vector<char> eligible_;
   std::vector<double> edge_strength_;  // per edge; empty: uniform
+  const CorotationalFrames* frames_ = nullptr;
 };
 
 }  // namespace vorodg

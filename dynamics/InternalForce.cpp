@@ -52,10 +52,33 @@ double cell_force_any(int n, const double* K, const int* node, const double* u, 
   return 0.5 * uc.dot(fc);
 }
 
+/// The corotational force of cell c (CorotationalFrames): the local force K u^ of the
+/// displacements in the cell's turning frame, turned back and completed by the turn's own
+/// derivative; returns 1/2 u^.K u^. Both forces are self-equilibrated as above.
+template <int N>
+double corotational_force(const CorotationalFrames& frames, int c, const double* K, const int* node,
+                          const double* u, double* f) {
+  constexpr int M = N > 0 ? 2 * N : Eigen::Dynamic;
+  const int n = N > 0 ? N : frames.cell_size(c);
+  Eigen::Matrix<double, M, 1> w(2 * n), local(2 * n), f_local(2 * n);
+  const double rx = u[2 * node[0]], ry = u[2 * node[0] + 1];
+  for (int k = 0; k < n; ++k) {
+    w[2 * k] = u[2 * node[k]] - rx;
+    w[2 * k + 1] = u[2 * node[k] + 1] - ry;
+  }
+  const CorotationalFrames::Turn turn = frames.local_displacements(c, w.data(), local.data());
+  f_local.noalias() = Eigen::Map<const Eigen::Matrix<double, M, M>>(K, 2 * n, 2 * n) * local;
+  equilibrate(n, f_local.data());
+  frames.global_force(c, turn, local.data(), f_local.data(), f);
+  equilibrate(n, f);
+  return 0.5 * local.dot(f_local);
+}
+
 }  // namespace
 
-InternalForce::InternalForce(const PolygonMesh& mesh, CellMatrices matrices)
+InternalForce::InternalForce(const PolygonMesh& mesh, CellMatrices matrices, bool corotational)
     : offsets_(mesh.offsets()), K_(std::move(matrices)) {
+  if (corotational) frames_.emplace(mesh);
   const int nc = mesh.num_cells();
   const bool whole = K_.first == 0 && static_cast<int>(K_.offset.size()) == nc + 1;
   if (!whole)
@@ -108,6 +131,16 @@ void InternalForce::cell_forces(const double* u, int threads) {
     const int* node = pair_node_.data() + offsets_[c];
     double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
     double& e = cell_energy_[c];
+    if (frames_) {
+      switch (cell_size(c)) {
+        case 4: e = corotational_force<4>(*frames_, c, K, node, u, f); break;
+        case 5: e = corotational_force<5>(*frames_, c, K, node, u, f); break;
+        case 6: e = corotational_force<6>(*frames_, c, K, node, u, f); break;
+        case 7: e = corotational_force<7>(*frames_, c, K, node, u, f); break;
+        default: e = corotational_force<0>(*frames_, c, K, node, u, f);
+      }
+      continue;
+    }
     switch (cell_size(c)) {
       case 3: e = cell_force<3>(K, node, u, f); break;
       case 4: e = cell_force<4>(K, node, u, f); break;

@@ -12,16 +12,21 @@
 // and each cell's force is made self-equilibrated (the last vertex takes minus the sum of the
 // others). A free body's momentum then stays constant to 1e-15 over 1e4 steps.
 //
+// Corotational (optional): the same with each cell's displacements taken in its own turning
+// frame; the force is then the exact gradient of the cell energies, no longer linear in u.
+//
 // Speed: the matrices of all cells lie in one contiguous array (ElasticityIntegrator's
 // CellMatrices); cells of 3 to 10 vertices use fixed-size Eigen mat-vecs; the loop allocates
 // nothing. See docs/dynamics.md for the measured throughput.
 #include <Eigen/Core>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/CorotationalFrames.hpp"
 #include "dynamics/OrderedSum.hpp"
 
 namespace vorodg {
@@ -31,8 +36,9 @@ class InternalForce {
   using CellMatrices = ElasticityIntegrator::CellMatrices;
 
   /// `matrices` must hold every cell of `mesh` (ElasticityIntegrator::all_cell_matrices).
-  /// Throws InputError if it does not.
-  InternalForce(const PolygonMesh& mesh, CellMatrices matrices);
+  /// Throws InputError if it does not. `corotational`: each cell's small strain is taken in a
+  /// frame that turns with it (CorotationalFrames), so cells may rotate through any angle.
+  InternalForce(const PolygonMesh& mesh, CellMatrices matrices, bool corotational = false);
 
   /// Binds the node numbering of a DOF map of the same mesh (before compute, and again after a
   /// split or merge of nodes).
@@ -53,6 +59,8 @@ class InternalForce {
   Eigen::Map<const Eigen::MatrixXd> cell_matrix(int c) const {
     return K_.block(c, 2 * cell_size(c));
   }
+  /// The cells' turning frames (nullptr for small rotations).
+  const CorotationalFrames* frames() const { return frames_ ? &*frames_ : nullptr; }
   /// From the last compute: 1/2 u_c.K_c u_c per cell, and cell c's force on its vertex k
   /// (x, y) at pair_forces()[2 (offset_c + k) + d].
   std::span<const double> cell_energies() const { return cell_energy_; }
@@ -68,6 +76,7 @@ class InternalForce {
   std::vector<int> node_offsets_{0}, node_pairs_;  // pairs of each node, increasing
   std::vector<double> pair_force_, cell_energy_;
   OrderedSum energy_sum_;
+  std::optional<CorotationalFrames> frames_;
 };
 
 }  // namespace vorodg

@@ -107,6 +107,10 @@ std::vector<DynamicsKey> make_keys() {
               "the seed of the per-cell factors (each cell its own stream)", 0.0, false),
       bounded("damping", "number", "0", ">= 0",
               "mass-proportional damping c, 1/s (the force -c M v)", 0.0, false),
+      key("kinematics", "string", "small", "small or corotational",
+          "small: linear small strain (a cell turned by theta is drawn and meets contact stretched "
+          "by about theta^2 / 2); corotational: small strain in a frame that turns with each "
+          "cell, for fragments that spin (docs/impact.md)"),
       key("gravity", "[gx, gy]", per_problem + "column-impact [0, -9.81], else [0, 0]", "finite",
           "body force per unit mass, m/s^2"),
       bounded("obliquity", "number", "45", "0 <= obliquity < 90",

@@ -23,6 +23,7 @@ DynamicsProbe::DynamicsProbe(const DynamicsScene& scene, const BodiesMesh& bodie
     momentum_scale_ += mass[i] * run.velocity().segment<2>(2 * i).norm();
   // Only what no wall, prescribed velocity, gravity or damping acts on keeps its momentum.
   conserves_momentum_ = !scene.external_momentum();
+  if (scene.corotational) m_.max_rotation = NAN;
   if (conserves_momentum_) m_.momentum_drift = 0.0;
   if (conserves_momentum_ && scene.problem == DynamicsProblem::free_body)
     m_.angular_momentum_drift = 0.0;
@@ -91,6 +92,7 @@ void DynamicsProbe::observe_contact() {
 }
 
 void DynamicsProbe::observe_rotation() {
+  if (scene_.corotational) return;  // the cells' frames turn with them: no limit to watch
   const double largest = max_cell_rotation(bodies_.mesh, run_.dofs(), run_.displacement());
   m_.max_rotation = std::max(m_.max_rotation, largest);
   if (std::isnan(m_.large_rotation_time) && largest > kLargeRotation)

@@ -33,7 +33,8 @@ struct DynamicsMeasures {
   double cracked_edges = NAN, broken_edges = NAN;
   double law_balance_error = NAN;        // max over steps, with the law's closed-form energies
   double law_balance_breach_time = NAN;  // first time it passed kLawBalanceLimit (NaN: never)
-  // small rotations (CellRotation), sampled at the output steps
+  // small rotations (CellRotation), sampled at the output steps; NaN under corotational
+  // kinematics
   double max_rotation = 0.0;         // the largest cell's mean rotation, rad
   double large_rotation_time = NAN;  // first output time at which it passed kLargeRotation
 };

@@ -100,8 +100,9 @@ void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, Central
 
 /// One frame of the series: the mesh at x = X + u with one point per node of the current DOF map
 /// (so a crack shows as a gap where its nodes split), the displacement and velocity at the
-/// points, each cell's mean stress (times its stiffness factor, if the material varies) and von
-/// Mises stress, and any extra cell fields.
+/// points, each cell's mean stress (times its stiffness factor, if the material varies; taken in
+/// the cell's turning frame and turned back, under corotational kinematics) and von Mises
+/// stress, and any extra cell fields.
 void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDifference& run,
                  const ElasticityIntegrator& integrator,
                  const ElasticityIntegrator::MeanStrainOperators& strain,
@@ -123,12 +124,17 @@ void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDif
     }
   }
   const IsotropicElasticity& m = integrator.material();
+  const CorotationalFrames* frames = run.force().frames();
   for (int c = 0; c < mesh.num_cells(); ++c) {
     Eigen::VectorXd uc(2 * mesh.cell_size(c));
-    for (int k = 0; k < mesh.cell_size(c); ++k)
-      uc.segment<2>(2 * k) = run.displacement().segment<2>(2 * run.dofs().node(c, k));
-    const Eigen::Vector3d s =
-        (stiffness.empty() ? 1.0 : stiffness[c]) * (m.D() * (strain.block(c) * uc));
+    CorotationalFrames::Turn turn;  // none for small rotations
+    if (frames)
+      turn = frames->local_displacements(c, run.dofs(), run.displacement(), uc);
+    else
+      for (int k = 0; k < mesh.cell_size(c); ++k)
+        uc.segment<2>(2 * k) = run.displacement().segment<2>(2 * run.dofs().node(c, k));
+    const Eigen::Vector3d s = CorotationalFrames::global_stress(
+        turn, (stiffness.empty() ? 1.0 : stiffness[c]) * (m.D() * (strain.block(c) * uc)));
     const double sz = m.model() == PlaneModel::strain ? m.nu() * (s[0] + s[1]) : 0.0;
     stress.values.insert(stress.values.end(), {s[0], s[1], s[2]});
     von_mises.values.push_back(
@@ -194,7 +200,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
         matrices.data[i] *= variation.stiffness[c];
   const StableTimeStep bound(mesh, matrices, mass);
   const SplitDofMap dofs = SplitDofMap::continuous(mesh);
-  InternalForce force(mesh, std::move(matrices));
+  InternalForce force(mesh, std::move(matrices), scene.corotational);
   force.bind(dofs);
   const GlobalTimeStep lanczos(force, mass.node_masses(dofs), bound);
   r.dt_lanczos = lanczos.critical();

@@ -90,6 +90,7 @@ void DynamicsSceneReader::read_material() {
   s_.variation_seed = static_cast<std::uint64_t>(integer(m, "material.variation_seed"));
   m.finish();
   s_.damping = number(top_, "damping");
+  s_.corotational = word(top_, "kinematics", " small corotational ") == "corotational";
 }
 
 void DynamicsSceneReader::read_wave_bar() {

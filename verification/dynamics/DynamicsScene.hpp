@@ -72,6 +72,7 @@ struct DynamicsScene {
   double E = 0.0, nu = 0.0, density = 0.0;
   PlaneModel plane = PlaneModel::stress;
   bool mean_dilation = false;
+  bool corotational = false;         // kinematics: small strain in turning cell frames
   double variation = 0.0;            // per-cell factors on E and strength in [1 - x, 1 + x]
   std::uint64_t variation_seed = 1;  // their stream (MaterialVariation)
   double damping = 0.0;              // mass-proportional, 1/s

@@ -52,6 +52,7 @@ void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator
   cohesive_->set_edge_strength(variation.edge_strength(mesh_));
   insertion_ = std::make_unique<CrackInsertion>(mesh_, integrator, criterion_, eligible_, threads);
   insertion_->vary(variation);
+  insertion_->turn_with(run.force().frames());
   fracture_ = std::make_unique<DynamicFracture>(mesh_, run, *cohesive_, *insertion_, contact);
 }
 

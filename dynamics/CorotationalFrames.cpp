@@ -1,0 +1,105 @@
+#include "dynamics/CorotationalFrames.hpp"
+
+#include <cmath>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+CorotationalFrames::CorotationalFrames(const PolygonMesh& mesh)
+    : offsets_(mesh.offsets()), p_(2 * offsets_.back()), b_(2 * offsets_.back(), 0.0) {
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const auto loop = mesh.cell_vertices(c);
+    const int n = static_cast<int>(loop.size());
+    const Point origin = mesh.vertex(loop[0]);
+    double twice_area = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const Point a = mesh.vertex(loop[k]) - origin, b = mesh.vertex(loop[(k + 1) % n]) - origin;
+      twice_area += a.x() * b.y() - b.x() * a.y();
+    }
+    if (!(std::abs(twice_area) > 0.0))
+      throw InputError("corotational frames: cell " + std::to_string(c) + " has no area");
+    for (int k = 0; k < n; ++k) {
+      const Point a = mesh.vertex(loop[k]) - origin, b = mesh.vertex(loop[(k + 1) % n]) - origin;
+      const std::size_t i = 2 * std::size_t(offsets_[c] + k);
+      p_[i] = a.x(), p_[i + 1] = a.y();
+      // Edge k (a -> b) gives half of nL = (dy, -dx) to each of its ends, over the area.
+      const double nx = (b.y() - a.y()) / twice_area, ny = -(b.x() - a.x()) / twice_area;
+      const std::size_t j = 2 * std::size_t(offsets_[c] + (k + 1) % n);
+      b_[i] += nx, b_[i + 1] += ny;
+      b_[j] += nx, b_[j + 1] += ny;
+    }
+  }
+}
+
+double CorotationalFrames::Turn::angle() const {
+  return std::atan2(skew, trace);
+}
+
+CorotationalFrames::Turn CorotationalFrames::local_displacements(int c, const double* w,
+                                                                 double* local) const {
+  const int first = offsets_[c], n = offsets_[c + 1] - first;
+  const double* p = p_.data() + 2 * std::size_t(first);
+  const double* b = b_.data() + 2 * std::size_t(first);
+  // F - I = sum_k w_k (x) b_k.
+  double g11 = 0.0, g12 = 0.0, g21 = 0.0, g22 = 0.0;
+  for (int k = 0; k < n; ++k) {
+    g11 += w[2 * k] * b[2 * k], g12 += w[2 * k] * b[2 * k + 1];
+    g21 += w[2 * k + 1] * b[2 * k], g22 += w[2 * k + 1] * b[2 * k + 1];
+  }
+  Turn t;
+  t.trace = 2.0 + g11 + g22;
+  t.skew = g21 - g12;
+  const double r = std::hypot(t.trace, t.skew);
+  t.cos = t.trace / r, t.sin = t.skew / r;
+  // u^_k = R^T q_k - p_k, written so that no rotation leaves u^ = w exactly.
+  for (int k = 0; k < n; ++k) {
+    const double qx = p[2 * k] + w[2 * k], qy = p[2 * k + 1] + w[2 * k + 1];
+    local[2 * k] = w[2 * k] + ((t.cos - 1.0) * qx + t.sin * qy);
+    local[2 * k + 1] = w[2 * k + 1] + (-t.sin * qx + (t.cos - 1.0) * qy);
+  }
+  return t;
+}
+
+CorotationalFrames::Turn CorotationalFrames::local_displacements(int c, const SplitDofMap& dofs,
+                                                                 const Eigen::VectorXd& u,
+                                                                 Eigen::VectorXd& local) const {
+  const int n = cell_size(c);
+  thread_local Eigen::VectorXd w;  // the check runs after every step: no allocation per cell
+  w.resize(2 * n);
+  const Eigen::Vector2d origin = u.segment<2>(2 * dofs.node(c, 0));
+  for (int k = 0; k < n; ++k) w.segment<2>(2 * k) = u.segment<2>(2 * dofs.node(c, k)) - origin;
+  local.resize(2 * n);
+  return local_displacements(c, w.data(), local.data());
+}
+
+Eigen::Vector3d CorotationalFrames::global_stress(const Turn& t, const Eigen::Vector3d& s) {
+  Eigen::Matrix2d r, sigma;
+  r << t.cos, -t.sin, t.sin, t.cos;
+  sigma << s[0], s[2], s[2], s[1];
+  const Eigen::Matrix2d g = r * sigma * r.transpose();
+  return {g(0, 0), g(1, 1), g(0, 1)};
+}
+
+void CorotationalFrames::global_force(int c, const Turn& t, const double* local,
+                                      const double* f_loc, double* global) const {
+  const int first = offsets_[c], n = offsets_[c + 1] - first;
+  const double* p = p_.data() + 2 * std::size_t(first);
+  const double* b = b_.data() + 2 * std::size_t(first);
+  // g = dE/dtheta = -sum_k f_k . J (u^_k + p_k), J (x, y) = (-y, x).
+  double g = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double x = local[2 * k] + p[2 * k], y = local[2 * k + 1] + p[2 * k + 1];
+    g -= f_loc[2 * k] * -y + f_loc[2 * k + 1] * x;
+  }
+  const double r2 = t.trace * t.trace + t.skew * t.skew;
+  for (int k = 0; k < n; ++k) {
+    const double bx = b[2 * k], by = b[2 * k + 1];
+    const double dx = (t.trace * -by - t.skew * bx) / r2, dy = (t.trace * bx - t.skew * by) / r2;
+    const double fx = f_loc[2 * k], fy = f_loc[2 * k + 1];
+    global[2 * k] = t.cos * fx - t.sin * fy + g * dx;
+    global[2 * k + 1] = t.sin * fx + t.cos * fy + g * dy;
+  }
+}
+
+}  // namespace vorodg

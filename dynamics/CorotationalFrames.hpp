@@ -1,0 +1,56 @@
+#pragma once
+// Corotational cell kinematics: each cell deforms by small strain in a frame that turns with it,
+// so fragments may spin through any angle (docs/impact.md, "Finite rotations").
+//
+// The cell's rotation theta is the polar angle of its mean deformation gradient
+//     F = I + sum_k u_k (x) b_k,   b_k = (nL_{k-1} + nL_k) / (2 A)
+// (nL_e = (dy, -dx) of edge e; the boundary integral of u (x) n over the area, exact for the
+// displacements, linear along each edge), theta = atan2(F21 - F12, F11 + F22). The local
+// displacements are u^_k = R^T q_k - p_k, with p_k = X_k - X_0 and q_k = p_k + u_k - u_0 (K
+// annihilates translations). The cell's energy is E = 1/2 u^.K u^, and its force the exact
+// gradient:
+//     f_k = R (K u^)_k + g dtheta/du_k,   g = dE/dtheta = -sum_k (K u^)_k . J (u^_k + p_k),
+//     dtheta/du_k = (s (-b_ky, b_kx) - d (b_kx, b_ky)) / (s^2 + d^2),  s = F11 + F22,
+//     d = F21 - F12, J the quarter turn.
+// E does not change when the whole cell turns rigidly, so a spinning cell feels no force and keeps
+// its shape; for small rotations f = K u to first order. The force is not linear in u, so the
+// integrator's energy identity closes to O(dt^2), not to round-off.
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/dofs/SplitDofMap.hpp"
+#include "core/mesh/PolygonMesh.hpp"
+
+namespace vorodg {
+
+class CorotationalFrames {
+ public:
+  explicit CorotationalFrames(const PolygonMesh& mesh);
+  int cell_size(int c) const { return offsets_[c + 1] - offsets_[c]; }
+
+  /// Cell c's turn: R = [[cos, -sin], [sin, cos]], and the parts of F its derivative needs.
+  struct Turn {
+    double cos = 1.0, sin = 0.0;
+    double trace = 2.0, skew = 0.0;  // s = F11 + F22, d = F21 - F12
+    double angle() const;
+  };
+  /// Cell c's turn from its vertices' displacements relative to vertex 0 (w[2k], w[2k+1];
+  /// w_0 = 0), and its local displacements u^ (2n, written to `local`).
+  Turn local_displacements(int c, const double* w, double* local) const;
+  /// The same from node displacements u of `dofs` (`local` resized to 2n).
+  Turn local_displacements(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u,
+                           Eigen::VectorXd& local) const;
+  /// A Voigt stress (xx, yy, xy) of a cell's turned frame in the global one: R s R^T.
+  static Eigen::Vector3d global_stress(const Turn& turn, const Eigen::Vector3d& s);
+  /// Cell c's global force (2n, written to `global`) from its turn, its local displacements and
+  /// the local force f_loc = K u^.
+  void global_force(int c, const Turn& turn, const double* local, const double* f_loc,
+                    double* global) const;
+
+ private:
+  std::vector<int> offsets_;
+  std::vector<double> p_;  // per pair: X_k - X_0 (x, y)
+  std::vector<double> b_;  // per pair: the mean-gradient weight b_k (x, y)
+};
+
+}  // namespace vorodg

@@ -1,5 +1,6 @@
 #include "dynamics/CorotationalFrames.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/util/Errors.hpp"
@@ -36,20 +37,49 @@ double CorotationalFrames::Turn::angle() const {
   return std::atan2(skew, trace);
 }
 
+Eigen::Matrix2d CorotationalFrames::displacement_gradient(int c, const double* w) const {
+  const int first = offsets_[c], n = offsets_[c + 1] - first;
+  const double* b = b_.data() + 2 * std::size_t(first);
+  Eigen::Matrix2d g = Eigen::Matrix2d::Zero();
+  for (int k = 0; k < n; ++k) {
+    g(0, 0) += w[2 * k] * b[2 * k], g(0, 1) += w[2 * k] * b[2 * k + 1];
+    g(1, 0) += w[2 * k + 1] * b[2 * k], g(1, 1) += w[2 * k + 1] * b[2 * k + 1];
+  }
+  return g;
+}
+
+const double* CorotationalFrames::relative(int c, const SplitDofMap& dofs,
+                                           const Eigen::VectorXd& u) const {
+  thread_local Eigen::VectorXd w;  // the check runs after every step: no allocation per cell
+  const int n = cell_size(c);
+  w.resize(2 * n);
+  const Eigen::Vector2d origin = u.segment<2>(2 * dofs.node(c, 0));
+  for (int k = 0; k < n; ++k) w.segment<2>(2 * k) = u.segment<2>(2 * dofs.node(c, k)) - origin;
+  return w.data();
+}
+
+double CorotationalFrames::mean_rotation(int c, const SplitDofMap& dofs,
+                                         const Eigen::VectorXd& u) const {
+  const Eigen::Matrix2d g = displacement_gradient(c, relative(c, dofs, u));
+  return 0.5 * (g(1, 0) - g(0, 1));
+}
+
+double CorotationalFrames::largest_mean_rotation(const SplitDofMap& dofs,
+                                                 const Eigen::VectorXd& u) const {
+  double largest = 0.0;
+  for (int c = 0; c + 1 < static_cast<int>(offsets_.size()); ++c)
+    largest = std::max(largest, std::abs(mean_rotation(c, dofs, u)));
+  return largest;
+}
+
 CorotationalFrames::Turn CorotationalFrames::local_displacements(int c, const double* w,
                                                                  double* local) const {
   const int first = offsets_[c], n = offsets_[c + 1] - first;
   const double* p = p_.data() + 2 * std::size_t(first);
-  const double* b = b_.data() + 2 * std::size_t(first);
-  // F - I = sum_k w_k (x) b_k.
-  double g11 = 0.0, g12 = 0.0, g21 = 0.0, g22 = 0.0;
-  for (int k = 0; k < n; ++k) {
-    g11 += w[2 * k] * b[2 * k], g12 += w[2 * k] * b[2 * k + 1];
-    g21 += w[2 * k + 1] * b[2 * k], g22 += w[2 * k + 1] * b[2 * k + 1];
-  }
+  const Eigen::Matrix2d g = displacement_gradient(c, w);
   Turn t;
-  t.trace = 2.0 + g11 + g22;
-  t.skew = g21 - g12;
+  t.trace = 2.0 + g(0, 0) + g(1, 1);
+  t.skew = g(1, 0) - g(0, 1);
   const double r = std::hypot(t.trace, t.skew);
   t.cos = t.trace / r, t.sin = t.skew / r;
   // u^_k = R^T q_k - p_k, written so that no rotation leaves u^ = w exactly.
@@ -64,13 +94,8 @@ CorotationalFrames::Turn CorotationalFrames::local_displacements(int c, const do
 CorotationalFrames::Turn CorotationalFrames::local_displacements(int c, const SplitDofMap& dofs,
                                                                  const Eigen::VectorXd& u,
                                                                  Eigen::VectorXd& local) const {
-  const int n = cell_size(c);
-  thread_local Eigen::VectorXd w;  // the check runs after every step: no allocation per cell
-  w.resize(2 * n);
-  const Eigen::Vector2d origin = u.segment<2>(2 * dofs.node(c, 0));
-  for (int k = 0; k < n; ++k) w.segment<2>(2 * k) = u.segment<2>(2 * dofs.node(c, k)) - origin;
-  local.resize(2 * n);
-  return local_displacements(c, w.data(), local.data());
+  local.resize(2 * cell_size(c));
+  return local_displacements(c, relative(c, dofs, u), local.data());
 }
 
 Eigen::Vector3d CorotationalFrames::global_stress(const Turn& t, const Eigen::Vector3d& s) {

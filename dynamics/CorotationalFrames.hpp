@@ -12,6 +12,11 @@
 //     f_k = R (K u^)_k + g dtheta/du_k,   g = dE/dtheta = -sum_k (K u^)_k . J (u^_k + p_k),
 //     dtheta/du_k = (s (-b_ky, b_kx) - d (b_kx, b_ky)) / (s^2 + d^2),  s = F11 + F22,
 //     d = F21 - F12, J the quarter turn.
+// The same mean gradient gives the small-strain model's measure of how far a cell has turned,
+// omega_c = (G21 - G12) / 2 with G = F - I (mean_rotation): a rigid rotation u = theta (-y, x)
+// gives theta exactly. A small-strain cell turned by theta is drawn, and meets contact,
+// stretched by sqrt(1 + theta^2) - 1, about theta^2 / 2 (docs/impact.md).
+//
 // E does not change when the whole cell turns rigidly, so a spinning cell feels no force and keeps
 // its shape; for small rotations f = K u to first order. The force is not linear in u, so the
 // integrator's energy identity closes to O(dt^2), not to round-off.
@@ -37,6 +42,13 @@ class CorotationalFrames {
   /// Cell c's turn from its vertices' displacements relative to vertex 0 (w[2k], w[2k+1];
   /// w_0 = 0), and its local displacements u^ (2n, written to `local`).
   Turn local_displacements(int c, const double* w, double* local) const;
+  /// G = F - I = sum_k w_k (x) b_k of cell c from displacements relative to vertex 0 (w_0 = 0;
+  /// absolute displacements give the same, since sum_k b_k = 0).
+  Eigen::Matrix2d displacement_gradient(int c, const double* w) const;
+  /// The small-strain rotation of cell c, (G21 - G12) / 2, at node displacements u of `dofs`.
+  double mean_rotation(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u) const;
+  /// The largest |mean_rotation| over the cells.
+  double largest_mean_rotation(const SplitDofMap& dofs, const Eigen::VectorXd& u) const;
   /// The same from node displacements u of `dofs` (`local` resized to 2n).
   Turn local_displacements(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u,
                            Eigen::VectorXd& local) const;
@@ -48,6 +60,9 @@ class CorotationalFrames {
                     double* global) const;
 
  private:
+  /// Cell c's node displacements relative to its vertex 0, in a per-thread buffer.
+  const double* relative(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u) const;
+
   std::vector<int> offsets_;
   std::vector<double> p_;  // per pair: X_k - X_0 (x, y)
   std::vector<double> b_;  // per pair: the mean-gradient weight b_k (x, y)

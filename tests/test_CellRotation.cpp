@@ -1,5 +1,5 @@
-// The cells' mean rotation (dynamics/CellRotation), on every mesh family, continuous and fully
-// split DOF maps:
+// The cells' small-strain rotation (CorotationalFrames::mean_rotation), on every mesh family,
+// continuous and fully split DOF maps:
 //   - a rigid rotation u = theta (-y, x) about any point gives theta in every cell, to 1e-12;
 //   - a symmetric gradient (pure strain, u = E x with E symmetric) gives 0, to 1e-12 of |E|;
 //   - a general affine field gives its gradient's skew part (du_y/dx - du_x/dy) / 2;
@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "core/dofs/SplitDofMap.hpp"
-#include "dynamics/CellRotation.hpp"
+#include "dynamics/CorotationalFrames.hpp"
 #include "support/ElementTestMeshes.hpp"
 
 namespace vorodg {
@@ -32,6 +32,7 @@ class CellRotation : public ::testing::TestWithParam<Family> {};
 TEST_P(CellRotation, AffineFieldsGiveTheirSkewPart) {
   const PolygonMesh& mesh = mesh_of(GetParam());
   const SplitDofMap dofs = SplitDofMap::continuous(mesh);
+  const CorotationalFrames frames(mesh);
   const Point origin(0.7, -0.3);
   const double theta = 0.37;
   Eigen::Matrix2d spin, strain, general;
@@ -39,17 +40,18 @@ TEST_P(CellRotation, AffineFieldsGiveTheirSkewPart) {
   strain << 2e-3, 5e-4, 5e-4, -1e-3;
   general << 0.2, -0.5, 0.3, 0.1;  // skew part (0.3 - (-0.5)) / 2 = 0.4
   for (int c = 0; c < mesh.num_cells(); ++c) {
-    EXPECT_NEAR(cell_rotation(mesh, dofs, affine(mesh, dofs, spin, origin), c), theta, 1e-12);
-    EXPECT_NEAR(cell_rotation(mesh, dofs, affine(mesh, dofs, strain, origin), c), 0.0,
+    EXPECT_NEAR(frames.mean_rotation(c, dofs, affine(mesh, dofs, spin, origin)), theta, 1e-12);
+    EXPECT_NEAR(frames.mean_rotation(c, dofs, affine(mesh, dofs, strain, origin)), 0.0,
                 1e-12 * 2e-3);
-    EXPECT_NEAR(cell_rotation(mesh, dofs, affine(mesh, dofs, general, origin), c), 0.4, 1e-12);
+    EXPECT_NEAR(frames.mean_rotation(c, dofs, affine(mesh, dofs, general, origin)), 0.4, 1e-12);
   }
-  EXPECT_NEAR(max_cell_rotation(mesh, dofs, affine(mesh, dofs, spin, origin)), theta, 1e-12);
+  EXPECT_NEAR(frames.largest_mean_rotation(dofs, affine(mesh, dofs, spin, origin)), theta, 1e-12);
 }
 
 TEST_P(CellRotation, SplitCellsRotateOnTheirOwn) {
   const PolygonMesh& mesh = mesh_of(GetParam());
   const SplitDofMap dofs = SplitDofMap::discontinuous(mesh);
+  const CorotationalFrames frames(mesh);
   Eigen::VectorXd u(2 * dofs.num_nodes());
   auto angle = [](int c) { return 0.01 * (c % 7) - 0.03; };
   for (int c = 0; c < mesh.num_cells(); ++c)
@@ -58,8 +60,8 @@ TEST_P(CellRotation, SplitCellsRotateOnTheirOwn) {
       u.segment<2>(2 * dofs.node(c, k)) = angle(c) * Point(-x.y(), x.x());
     }
   for (int c = 0; c < mesh.num_cells(); ++c)
-    EXPECT_NEAR(cell_rotation(mesh, dofs, u, c), angle(c), 1e-12);
-  EXPECT_NEAR(max_cell_rotation(mesh, dofs, u), 0.03, 1e-12);
+    EXPECT_NEAR(frames.mean_rotation(c, dofs, u), angle(c), 1e-12);
+  EXPECT_NEAR(frames.largest_mean_rotation(dofs, u), 0.03, 1e-12);
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, CellRotation, ::testing::ValuesIn(kFamilies),

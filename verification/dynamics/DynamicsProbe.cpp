@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "dynamics/CellRotation.hpp"
-
 namespace vorodg {
 namespace {
 
@@ -16,7 +14,7 @@ double extent(const Rectangle& r, const Point& direction) {
 
 DynamicsProbe::DynamicsProbe(const DynamicsScene& scene, const BodiesMesh& bodies,
                              const CentralDifference& run)
-    : scene_(scene), bodies_(bodies), run_(run), start_(run.record()) {
+    : scene_(scene), bodies_(bodies), run_(run), start_(run.record()), frames_(bodies.mesh) {
   const Eigen::VectorXd& mass = run.node_masses();
   total_mass_ = mass.sum();
   for (int i = 0; i < mass.size(); ++i)
@@ -93,7 +91,7 @@ void DynamicsProbe::observe_contact() {
 
 void DynamicsProbe::observe_rotation() {
   if (scene_.corotational) return;  // the cells' frames turn with them: no limit to watch
-  const double largest = max_cell_rotation(bodies_.mesh, run_.dofs(), run_.displacement());
+  const double largest = frames_.largest_mean_rotation(run_.dofs(), run_.displacement());
   m_.max_rotation = std::max(m_.max_rotation, largest);
   if (std::isnan(m_.large_rotation_time) && largest > kLargeRotation)
     m_.large_rotation_time = run_.time();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dynamics/CentralDifference.hpp"
+#include "dynamics/CorotationalFrames.hpp"
 #include "verification/dynamics/DynamicsMesh.hpp"
 #include "verification/dynamics/DynamicsScene.hpp"
 
@@ -33,8 +34,8 @@ struct DynamicsMeasures {
   double cracked_edges = NAN, broken_edges = NAN;
   double law_balance_error = NAN;        // max over steps, with the law's closed-form energies
   double law_balance_breach_time = NAN;  // first time it passed kLawBalanceLimit (NaN: never)
-  // small rotations (CellRotation), sampled at the output steps; NaN under corotational
-  // kinematics
+  // small rotations (CorotationalFrames::mean_rotation), sampled at the output steps; NaN under
+  // corotational kinematics
   double max_rotation = 0.0;         // the largest cell's mean rotation, rad
   double large_rotation_time = NAN;  // first output time at which it passed kLargeRotation
 };
@@ -69,6 +70,7 @@ class DynamicsProbe {
   double momentum_scale_ = 0.0, total_mass_ = 0.0;
   bool conserves_momentum_ = false;
   std::vector<int> far_nodes_;  // wave-bar: the nodes on the right end
+  CorotationalFrames frames_;   // for the cells' small-strain rotation
   double previous_far_ = 0.0;
   bool in_contact_ = false;
 };

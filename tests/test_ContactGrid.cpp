@@ -1,6 +1,7 @@
 // The grid search of contact: the same overlapping pairs as the O(N^2) brute force on random
-// polygon sets (two rcp bodies moved onto each other, random boxes, boxes flung far apart so that
-// the grid folds), each pair once, first < second, in the same order on every run.
+// polygon sets (two rcp bodies moved onto each other, random boxes, a few huge boxes among small
+// ones, boxes flung far apart so that the grid folds), each pair once, first < second, in the
+// same order on every run.
 #include "dynamics/contact/ContactGrid.hpp"
 
 #include <gtest/gtest.h>
@@ -76,6 +77,24 @@ TEST(ContactGrid, MatchesBruteForceOnRandomBoxesOfMixedSizes) {
     EXPECT_EQ(checked_set(grid.find(boxes)), brute_force(boxes)) << "trial " << trial;
     EXPECT_GE(grid.spacing(), 0.04 * 0.99);
   }
+}
+
+TEST(ContactGrid, LargeBoxesAreTestedAsideAndLeaveTheSpacingAlone) {
+  // 2000 small boxes and 20 boxes up to a hundred times larger (swollen cells): the grid keeps
+  // the small ones' spacing, and the pairs are still exactly the brute force's.
+  Random random(14);
+  std::vector<Box> boxes;
+  for (int i = 0; i < 2020; ++i) {
+    const Point lo(random.uniform(0.0, 2.0), random.uniform(0.0, 1.0));
+    const double side = i % 101 == 0 ? random.uniform(0.1, 1.0) : random.uniform(0.0, 0.02);
+    boxes.emplace_back(lo, lo + Point(side, random.uniform(0.5, 1.0) * side));
+  }
+  ContactGrid grid(0.01);
+  EXPECT_EQ(checked_set(grid.find(boxes)), brute_force(boxes));
+  EXPECT_LE(grid.spacing(), ContactGrid::kLargeBox * 0.01 * (1 + 1e-6));
+  std::vector<Box> large_only(boxes.begin(), boxes.begin() + 1);
+  large_only.push_back(Box(Point(0.5, 0.5), Point(1.5, 1.5)));
+  EXPECT_EQ(checked_set(grid.find(large_only)), brute_force(large_only));
 }
 
 TEST(ContactGrid, FoldedGridOfScatteredFragmentsMatchesBruteForce) {

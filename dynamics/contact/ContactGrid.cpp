@@ -34,28 +34,42 @@ const std::vector<IndexPair>& ContactGrid::find(std::span<const Box> boxes) {
   pairs_.clear();
   num_pairs_ = 0;
   if (boxes.size() < 2) return pairs_;
+  classify(boxes);
   set_up_grid(boxes);
   bin(boxes);
   collect();
+  collect_large(boxes);
   pairs_.resize(num_pairs_);
   return pairs_;
+}
+
+void ContactGrid::classify(std::span<const Box> boxes) {
+  ordinary_.clear();
+  large_.clear();
+  is_large_.assign(boxes.size(), 0);
+  const double limit = kLargeBox * min_spacing_;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    check_box(boxes[i], i);
+    is_large_[i] = boxes[i].sizes().maxCoeff() > limit;
+    (is_large_[i] ? large_ : ordinary_).push_back(static_cast<int>(i));
+  }
 }
 
 void ContactGrid::set_up_grid(std::span<const Box> boxes) {
   Box all;
   double largest = 0.0;
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    check_box(boxes[i], i);
+  for (int i : ordinary_) {
     all.extend(boxes[i]);
     largest = std::max(largest, boxes[i].sizes().maxCoeff());
   }
+  if (ordinary_.empty()) all.extend(Eigen::Vector2d::Zero());
   const Eigen::Vector2d span = all.sizes();
   spacing_ = std::max({min_spacing_, largest, span.maxCoeff() / kMaxCellsPerAxis}) * kSlack;
   inverse_spacing_ = 1.0 / spacing_;
   origin_ = all.min();
   nx_ = static_cast<std::int64_t>(span.x() * inverse_spacing_) + 1;
   ny_ = static_cast<std::int64_t>(span.y() * inverse_spacing_) + 1;
-  const auto n = static_cast<std::int64_t>(boxes.size());
+  const auto n = std::max<std::int64_t>(static_cast<std::int64_t>(ordinary_.size()), 1);
   // nx * ny < 2^50 by the cap above, so the product cannot overflow.
   num_buckets_ = std::min(nx_ * ny_, kBucketsPerBox * n);
 }
@@ -70,23 +84,33 @@ std::int64_t ContactGrid::grid_y(double y) const {
 }
 
 void ContactGrid::bin(std::span<const Box> boxes) {
-  const std::size_t n = boxes.size();
+  const std::size_t n = ordinary_.size();
   box_bucket_.resize(n);
   start_.assign(num_buckets_ + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    box_bucket_[i] = bucket(grid_x(boxes[i].min().x()), grid_y(boxes[i].min().y()));
-    ++start_[box_bucket_[i] + 1];
+  for (std::size_t k = 0; k < n; ++k) {
+    const Box& b = boxes[ordinary_[k]];
+    box_bucket_[k] = bucket(grid_x(b.min().x()), grid_y(b.min().y()));
+    ++start_[box_bucket_[k] + 1];
   }
   for (std::int64_t b = 0; b < num_buckets_; ++b) start_[b + 1] += start_[b];
   // Counting sort, stable: within a bucket the boxes stay in increasing index.
   order_.resize(n);
   sorted_.resize(n);
   next_.assign(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    const int slot = next_[box_bucket_[i]]++;
-    order_[slot] = static_cast<int>(i);
-    sorted_[slot] = boxes[i];
+  for (std::size_t k = 0; k < n; ++k) {
+    const int slot = next_[box_bucket_[k]]++;
+    order_[slot] = ordinary_[k];
+    sorted_[slot] = boxes[ordinary_[k]];
   }
+}
+
+void ContactGrid::collect_large(std::span<const Box> boxes) {
+  for (int i : large_)
+    for (int j = 0; j < static_cast<int>(boxes.size()); ++j) {
+      if (j == i || (is_large_[j] && j < i) || !boxes[i].intersects(boxes[j])) continue;
+      if (pairs_.size() == num_pairs_) pairs_.resize(2 * num_pairs_ + 16);
+      pairs_[num_pairs_++] = i < j ? IndexPair{i, j} : IndexPair{j, i};
+    }
 }
 
 void ContactGrid::collect() {

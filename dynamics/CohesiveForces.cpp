@@ -130,6 +130,7 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
   double work = 0.0;
   for (std::size_t slot = 0; slot < faces_.size(); ++slot) {
     Face& face = faces_[slot];
+    if (face.released) continue;
     const CohesiveLaw& law = law_of(slot);
     Eigen::Vector2d jump[2];  // u_cell1 - u_cell0 at v0 and v1
     for (int j = 0; j < 2; ++j)
@@ -152,8 +153,24 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
         f.segment<2>(2 * face.node0[j]) += share * force;
       }
     }
+    face.end_gap = std::min(jump[0].norm(), jump[1].norm());
   }
   work_ += work;
+}
+
+bool CohesiveForces::releasable(int e) const {
+  if (slot_[e] < 0) return false;
+  const Face& face = faces_[slot_[e]];
+  if (face.released || face.end_gap < face.length || !broken(e)) return false;
+  return face.points[0].opening[0] >= 0.0 && face.points[1].opening[0] >= 0.0;
+}
+
+void CohesiveForces::release(int e) {
+  if (!releasable(e))
+    throw InputError("cohesive forces: edge " + std::to_string(e) +
+                     " released: expected a broken face, open and apart by its length");
+  faces_[slot_[e]].released = true;
+  released_.push_back(e);
 }
 
 double CohesiveForces::dissipated_energy(int e) const {

@@ -13,6 +13,16 @@
 // (docs/contact.md), and the faces of a crack share two. Its energy k <g_n>_-^2 / 2 is stored,
 // not dissipated.
 //
+// Release. The penalty measures overclosure along the face's reference normal, which means
+// nothing once the two sides have moved apart and turned: left on, it tethers fragments that
+// have flown apart, and switches on with overlaps of metres when they tumble. So a face may be
+// released, for good, once it is fully broken, both its points are open (g_n >= 0) at the last
+// evaluation and both its ends have come apart by at least the face's length (`releasable`).
+// The first two make the release free of energy: a broken point carries no law traction and an
+// open one no penalty, so the face stores nothing when it lets go. Who releases it
+// (DynamicFracture) also checks that the two cells do not overlap, so that surface contact,
+// which keeps them apart from then on (SurfaceCells::release), starts from zero force too.
+//
 // Which law. Only an initially elastic (intrinsic) law is accepted, inserted extrinsically:
 // the edge is intact until the criterion holds, then the law starts from zero opening and zero
 // traction, rises with stiffness K0 to sigma_c at delta_0 = sigma_c / K0, and softens with area
@@ -92,6 +102,13 @@ class CohesiveForces {
   /// Whether cracked edge e is fully broken: both its points past the critical opening.
   bool broken(int e) const;
   int num_broken() const;
+  /// Whether cracked edge e may let go now (see Release above); false if it already has.
+  bool releasable(int e) const;
+  /// Edge e lets go: no more forces, its energies frozen (both zero). Throws InputError unless
+  /// releasable(e).
+  void release(int e);
+  /// The released edges, in the order they let go.
+  const std::vector<int>& released_edges() const { return released_; }
 
  private:
   struct QuadraturePoint {
@@ -106,6 +123,8 @@ class CohesiveForces {
     Eigen::Vector2d n, t;
     double length;
     std::array<QuadraturePoint, 2> points;
+    double end_gap = 0.0;  // the smaller of the two end jumps' lengths, last evaluation
+    bool released = false;
   };
   static Face make_face(const PolygonMesh& mesh, int e);
   /// The overclosure penalty's energy per unit area at an opening (normal, tangential).
@@ -129,6 +148,7 @@ class CohesiveForces {
   std::vector<Face> faces_;
   std::vector<int> edges_;
   std::vector<int> slot_;  // per mesh edge: its face, or -1
+  std::vector<int> released_;
   double work_ = 0.0;
 };
 

@@ -1,5 +1,7 @@
 #include "dynamics/ContactForces.hpp"
 
+#include "dynamics/contact/PolygonPenetration.hpp"
+
 #include <string>
 
 #include "core/util/Errors.hpp"
@@ -81,6 +83,18 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
     f[2 * node_[p]] += force_[p].x();
     f[2 * node_[p] + 1] += force_[p].y();
   }
+}
+
+bool ContactForces::overlapping(int a, int b) const {
+  if (position_.empty()) return false;
+  const auto& o = mesh_.offsets();
+  const std::span<const Point> pa(position_.data() + o[a], position_.data() + o[a + 1]);
+  const std::span<const Point> pb(position_.data() + o[b], position_.data() + o[b + 1]);
+  for (const Point& p : pa)
+    if (PolygonPenetration::inside(p, pb)) return true;
+  for (const Point& p : pb)
+    if (PolygonPenetration::inside(p, pa)) return true;
+  return false;
 }
 
 }  // namespace vorodg

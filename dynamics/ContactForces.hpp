@@ -64,6 +64,10 @@ class ContactForces {
   const Point& plane_force() const { return plane_force_; }
   /// Per pair (the mesh's CSR layout), the contact forces of the last evaluation.
   std::span<const Point> pair_forces() const { return force_; }
+  /// Whether a vertex of cell a lies inside cell b or one of b inside a, at the positions of
+  /// the last evaluation: what surface contact would push apart (PolygonPenetration's test).
+  /// False before the first evaluation.
+  bool overlapping(int a, int b) const;
 
  private:
   void gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);

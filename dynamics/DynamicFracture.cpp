@@ -17,6 +17,7 @@ DynamicFracture::DynamicFracture(const PolygonMesh& mesh, CentralDifference& run
 
 int DynamicFracture::step(int threads) {
   run_.step();
+  release_faces();
   const std::vector<CrackInsertion::Failure> failing =
       insertion_.failing_edges(run_.dofs(), run_.displacement(), cracked_, threads);
   if (failing.empty()) return 0;
@@ -30,6 +31,17 @@ int DynamicFracture::step(int threads) {
   for (int e = 0; e < mesh_.num_edges(); ++e) connected[e] = !cracked_[e];
   run_.remap(SplitDofMap(mesh_, connected));
   return static_cast<int>(failing.size());
+}
+
+void DynamicFracture::release_faces() {
+  if (!contact_ || !contact_->surfaces()) return;
+  for (int e : cohesive_.edges()) {
+    if (!cohesive_.releasable(e)) continue;
+    const MeshEdge& edge = mesh_.edge(e);
+    if (contact_->overlapping(edge.cell0, edge.cell1)) continue;
+    cohesive_.release(e);
+    contact_->surface().release(e);
+  }
 }
 
 CrackState DynamicFracture::crack_state() const {

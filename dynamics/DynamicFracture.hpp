@@ -10,6 +10,12 @@
 // the vertex through the other edges, so it cannot open until a neighbouring edge cracks too.
 // It stays cracked and opens then, as the report's node-splitting scheme implies.
 //
+// Release. After each step, a cracked face that may let go (CohesiveForces::releasable: broken,
+// open, its ends apart by its length) and whose two cells do not overlap is released: the
+// cohesive forces stop, and surface contact tests its two cells against each other from then
+// on. Without surface contact no face is released: the closure penalty is then all that keeps
+// crack faces apart.
+//
 // One insertion pass per step: a split copies the displacements, so the cells' stresses, and
 // with them every utilization, are the same after it; nothing more fails at that instant.
 #include <vector>
@@ -47,6 +53,9 @@ class DynamicFracture {
   CrackState broken_state() const;
 
  private:
+  /// Releases the faces that may let go (see Release above).
+  void release_faces();
+
   const PolygonMesh& mesh_;
   CentralDifference& run_;
   CohesiveForces& cohesive_;

@@ -1,6 +1,6 @@
 // The set of contact cells: it starts as the cells with a boundary edge, grows by add and expose,
 // never shrinks, keeps its order of entry, and calls two cells neighbours exactly when they share
-// a mesh vertex.
+// a mesh vertex and no released edge lies between them.
 #include "dynamics/contact/SurfaceCells.hpp"
 
 #include <gtest/gtest.h>
@@ -106,6 +106,32 @@ TEST(SurfaceCells, NeighboursAreCellsThatShareAVertex) {
     shared += expected;
   }
   EXPECT_GT(shared, 5000);
+}
+
+TEST(SurfaceCells, ReleasedEdgePartsItsTwoCellsAlone) {
+  const PolygonMesh mesh = rcp(8);
+  SurfaceCells surface(mesh);
+  int e = 0;
+  while (mesh.edge(e).on_boundary()) ++e;
+  const MeshEdge& edge = mesh.edge(e);
+  EXPECT_THROW(surface.release(e), InputError);  // not exposed yet
+  surface.expose(e);
+  ASSERT_TRUE(surface.neighbours(edge.cell0, edge.cell1));
+  surface.release(e);
+  surface.release(e);  // idempotent
+  EXPECT_FALSE(surface.neighbours(edge.cell0, edge.cell1));
+  EXPECT_FALSE(surface.neighbours(edge.cell1, edge.cell0));
+  // Every other pair keeps its answer: sharing a vertex makes neighbours.
+  for (int a : {edge.cell0, edge.cell1})
+    for (int v : mesh.cell_vertices(a))
+      for (int b : mesh.vertex_cells(v)) {
+        if ((a == edge.cell0 && b == edge.cell1) || (a == edge.cell1 && b == edge.cell0)) continue;
+        EXPECT_TRUE(surface.neighbours(a, b)) << a << ", " << b;
+      }
+  int boundary = 0;
+  while (!mesh.edge(boundary).on_boundary()) ++boundary;
+  EXPECT_THROW(surface.release(boundary), InputError);
+  EXPECT_THROW(surface.release(mesh.num_edges()), InputError);
 }
 
 TEST(SurfaceCells, RefusesIndicesOutOfRange) {

@@ -1,7 +1,9 @@
 // Contact between surface cells, end to end: the search finds exactly the overlapping pairs of
 // surface cells that share no vertex; on two rcp bodies pushed into each other the forces sum to
-// zero with zero moment; two squares overlapping by d get k d; a node of two surface cells is
-// pushed once; exposed edges are the exits; the result is the same on every run.
+// zero with zero moment; two squares overlapping by d get k d; a vertex found first deeper than
+// a tenth of the cell is left alone until it leaves, one that went in step by step is pushed at
+// every depth; a node of two surface cells is pushed once; exposed edges are the exits; the
+// result is the same on every run.
 #include "dynamics/contact/SurfaceContact.hpp"
 
 #include <gtest/gtest.h>
@@ -181,6 +183,46 @@ TEST(SurfaceContact, SquaresOverlappingByDGetKD) {
   const Point body_a = f[0] + f[1] + f[2] + f[3], body_b = f[4] + f[5] + f[6] + f[7];
   EXPECT_NEAR((body_a - Point(-2 * k * d, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((body_a + body_b).norm(), 0.0, 1e-13);
+}
+
+TEST(SurfaceContact, AVertexFoundDeepIsLeftAloneUntilItLeaves) {
+  // Square B overlaps square A by d in x, a quarter up. The threshold is 0.1 of a unit square.
+  Squares s;
+  const double k = 300.0;
+  const auto place_b = [&](double d) {
+    s.x = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
+    for (const Point& c : {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)})
+      s.x.push_back(c + Point(1 - d, 0.25));
+  };
+  const SurfaceCells surface(s.mesh);
+  SurfaceContact contact(PenaltyContact(fixed(k)), 1.0);
+  const auto evaluate = [&](double d, std::vector<Point>& f) {
+    place_b(d);
+    PairState state;
+    state.position = s.x;
+    f.assign(8, Point::Zero());
+    return contact.add_forces(surface, state, f);
+  };
+  std::vector<Point> f;
+  // Found first at 0.3: both corners got in unseen, and neither is pushed.
+  ContactReport r = evaluate(0.3, f);
+  EXPECT_EQ(r.contacts, 0);
+  EXPECT_EQ(r.tunnelled, 2);
+  EXPECT_EQ(r.new_tunnels, 2);
+  for (const Point& x : f) EXPECT_EQ(x.norm(), 0.0);
+  r = evaluate(0.05, f);  // still inside, now shallow: still left alone
+  EXPECT_EQ(r.contacts, 0);
+  EXPECT_EQ(r.tunnelled, 2);
+  EXPECT_EQ(r.new_tunnels, 0);
+  r = evaluate(-0.01, f);  // out: forgotten
+  EXPECT_EQ(r.tunnelled, 0);
+  // Entering step by step, it is pushed at every depth, past the threshold too.
+  for (double d : {0.02, 0.06, 0.1, 0.15, 0.2}) {  // below 0.25, where the exit changes
+    r = evaluate(d, f);
+    EXPECT_EQ(r.contacts, 2) << d;
+    EXPECT_EQ(r.tunnelled, 0) << d;
+    EXPECT_NEAR(r.potential, k * d * d, 1e-12 * k) << d;
+  }
 }
 
 TEST(SurfaceContact, NodeOfTwoSurfaceCellsIsPushedOnce) {

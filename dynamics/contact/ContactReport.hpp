@@ -14,10 +14,14 @@ struct ContactReport {
   double potential = 0.0;          // sum of k d^2 / 2
   double dissipation_power = 0.0;  // sum of k_v <-v_n>^2 >= 0
   double max_depth = 0.0;
+  int tunnelled = 0;    // penetrations left alone: first found deeper than a step can go
+  int new_tunnels = 0;  // of those, the ones first found at this evaluation
 
   ContactReport& operator+=(const ContactReport& o) {
     candidates += o.candidates;
     contacts += o.contacts;
+    tunnelled += o.tunnelled;
+    new_tunnels += o.new_tunnels;
     potential += o.potential;
     dissipation_power += o.dissipation_power;
     max_depth = std::max(max_depth, o.max_depth);

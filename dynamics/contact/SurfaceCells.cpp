@@ -8,7 +8,10 @@
 namespace vorodg {
 
 SurfaceCells::SurfaceCells(const PolygonMesh& mesh)
-    : mesh_(&mesh), member_(mesh.num_cells(), 0), exposed_(mesh.offsets().back(), 0) {
+    : mesh_(&mesh),
+      member_(mesh.num_cells(), 0),
+      exposed_(mesh.offsets().back(), 0),
+      released_(mesh.num_edges(), 0) {
   for (int c = 0; c < mesh.num_cells(); ++c) {
     const auto edges = mesh.cell_edges(c);
     for (std::size_t k = 0; k < edges.size(); ++k)
@@ -31,18 +34,45 @@ bool SurfaceCells::add(int cell) {
   return true;
 }
 
-void SurfaceCells::expose(int edge) {
+void SurfaceCells::check_edge(int edge) const {
   if (edge < 0 || edge >= mesh_->num_edges())
     throw InputError("surface cells: edge " + std::to_string(edge) + " out of range [0, " +
                      std::to_string(mesh_->num_edges()) + ")");
+}
+
+int SurfaceCells::local_index(int cell, int edge) const {
+  const auto edges = mesh_->cell_edges(cell);
+  return static_cast<int>(std::find(edges.begin(), edges.end(), edge) - edges.begin());
+}
+
+void SurfaceCells::expose(int edge) {
+  check_edge(edge);
   const MeshEdge& e = mesh_->edge(edge);
   for (int c : {e.cell0, e.cell1}) {
     if (c < 0) continue;
-    const auto edges = mesh_->cell_edges(c);
-    const auto k = std::find(edges.begin(), edges.end(), edge) - edges.begin();
-    exposed_[mesh_->offsets()[c] + k] = 1;
+    exposed_[mesh_->offsets()[c] + local_index(c, edge)] = 1;
     add(c);
   }
+}
+
+void SurfaceCells::release(int edge) {
+  check_edge(edge);
+  const MeshEdge& e = mesh_->edge(edge);
+  if (e.on_boundary() || !exposed(e.cell0, local_index(e.cell0, edge)))
+    throw InputError("surface cells: edge " + std::to_string(edge) +
+                     " released: expected an exposed interior edge");
+  if (released_[edge]) return;
+  released_[edge] = 1;
+  ++num_released_;
+}
+
+bool SurfaceCells::released_between(int a, int b) const {
+  for (int e : mesh_->cell_edges(a)) {
+    if (!released_[e]) continue;
+    const MeshEdge& edge = mesh_->edge(e);
+    if ((edge.cell0 == a ? edge.cell1 : edge.cell0) == b) return true;
+  }
+  return false;
 }
 
 bool SurfaceCells::has_exposed_edge(int cell) const {
@@ -59,7 +89,7 @@ bool SurfaceCells::neighbours(int a, int b) const {
   for (int v : la) {
     bool shared = false;
     for (int w : lb) shared |= v == w;
-    if (shared) return true;
+    if (shared) return num_released_ == 0 || !released_between(a, b);
   }
   return false;
 }

@@ -8,8 +8,10 @@
 // cells touch along their common edge or vertex by construction, so every step would find them
 // "in contact" at zero depth, and round-off would turn that into spurious forces. Across a crack
 // between two such cells, overclosure is the cohesive law's business (its contact penalty in
-// the fracture code), not this module's. The price: two cells that share only a vertex, and
-// fragments that fold back onto a cell they once touched at a vertex, do not see each other.
+// the fracture code), not this module's, until the crack's faces have come apart and the law
+// releases them (`release`): from then on the two cells across that edge are tested like any
+// others. The price: two cells that share only a vertex, and fragments that fold back onto a
+// cell they once touched at a vertex alone, do not see each other.
 #include <span>
 #include <vector>
 
@@ -44,19 +46,30 @@ class SurfaceCells {
     return {exposed_.data() + o[cell], exposed_.data() + o[cell + 1]};
   }
   bool has_exposed_edge(int cell) const;
-  /// True if a and b share a vertex of the reference mesh (a cell is its own neighbour): such
-  /// cells are never tested against each other.
+  /// Mesh edge e, already exposed, has let go: the faces of its crack are apart, and its two
+  /// cells are no longer neighbours across it. Idempotent. Throws InputError for an edge that
+  /// is not an exposed interior edge.
+  void release(int edge);
+  /// True if a and b share a vertex of the reference mesh (a cell is its own neighbour) and no
+  /// released edge lies between them: such cells are never tested against each other.
   bool neighbours(int a, int b) const;
 
   const PolygonMesh& mesh() const { return *mesh_; }
 
  private:
   void check_cell(int cell) const;
+  void check_edge(int edge) const;
+  /// The position of `edge` in the loop of `cell`, which must have it.
+  int local_index(int cell, int edge) const;
+  /// Whether a and b, two cells, meet across a released edge.
+  bool released_between(int a, int b) const;
 
   const PolygonMesh* mesh_;
-  std::vector<char> member_;   // per cell
-  std::vector<int> cells_;     // members, in order of entry
-  std::vector<char> exposed_;  // per (cell, local edge), CSR like the cells' loops
+  std::vector<char> member_;    // per cell
+  std::vector<int> cells_;      // members, in order of entry
+  std::vector<char> exposed_;   // per (cell, local edge), CSR like the cells' loops
+  std::vector<char> released_;  // per mesh edge
+  int num_released_ = 0;
 };
 
 }  // namespace vorodg

@@ -1,6 +1,7 @@
 #include "dynamics/contact/SurfaceContact.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "core/util/Errors.hpp"
@@ -64,11 +65,28 @@ ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const Pair
   taken_.clear();
   ContactReport report;
   report.candidates = static_cast<int>(surface_pairs_.size());
+  inside_next_.clear();
+  tunnelled_next_.clear();
   for (const IndexPair& ij : surface_pairs_) {
     test_pass(surface, ij.first, ij.second, state, force, report);
     test_pass(surface, ij.second, ij.first, state, force, report);
   }
+  std::swap(inside_, inside_next_);
+  std::swap(tunnelled_, tunnelled_next_);
   return report;
+}
+
+bool SurfaceContact::tunnelled(std::uint64_t key, double depth, const PolygonMesh& mesh, int b,
+                               ContactReport& report) {
+  const bool known = tunnelled_.count(key) != 0;
+  if (!known && (inside_.count(key) || depth <= kTunnelDepth * std::sqrt(mesh.cell_area(b)))) {
+    inside_next_.insert(key);
+    return false;
+  }
+  tunnelled_next_.insert(key);
+  ++report.tunnelled;
+  report.new_tunnels += !known;
+  return true;
 }
 
 void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const PairState& state,
@@ -86,6 +104,8 @@ void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const 
     const auto pen = PolygonPenetration::of_point(loop_a[k], loop_b, exits);
     if (!pen) continue;
     const int p = base_a + static_cast<int>(k);
+    const auto entry = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint32_t>(b);
+    if (tunnelled(entry, pen->depth, mesh, b, report)) continue;
     const auto key =
         (static_cast<std::uint64_t>(state.node_of(p)) << 32) | static_cast<std::uint32_t>(b);
     if (!taken_.insert(key).second) continue;  // this node is already pushed out of b

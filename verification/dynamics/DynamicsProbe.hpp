@@ -26,12 +26,14 @@ struct DynamicsMeasures {
   double contact_start = NAN, contact_end = NAN;  // first and last step in contact
   double contact_time = NAN, contact_time_estimate = NAN;
   int contact_steps = 0;
-  bool contact_ended = true;  // no contact at the last step
+  double tunnelled_contacts = 0.0;  // vertices found first deep inside a cell, left alone
+  bool contact_ended = true;        // no contact at the last step
   // wall: normal speeds of the centre of mass, towards the wall at t = 0 and away at the end
   double impact_velocity = NAN, rebound_velocity = NAN, rebound_estimate = NAN;
   // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
   double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
   double cracked_edges = NAN, broken_edges = NAN;
+  double released_edges = NAN;           // broken faces let go to surface contact (CohesiveForces)
   double law_balance_error = NAN;        // max over steps, with the law's closed-form energies
   double law_balance_breach_time = NAN;  // first time it passed kLawBalanceLimit (NaN: never)
   // small rotations (CorotationalFrames::mean_rotation), sampled at the output steps; NaN under

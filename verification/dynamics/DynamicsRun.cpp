@@ -262,7 +262,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   const ContactForces* reports = run.contact();
   DynamicsProbe probe(scene, bodies, run);
   probe.observe();
-  if (cracks) cracks->observe(run.record());
+  if (cracks) cracks->check_balance(run.record());
   history.add(run.record(), reports);
   frame();
   snapshot();
@@ -275,11 +275,14 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
         run.step();
       const StepRecord& step = run.record();
       probe.observe();
-      if (cracks) cracks->observe(step);
+      if (cracks) cracks->integrate(step);
       const double energy = step.kinetic + step.elastic;
       const bool unstable = !std::isfinite(energy) || energy > kBlowUp * step.input_energy();
       const bool last = s == r.steps || unstable;
-      if (s % scene.history_every == 0 || last) history.add(step, reports);
+      if (s % scene.history_every == 0 || last) {
+        history.add(step, reports);
+        if (cracks) cracks->check_balance(step);
+      }
       if (s % scene.output_every == 0 || last) {
         probe.observe_rotation();
         history.flush();

@@ -35,10 +35,14 @@ class FragmentationRun {
               const MaterialVariation& variation, ContactForces* contact, int threads);
   /// One step of the run with the insertion check after it.
   void step();
-  /// After a step: the balance with the law's closed forms (kinetic + elastic + dissipated +
-  /// stored against what was put in), relative to the input energy; its largest value so far is
-  /// kept.
-  void observe(const StepRecord& record);
+  /// After every step: sums what accrues over time (contact damping's loss, by the rectangle
+  /// rule on the power; zero without damping).
+  void integrate(const StepRecord& record);
+  /// After a step (the run calls it at its history steps: the closed forms cost a pass over the
+  /// cracked edges): the balance with the closed forms of the cohesive law and of contact
+  /// (kinetic + elastic + dissipated + stored + contact springs + contact damping against what
+  /// was put in), relative to the input energy; its largest value so far is kept.
+  void check_balance(const StepRecord& record);
   /// For a .vtu frame: per cell its fragment (components across the fully broken edges) and its
   /// number of cracked edges.
   std::vector<VtuField> cell_fields(const LumpedMass& mass) const;
@@ -47,6 +51,9 @@ class FragmentationRun {
               DynamicsMeasures& m) const;
 
  private:
+  /// Surface and plane contact of the last evaluation together (empty without contact).
+  ContactReport contact_report() const;
+
   const PolygonMesh& mesh_;
   CohesiveLaw law_;
   MohrCoulomb criterion_;
@@ -55,8 +62,10 @@ class FragmentationRun {
   std::unique_ptr<CrackInsertion> insertion_;
   std::unique_ptr<DynamicFracture> fracture_;
   CentralDifference* run_ = nullptr;
+  const ContactForces* contact_ = nullptr;
   double start_ = 0.0, worst_balance_ = 0.0;
-  double breach_time_ = NAN;  // when the balance first passed kLawBalanceLimit
+  double contact_damped_ = 0.0, last_time_ = 0.0;  // contact damping's loss so far
+  double breach_time_ = NAN;                       // when the balance first passed kLawBalanceLimit
 };
 
 }  // namespace vorodg

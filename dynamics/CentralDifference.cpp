@@ -57,12 +57,19 @@ void CentralDifference::set_cohesive(CohesiveForces& cohesive) {
   cohesive_->bind(dofs_);
 }
 
-void CentralDifference::interface_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
+void CentralDifference::interface_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f,
+                                         bool openings_unchanged) {
+  // Contact is always evaluated: its mass-scaled stiffness follows the node masses, which a
+  // split changes.
   if (contact_)
     contact_->evaluate(u_, v, dt_, f);
   else
     f.setZero(dofs_.num_dofs());
-  if (cohesive_) cohesive_->evaluate(u_, f);
+  if (!cohesive_) return;
+  if (openings_unchanged)
+    cohesive_->reassemble(f);
+  else
+    cohesive_->evaluate(u_, f);
 }
 
 void CentralDifference::add_velocity_boundary(VelocityBoundary bc) {
@@ -117,7 +124,7 @@ void CentralDifference::restart(bool cells_unchanged) {
                                          : force_.compute(u_, f_int_, options_.threads);
   external_forces(record_.time, f_ext_);
   if (contact_) contact_->restart();  // the state may have jumped: a new work segment
-  interface_forces(v_, f_contact_);
+  interface_forces(v_, f_contact_, cells_unchanged);
   const double c = options_.damping;
   a_.resize(dofs_.num_dofs());
   for (int i = 0; i < dofs_.num_dofs(); ++i) {

@@ -114,8 +114,10 @@ class CentralDifference {
   void bind();
   void external_forces(double t, Eigen::VectorXd& f);
   /// Contact and cohesive forces at the current displacements and velocities v (zero without
-  /// either).
-  void interface_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f);
+  /// either). `openings_unchanged` (after a split): the faces' forces of the last evaluation
+  /// are gathered onto the current nodes instead of evaluated again.
+  void interface_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f,
+                        bool openings_unchanged = false);
   void boundary_values(double t, std::vector<double>& out) const;
   /// Accelerations, reactions, forces and the record's state at the current time from u_ and v_
   /// (after initialize or remap). `cells_unchanged`: every cell's displacements are those of the

@@ -145,17 +145,31 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       work -= 0.5 * w * (p.traction + tau).dot(d - p.opening);
       p.opening = d;
       p.traction = tau;
-      // The traction resists the opening: it pulls cell1's side back and cell0's side along.
-      const Eigen::Vector2d force = w * (tau[0] * face.n + tau[1] * face.t);
-      for (int j = 0; j < 2; ++j) {
-        const double share = j == 0 ? 1.0 - s : s;
-        f.segment<2>(2 * face.node1[j]) -= share * force;
-        f.segment<2>(2 * face.node0[j]) += share * force;
-      }
+      add_point_force(face, q, tau, f);
     }
     face.end_gap = std::min(jump[0].norm(), jump[1].norm());
   }
   work_ += work;
+}
+
+void CohesiveForces::add_point_force(const Face& face, int q, const Eigen::Vector2d& tau,
+                                     Eigen::VectorXd& f) {
+  const SegmentRule& rule = gauss2_segment();
+  const double s = rule.t[q], w = rule.weights[q] * face.length;
+  // The traction resists the opening: it pulls cell1's side back and cell0's side along.
+  const Eigen::Vector2d force = w * (tau[0] * face.n + tau[1] * face.t);
+  for (int j = 0; j < 2; ++j) {
+    const double share = j == 0 ? 1.0 - s : s;
+    f.segment<2>(2 * face.node1[j]) -= share * force;
+    f.segment<2>(2 * face.node0[j]) += share * force;
+  }
+}
+
+void CohesiveForces::reassemble(Eigen::VectorXd& f) const {
+  for (const Face& face : faces_) {
+    if (face.released) continue;
+    for (int q = 0; q < 2; ++q) add_point_force(face, q, face.points[q].traction, f);
+  }
 }
 
 bool CohesiveForces::releasable(int e) const {

@@ -87,6 +87,10 @@ class CohesiveForces {
   /// Adds to f (node DOFs of the bound map) the cohesive forces at node displacements u,
   /// advances the points' histories and books the work since the last evaluation.
   void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f);
+  /// Adds to f the forces of the last evaluation, onto the nodes of the map bound now: what
+  /// evaluate would add at unchanged openings (after a split, which copies the displacements),
+  /// bit for bit, without re-running the law or booking work.
+  void reassemble(Eigen::VectorXd& f) const;
 
   /// Work of the cohesive tractions on the body so far (<= 0 up to the discretization error).
   double work() const { return work_; }
@@ -127,6 +131,9 @@ class CohesiveForces {
     bool released = false;
   };
   static Face make_face(const PolygonMesh& mesh, int e);
+  /// Spreads point q's traction tau over the face's four bound nodes.
+  static void add_point_force(const Face& face, int q, const Eigen::Vector2d& tau,
+                              Eigen::VectorXd& f);
   /// The overclosure penalty's energy per unit area at an opening (normal, tangential).
   double closure_energy(const Eigen::Vector2d& opening) const;
   /// The penalty against overclosure: a fraction of K0. At K0 itself a closing face is a

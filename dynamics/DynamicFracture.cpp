@@ -1,5 +1,7 @@
 #include "dynamics/DynamicFracture.hpp"
 
+#include "core/util/Stopwatch.hpp"
+
 namespace vorodg {
 
 DynamicFracture::DynamicFracture(const PolygonMesh& mesh, CentralDifference& run,
@@ -16,11 +18,16 @@ DynamicFracture::DynamicFracture(const PolygonMesh& mesh, CentralDifference& run
 }
 
 int DynamicFracture::step(int threads) {
+  Stopwatch clock;
   run_.step();
   release_faces();
+  times_.integrator += clock.seconds();
+  clock.restart();
   const std::vector<CrackInsertion::Failure> failing =
       insertion_.failing_edges(run_.dofs(), run_.displacement(), cracked_, threads);
+  times_.check += clock.seconds();
   if (failing.empty()) return 0;
+  clock.restart();
   for (const CrackInsertion::Failure& f : failing) {
     cracked_[f.edge] = 1;
     cohesive_.add_edge(f.edge);
@@ -30,6 +37,7 @@ int DynamicFracture::step(int threads) {
   std::vector<char> connected(mesh_.num_edges());
   for (int e = 0; e < mesh_.num_edges(); ++e) connected[e] = !cracked_[e];
   run_.remap(SplitDofMap(mesh_, connected));
+  times_.rebuild += clock.seconds();
   return static_cast<int>(failing.size());
 }
 

@@ -52,6 +52,14 @@ class DynamicFracture {
   /// fragments, since a cohesive edge still holds its faces together.
   CrackState broken_state() const;
 
+  /// Wall seconds so far in each part of step(): the integrator's step with the faces'
+  /// release, the insertion check, and the rebuild after cracks (new faces, the split map and
+  /// the remap). What docs/performance.md quotes as the check's and the rebuild's share.
+  struct Times {
+    double integrator = 0.0, check = 0.0, rebuild = 0.0;
+  };
+  const Times& times() const { return times_; }
+
  private:
   /// Releases the faces that may let go (see Release above).
   void release_faces();
@@ -63,6 +71,7 @@ class DynamicFracture {
   ContactForces* contact_;
   std::vector<char> cracked_;
   std::vector<Event> events_;
+  Times times_;
 };
 
 }  // namespace vorodg

@@ -8,7 +8,8 @@
 //                             from the continuous map to one split at one edge in twenty
 //   BM_CrackingStep/N         DynamicFracture::step on a plate stretched in both directions until
 //                             it fragments: step, check, and a remap whenever cracks form
-//                             (counters: cracked edges and remaps per step)
+//                             (counters: cracked edges, remaps per step, and the shares of
+//                             the check and of the rebuild in its wall time)
 // Everything on one thread; items_per_second counts cell-steps (or cell-checks, cell-remaps).
 #include <benchmark/benchmark.h>
 
@@ -126,6 +127,8 @@ void BM_CrackingStep(benchmark::State& state) {
   const double rate = kStrength / (kE * 200.0 * m.dt);
   run->initialize(Eigen::VectorXd::Zero(run->dofs().num_dofs()), expansion(*run, rate));
   for (int s = 0; s < 150; ++s) fracture.step(1);  // up to just before the first cracks
+  const DynamicFracture::Times t0 = fracture.times();
+  const double all0 = t0.integrator + t0.check + t0.rebuild;
   long steps = 0, remaps = 0;
   for (auto _ : state) {
     remaps += fracture.step(1) > 0;
@@ -133,6 +136,11 @@ void BM_CrackingStep(benchmark::State& state) {
   }
   report(state, m.mesh.num_cells());
   state.counters["cracked_edges"] = static_cast<double>(cohesive.edges().size());
+  // The shares of the timed steps' wall time (the steps before the loop excluded).
+  const DynamicFracture::Times t = fracture.times();
+  const double all = t.integrator + t.check + t.rebuild;
+  state.counters["check_share"] = (t.check - t0.check) / (all - all0);
+  state.counters["rebuild_share"] = (t.rebuild - t0.rebuild) / (all - all0);
   state.counters["remaps_per_step"] = double(remaps) / double(std::max(steps, 1L));
 }
 

@@ -33,7 +33,9 @@ struct DynamicsMeasures {
   // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
   double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
   double cracked_edges = NAN, broken_edges = NAN;
-  double released_edges = NAN;           // broken faces let go to surface contact (CohesiveForces)
+  double released_edges = NAN;  // broken faces let go to surface contact (CohesiveForces)
+  // wall seconds in the insertion check and in the rebuilds after cracks (DynamicFracture)
+  double check_seconds = NAN, rebuild_seconds = NAN;
   double law_balance_error = NAN;        // max over steps, with the law's closed-form energies
   double law_balance_breach_time = NAN;  // first time it passed kLawBalanceLimit (NaN: never)
   // small rotations (CorotationalFrames::mean_rotation), sampled at the output steps; NaN under

@@ -48,6 +48,8 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"cracked_edges", &M::cracked_edges},
       {"broken_edges", &M::broken_edges},
       {"released_edges", &M::released_edges},
+      {"check_seconds", &M::check_seconds},
+      {"rebuild_seconds", &M::rebuild_seconds},
       {"law_balance_error", &M::law_balance_error},
       {"law_balance_breach_time", &M::law_balance_breach_time},
       {"max_rotation", &M::max_rotation},

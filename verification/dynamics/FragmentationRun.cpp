@@ -109,6 +109,8 @@ void FragmentationRun::finish(const fs::path& out, const std::string& id, const 
   m.cracked_edges = static_cast<double>(cohesive_->edges().size());
   m.broken_edges = cohesive_->num_broken();
   m.released_edges = static_cast<double>(cohesive_->released_edges().size());
+  m.check_seconds = fracture_->times().check;
+  m.rebuild_seconds = fracture_->times().rebuild;
   m.law_balance_error = worst_balance_;
   m.law_balance_breach_time = breach_time_;
   const Eigen::Matrix2Xd v = pieces.velocities(run_->dofs(), run_->velocity());

@@ -12,8 +12,9 @@ DynamicFracture::DynamicFracture(const PolygonMesh& mesh, CentralDifference& run
       cohesive_(cohesive),
       insertion_(insertion),
       contact_(contact),
-      cracked_(mesh.num_edges(), 0) {
-  for (int e : cohesive.edges()) cracked_[e] = 1;
+      cracked_(mesh.num_edges(), 0),
+      connected_(mesh.num_edges(), 1) {
+  for (int e : cohesive.edges()) cracked_[e] = 1, connected_[e] = 0;
   run_.set_cohesive(cohesive_);
 }
 
@@ -28,15 +29,25 @@ int DynamicFracture::step(int threads) {
   times_.check += clock.seconds();
   if (failing.empty()) return 0;
   clock.restart();
+  std::vector<int> edges;
   for (const CrackInsertion::Failure& f : failing) {
     cracked_[f.edge] = 1;
+    connected_[f.edge] = 0;
+    edges.push_back(f.edge);
     cohesive_.add_edge(f.edge);
     if (contact_) contact_->surface().expose(f.edge);
     events_.push_back({run_.step_count(), f.edge});
   }
-  std::vector<char> connected(mesh_.num_edges());
-  for (int e = 0; e < mesh_.num_edges(); ++e) connected[e] = !cracked_[e];
-  run_.remap(SplitDofMap(mesh_, connected));
+  // The first rebuild starts from the edge set alone, whatever map the run began with; after
+  // it only the classes at the new cracks' vertices change (SplitDofMap::disconnect).
+  if (!split_yet_) {
+    run_.remap(SplitDofMap(mesh_, connected_));
+    split_yet_ = true;
+  } else {
+    SplitDofMap split = run_.dofs();
+    split.disconnect(mesh_, connected_, edges);
+    run_.remap(std::move(split));
+  }
   times_.rebuild += clock.seconds();
   return static_cast<int>(failing.size());
 }

@@ -70,6 +70,8 @@ class DynamicFracture {
   const CrackInsertion& insertion_;
   ContactForces* contact_;
   std::vector<char> cracked_;
+  std::vector<char> connected_;  // !cracked_: the edge set of the DOF map
+  bool split_yet_ = false;       // whether the run's map was built from connected_
   std::vector<Event> events_;
   Times times_;
 };

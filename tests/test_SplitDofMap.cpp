@@ -1,7 +1,8 @@
 // The split DOF map's two ends and a line between them: all edges connected is the continuous
 // space (a node per vertex), none the discontinuous one (a node per cell corner), and a straight
 // line of split edges doubles exactly the vertices strictly inside the domain on it, plus the two
-// on its ends at the boundary.
+// on its ends at the boundary; disconnecting edges batch by batch gives the map built from
+// scratch.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
+#include "core/util/Random.hpp"
 
 namespace vorodg {
 namespace {
@@ -82,6 +84,34 @@ TEST(SplitDofMap, ALoneSplitEdgeInsideTheBodyCannotOpen) {
   const SplitDofMap map(mesh, connected);
   EXPECT_EQ(map.num_nodes(), mesh.num_vertices());
   EXPECT_TRUE(map.joins(mesh, inner));
+}
+
+TEST(SplitDofMap, DisconnectingEdgesGivesTheMapBuiltFromScratch) {
+  // Random batches of cracks, as fracture makes them: after each batch the updated map must be
+  // the constructor's, node for node, and so must every vertex's node list.
+  for (MeshFamily f : {MeshFamily::rcp, MeshFamily::quad, MeshFamily::perturbed_hex}) {
+    const PolygonMesh& mesh = mesh_of(f).mesh;
+    Random random(31);
+    std::vector<char> connected(mesh.num_edges(), 1);
+    SplitDofMap map = SplitDofMap::continuous(mesh);
+    for (int batch = 0; batch < 40; ++batch) {
+      std::vector<int> cracks;
+      for (int e = 0; e < mesh.num_edges(); ++e)
+        if (connected[e] && random.uniform() < 0.03) cracks.push_back(e);
+      for (int e : cracks) connected[e] = 0;
+      map.disconnect(mesh, connected, cracks);
+      const SplitDofMap fresh(mesh, connected);
+      ASSERT_EQ(map.num_nodes(), fresh.num_nodes()) << "batch " << batch;
+      for (int c = 0; c < mesh.num_cells(); ++c)
+        for (int k = 0; k < mesh.cell_size(c); ++k)
+          ASSERT_EQ(map.node(c, k), fresh.node(c, k)) << "cell " << c << ", vertex " << k;
+      for (int v = 0; v < mesh.num_vertices(); ++v) {
+        const auto a = map.vertex_nodes(v), b = fresh.vertex_nodes(v);
+        ASSERT_EQ(std::vector<int>(a.begin(), a.end()), std::vector<int>(b.begin(), b.end()));
+      }
+    }
+    EXPECT_GT(map.num_nodes(), 2 * mesh.num_vertices());  // the batches split a good part
+  }
 }
 
 TEST(SplitDofMap, RefusesFlagsOfTheWrongLength) {

@@ -41,31 +41,69 @@ SplitDofMap::SplitDofMap(const PolygonMesh& mesh, const std::vector<char>& conne
     for (int v : {edge.v0, edge.v1})
       pairs.join(pair_of(edge.cell0, local0[e], v), pair_of(edge.cell1, local1[e], v));
   }
-  node_ = pairs.labels(&num_nodes_);  // numbered in order of each class's smallest pair
-  // Per vertex its nodes, ascending: the pairs bucketed by vertex, then sorted and deduplicated
-  // in place.
+  first_.resize(offsets_.back());
+  for (int p = 0; p < offsets_.back(); ++p) first_[p] = pairs.root(p);  // roots are smallest
+  number(mesh);
+}
+
+void SplitDofMap::number(const PolygonMesh& mesh) {
+  // first_[p] <= p, so a class's node is known by the time its later pairs come.
+  node_.resize(first_.size());
+  num_nodes_ = 0;
+  for (std::size_t p = 0; p < first_.size(); ++p)
+    node_[p] = first_[p] == static_cast<int>(p) ? num_nodes_++ : node_[first_[p]];
+  // Per vertex its nodes, ascending: a counting sort of the classes' first pairs by vertex, in
+  // pair order, which is node order.
   const std::vector<int>& vertex_of_pair = mesh.cell_vertex_list();
   const int nv = mesh.num_vertices();
   vertex_offsets_.assign(nv + 1, 0);
-  for (int v : vertex_of_pair) ++vertex_offsets_[v + 1];
+  for (std::size_t p = 0; p < first_.size(); ++p)
+    if (first_[p] == static_cast<int>(p)) ++vertex_offsets_[vertex_of_pair[p] + 1];
   for (int v = 0; v < nv; ++v) vertex_offsets_[v + 1] += vertex_offsets_[v];
-  vertex_nodes_.resize(vertex_of_pair.size());
+  vertex_nodes_.resize(num_nodes_);
   std::vector<int> next(vertex_offsets_.begin(), vertex_offsets_.end() - 1);
-  for (std::size_t p = 0; p < vertex_of_pair.size(); ++p)
-    vertex_nodes_[next[vertex_of_pair[p]]++] = node_[p];
-  int read = 0, write = 0;
-  for (int v = 0; v < nv; ++v) {
-    const int end = vertex_offsets_[v + 1];
-    std::sort(vertex_nodes_.begin() + read, vertex_nodes_.begin() + end);
-    const int last =
-        static_cast<int>(std::unique(vertex_nodes_.begin() + read, vertex_nodes_.begin() + end) -
-                         vertex_nodes_.begin());
-    vertex_offsets_[v] = write;
-    for (int p = read; p < last; ++p) vertex_nodes_[write++] = vertex_nodes_[p];
-    read = end;
+  for (std::size_t p = 0; p < first_.size(); ++p)
+    if (first_[p] == static_cast<int>(p)) vertex_nodes_[next[vertex_of_pair[p]]++] = node_[p];
+}
+
+void SplitDofMap::disconnect(const PolygonMesh& mesh, const std::vector<char>& connected,
+                             std::span<const int> edges) {
+  if (static_cast<int>(connected.size()) != mesh.num_edges())
+    throw InputError("split DOF map: " + std::to_string(connected.size()) +
+                     " edge flags for a mesh of " + std::to_string(mesh.num_edges()) + " edges");
+  std::vector<int> vertices;
+  for (int e : edges) {
+    if (e < 0 || e >= mesh.num_edges())
+      throw InputError("split DOF map: edge " + std::to_string(e) + " out of range [0, " +
+                       std::to_string(mesh.num_edges()) + ")");
+    vertices.push_back(mesh.edge(e).v0);
+    vertices.push_back(mesh.edge(e).v1);
   }
-  vertex_offsets_[nv] = write;
-  vertex_nodes_.resize(write);
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  for (int v : vertices) reclass(mesh, connected, v);
+  number(mesh);
+}
+
+void SplitDofMap::reclass(const PolygonMesh& mesh, const std::vector<char>& connected, int v) {
+  // The pairs at v, in increasing order, and a union-find over their positions in that list.
+  const auto cells = mesh.vertex_cells(v);
+  const int n = static_cast<int>(cells.size());
+  std::vector<int> pair(n);
+  for (int i = 0; i < n; ++i) pair[i] = offsets_[cells[i]] + local_index(mesh, cells[i], v);
+  UnionFind around(n);
+  for (int i = 0; i < n; ++i) {
+    // The two edges of cell i at v: its local edges k - 1 and k, k the position of v.
+    const int c = cells[i], k = pair[i] - offsets_[c], size = mesh.cell_size(c);
+    for (int e : {mesh.cell_edges(c)[k], mesh.cell_edges(c)[(k + size - 1) % size]}) {
+      const MeshEdge& edge = mesh.edge(e);
+      if (edge.on_boundary() || !connected[e]) continue;
+      const int other = edge.cell0 == c ? edge.cell1 : edge.cell0;
+      const int j = static_cast<int>(std::find(cells.begin(), cells.end(), other) - cells.begin());
+      around.join(i, j);
+    }
+  }
+  for (int i = 0; i < n; ++i) first_[pair[i]] = pair[around.root(i)];
 }
 
 SplitDofMap SplitDofMap::continuous(const PolygonMesh& mesh) {

@@ -60,6 +60,12 @@ class ContactForces {
   /// Of the last evaluation: between surface cells, and against the planes.
   const ContactReport& surface_report() const { return surface_report_; }
   const ContactReport& plane_report() const { return plane_report_; }
+  /// Both together.
+  ContactReport report() const {
+    ContactReport all = surface_report_;
+    all += plane_report_;
+    return all;
+  }
   /// Net force of the planes on the mesh at the last evaluation.
   const Point& plane_force() const { return plane_force_; }
   /// Per pair (the mesh's CSR layout), the contact forces of the last evaluation.

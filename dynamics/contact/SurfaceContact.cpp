@@ -9,6 +9,11 @@
 namespace vorodg {
 namespace {
 
+/// One 64-bit key for (a pair or a node, a target cell).
+std::uint64_t key_of(int who, int cell) {
+  return (static_cast<std::uint64_t>(who) << 32) | static_cast<std::uint32_t>(cell);
+}
+
 std::span<const Point> loop_of(const PolygonMesh& mesh, std::span<const Point> position, int c) {
   return position.subspan(mesh.offsets()[c], mesh.cell_size(c));
 }
@@ -104,11 +109,9 @@ void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const 
     const auto pen = PolygonPenetration::of_point(loop_a[k], loop_b, exits);
     if (!pen) continue;
     const int p = base_a + static_cast<int>(k);
-    const auto entry = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint32_t>(b);
-    if (tunnelled(entry, pen->depth, mesh, b, report)) continue;
-    const auto key =
-        (static_cast<std::uint64_t>(state.node_of(p)) << 32) | static_cast<std::uint32_t>(b);
-    if (!taken_.insert(key).second) continue;  // this node is already pushed out of b
+    if (tunnelled(key_of(p, b), pen->depth, mesh, b, report)) continue;
+    if (!taken_.insert(key_of(state.node_of(p), b)).second)
+      continue;  // this node is already pushed out of b
     const auto r =
         law_.apply(*pen, p, base_b + pen->edge, base_b + (pen->edge + 1) % nb, state, force);
     ++report.contacts;

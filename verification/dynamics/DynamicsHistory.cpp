@@ -19,11 +19,7 @@ const char* DynamicsHistory::columns() {
 }
 
 void DynamicsHistory::add(const StepRecord& r, const ContactForces* contact) {
-  ContactReport c;
-  if (contact) {
-    c = contact->surface_report();
-    c += contact->plane_report();
-  }
+  const ContactReport c = contact ? contact->report() : ContactReport{};
   // The prescribed velocities' reactions are work done on the body from outside, like loads.
   const double external = r.external_work + r.reaction_work;
   const double drift = r.balance() - r.initial_balance;

@@ -61,17 +61,8 @@ void FragmentationRun::step() {
   fracture_->step(1);
 }
 
-ContactReport FragmentationRun::contact_report() const {
-  ContactReport c;
-  if (contact_) {
-    c = contact_->surface_report();
-    c += contact_->plane_report();
-  }
-  return c;
-}
-
 void FragmentationRun::integrate(const StepRecord& r) {
-  contact_damped_ += contact_report().dissipation_power * (r.time - last_time_);
+  if (contact_) contact_damped_ += contact_->report().dissipation_power * (r.time - last_time_);
   last_time_ = r.time;
 }
 
@@ -79,7 +70,7 @@ void FragmentationRun::check_balance(const StepRecord& r) {
   if (r.step == 0) start_ = r.kinetic + r.elastic;
   // Contact by its closed form too: the energy in its springs now, and what its damping has
   // taken. Its booked work would hide energy that a penalty switching on at depth creates.
-  const double contact = contact_report().potential + contact_damped_;
+  const double contact = contact_ ? contact_->report().potential + contact_damped_ : 0.0;
   const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
                       cohesive_->stored_energy() + r.damping_dissipation + contact;
   const double put_in = start_ + r.external_work + r.reaction_work;

@@ -51,9 +51,6 @@ class FragmentationRun {
               DynamicsMeasures& m) const;
 
  private:
-  /// Surface and plane contact of the last evaluation together (empty without contact).
-  ContactReport contact_report() const;
-
   const PolygonMesh& mesh_;
   CohesiveLaw law_;
   MohrCoulomb criterion_;

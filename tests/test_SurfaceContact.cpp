@@ -225,6 +225,60 @@ TEST(SurfaceContact, AVertexFoundDeepIsLeftAloneUntilItLeaves) {
   }
 }
 
+TEST(SurfaceContact, AVertexFoundLateIsPushedOnlyBeyondItsFirstDepth) {
+  // As above, with B approaching at w: a step of dt reaches 2 w dt = 0.02 (kReachSlack = 2).
+  Squares s;
+  const double k = 300.0, w = 1.0, dt = 0.01;
+  std::vector<Point> v(4, Point::Zero());
+  v.resize(8, Point(-w, 0));
+  const SurfaceCells surface(s.mesh);
+  SurfaceContact contact(PenaltyContact(fixed(k)), 1.0);
+  std::vector<Point> f;
+  const auto evaluate = [&](double d) {
+    s.x = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
+    for (const Point& c : {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)})
+      s.x.push_back(c + Point(1 - d, 0.25));
+    PairState state;
+    state.position = s.x;
+    state.velocity = v;
+    state.dt = dt;
+    f.assign(8, Point::Zero());
+    return contact.add_forces(surface, state, f);
+  };
+  const double tol = 1e-12 * k;
+  // Found first at 0.05: the law acts on the 0.02 a step could reach, both corners.
+  ContactReport r = evaluate(0.05);
+  EXPECT_EQ(r.contacts, 2);
+  EXPECT_EQ(r.late, 2);
+  EXPECT_EQ(r.new_late, 2);
+  EXPECT_EQ(r.tunnelled, 0);
+  EXPECT_NEAR(r.potential, k * 0.02 * 0.02, tol);
+  EXPECT_NEAR(f[2].x(), -1.25 * k * 0.02, tol);
+  r = evaluate(0.08);  // deeper: the offset 0.03 stays
+  EXPECT_EQ(r.new_late, 0);
+  EXPECT_NEAR(r.potential, k * 0.05 * 0.05, tol);
+  r = evaluate(0.04);  // backing out: still 0.03
+  EXPECT_NEAR(r.potential, k * 0.01 * 0.01, tol);
+  r = evaluate(0.02);  // shallower than the offset: it shrinks to 0.02, and no force
+  EXPECT_EQ(r.potential, 0.0);
+  for (const Point& x : f) EXPECT_EQ(x.norm(), 0.0);
+  r = evaluate(0.05);  // in again from 0.02
+  EXPECT_NEAR(r.potential, k * 0.03 * 0.03, tol);
+  r = evaluate(-0.01);  // out: forgotten
+  EXPECT_EQ(r.contacts, 0);
+  EXPECT_EQ(r.late, 0);
+  // Found first within a step's reach: the whole depth, as for any contact.
+  r = evaluate(0.015);
+  EXPECT_EQ(r.late, 0);
+  EXPECT_NEAR(r.potential, k * 0.015 * 0.015, tol);
+  // Receding, a corner found inside got there some other way: no force until it goes deeper.
+  evaluate(-0.01);
+  std::fill(v.begin() + 4, v.end(), Point(w, 0));
+  r = evaluate(0.015);
+  EXPECT_EQ(r.late, 2);
+  EXPECT_EQ(r.potential, 0.0);
+}
+
 TEST(SurfaceContact, NodeOfTwoSurfaceCellsIsPushedOnce) {
   // Body A: two unit squares sharing the top vertex (1, 1); body B: a square pressing on it.
   const PolygonMesh mesh(Rectangle(0, 0, 4, 1),

@@ -16,12 +16,16 @@ struct ContactReport {
   double max_depth = 0.0;
   int tunnelled = 0;    // penetrations left alone: first found deeper than a step can go
   int new_tunnels = 0;  // of those, the ones first found at this evaluation
+  int late = 0;         // contacts found first deeper than a step goes: acting beyond that depth
+  int new_late = 0;     // of those, the ones first found at this evaluation
 
   ContactReport& operator+=(const ContactReport& o) {
     candidates += o.candidates;
     contacts += o.contacts;
     tunnelled += o.tunnelled;
     new_tunnels += o.new_tunnels;
+    late += o.late;
+    new_late += o.new_late;
     potential += o.potential;
     dissipation_power += o.dissipation_power;
     max_depth = std::max(max_depth, o.max_depth);

@@ -53,18 +53,20 @@ PenaltyContact::Response PenaltyContact::respond(double depth, double approach_r
   return {k * depth + c * rate, 0.5 * k * depth * depth, c * rate * rate};
 }
 
+double PenaltyContact::approach_rate(const Penetration& pen, int p, int e0, int e1,
+                                     const PairState& state) {
+  if (state.velocity.empty()) return 0.0;
+  const Point vq = (1.0 - pen.t) * state.velocity[e0] + pen.t * state.velocity[e1];
+  return -(state.velocity[p] - vq).dot(pen.normal);
+}
+
 PenaltyContact::Response PenaltyContact::apply(const Penetration& pen, int p, int e0, int e1,
                                                const PairState& state,
                                                std::span<Point> force) const {
   double mass = 0.0;
   if (!state.mass.empty())
     mass = reduced_mass(state.mass[p], std::min(state.mass[e0], state.mass[e1]));
-  double rate = 0.0;
-  if (!state.velocity.empty()) {
-    const Point vq = (1.0 - pen.t) * state.velocity[e0] + pen.t * state.velocity[e1];
-    rate = -(state.velocity[p] - vq).dot(pen.normal);
-  }
-  const Response r = respond(pen.depth, rate, mass, state.dt);
+  const Response r = respond(pen.depth, approach_rate(pen, p, e0, e1, state), mass, state.dt);
   const Point f = r.force * pen.normal;
   const Point f1 = -pen.t * f;
   force[p] += f;

@@ -76,6 +76,11 @@ class PenaltyContact {
   /// and step dt.
   Response respond(double depth, double approach_rate, double mass, double dt) const;
 
+  /// -v_n: how fast pair `p` approaches the point q of its penetration `pen` into the edge of
+  /// pairs `e0`, `e1` (> 0 while the depth grows); 0 when the state has no velocities.
+  static double approach_rate(const Penetration& pen, int p, int e0, int e1,
+                              const PairState& state);
+
   /// Applies one vertex-to-edge penetration: F n to pair `p`, and -F n split (1 - t, t) over the
   /// pairs `e0`, `e1` at the ends of the penetrated edge. Adds to `force` (one entry per pair).
   Response apply(const Penetration& pen, int p, int e0, int e1, const PairState& state,

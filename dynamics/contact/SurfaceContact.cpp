@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/util/Errors.hpp"
@@ -81,17 +82,30 @@ ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const Pair
   return report;
 }
 
-bool SurfaceContact::tunnelled(std::uint64_t key, double depth, const PolygonMesh& mesh, int b,
-                               ContactReport& report) {
-  const bool known = tunnelled_.count(key) != 0;
-  if (!known && (inside_.count(key) || depth <= kTunnelDepth * std::sqrt(mesh.cell_area(b)))) {
-    inside_next_.insert(key);
-    return false;
+std::optional<double> SurfaceContact::acting_depth(std::uint64_t key, double depth, double reach,
+                                                   const PolygonMesh& mesh, int b,
+                                                   ContactReport& report) {
+  const bool known_tunnel = tunnelled_.count(key) != 0;
+  if (!known_tunnel) {
+    double offset = 0.0;
+    if (const auto known = inside_.find(key); known != inside_.end()) {
+      offset = std::min(known->second, depth);  // the least depth seen
+    } else if (depth <= kTunnelDepth * std::sqrt(mesh.cell_area(b))) {
+      offset = std::max(depth - reach, 0.0);
+      report.new_late += offset > 0.0;
+    } else {
+      offset = -1.0;  // tunnelled
+    }
+    if (offset >= 0.0) {
+      inside_next_.emplace(key, offset);
+      report.late += offset > 0.0;
+      return depth - offset;
+    }
   }
   tunnelled_next_.insert(key);
   ++report.tunnelled;
-  report.new_tunnels += !known;
-  return true;
+  report.new_tunnels += !known_tunnel;
+  return std::nullopt;
 }
 
 void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const PairState& state,
@@ -109,11 +123,19 @@ void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const 
     const auto pen = PolygonPenetration::of_point(loop_a[k], loop_b, exits);
     if (!pen) continue;
     const int p = base_a + static_cast<int>(k);
-    if (tunnelled(key_of(p, b), pen->depth, mesh, b, report)) continue;
+    const int e0 = base_b + pen->edge, e1 = base_b + (pen->edge + 1) % nb;
+    const double reach =
+        state.velocity.empty()
+            ? std::numeric_limits<double>::infinity()
+            : kReachSlack * state.dt *
+                  std::max(PenaltyContact::approach_rate(*pen, p, e0, e1, state), 0.0);
+    const auto depth = acting_depth(key_of(p, b), pen->depth, reach, mesh, b, report);
+    if (!depth) continue;
     if (!taken_.insert(key_of(state.node_of(p), b)).second)
       continue;  // this node is already pushed out of b
-    const auto r =
-        law_.apply(*pen, p, base_b + pen->edge, base_b + (pen->edge + 1) % nb, state, force);
+    Penetration acting = *pen;
+    acting.depth = *depth;
+    const auto r = law_.apply(acting, p, e0, e1, state, force);
     ++report.contacts;
     report.potential += r.potential;
     report.dissipation_power += r.dissipation_power;

@@ -10,16 +10,28 @@
 // (node, B); the others are skipped. Without this, a vertex shared by two surface cells would be
 // pushed twice as hard, and the mass-scaled stiffness would lose its stability margin.
 //
-// Tunnelled vertices are left alone. A vertex enters a cell at a depth of about one step's
-// motion, far below a tenth of the cell's size unless the two move apart at a good fraction of
-// the wave speed. A vertex first found deeper than that (kTunnelDepth) got in unseen: through a
-// cell the neighbour filter hides from it, or before a crack made the cell a surface cell. The
-// penalty would push it out with k d^2 / 2 of energy made from nothing (a tenth of the cell's
-// size is 10^3 times the input energy of a falling column, measured). So it gets no force, for
-// as long as it stays inside; the report counts it (`tunnelled`, `new_tunnels`). Penetrations are
-// tracked from one evaluation to the next by (pair, target cell), which a remap does not change.
+// A vertex found inside a cell for the first time should be there by one step's motion: its
+// depth is at most its approach speed times dt (central differences move it by dt v_half, and v
+// is that v_half). A vertex found deeper got in unseen: through a cell the neighbour filter
+// hides from it, or before a crack made its target a surface cell, or before a released face let
+// its two cells see each other. Pushing it out from that depth would make k d^2 / 2 of energy
+// from nothing (measured: a tenth of a cell's size is 10^3 times the input energy of a falling
+// column; a twentieth, 6 % of it). Two cases:
+//  - Late contacts: first found deeper than kReachSlack times the step's approach, yet within
+//    kTunnelDepth of the cell's size. The law acts on the depth beyond the one it was found at
+//    (the offset), so the contact stops it going deeper and stores nothing it was not given.
+//    The offset shrinks as the vertex backs out (it is the least depth seen), and the contact
+//    is forgotten once the vertex is out. The report counts them (`late`, `new_late`).
+//  - Tunnelled vertices: first found deeper than kTunnelDepth of the cell's size. Such a vertex
+//    is deep in the body, where the nearest exit says little about how it got there, so it gets
+//    no force for as long as it stays inside (`tunnelled`, `new_tunnels`).
+// Without velocities in the state every first finding within kTunnelDepth is taken as it is.
+// Penetrations are tracked from one evaluation to the next by (pair, target cell), which a remap
+// does not change.
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -58,14 +70,18 @@ class SurfaceContact {
   /// Pushes the vertices of surface cell i out of surface cell j (indices in surface order).
   void test_pass(const SurfaceCells& surface, int i, int j, const PairState& state,
                  std::span<Point> force, ContactReport& report);
-  /// Whether the penetration `key` ((pair, target cell)) at `depth` into cell b is a tunnelled
-  /// one (see above); records it for the next evaluation either way.
-  bool tunnelled(std::uint64_t key, double depth, const PolygonMesh& mesh, int b,
-                 ContactReport& report);
+  /// The depth the law acts on for the penetration `key` ((pair, target cell)) found at
+  /// `depth` into cell b, whose first finding could have reached `reach`: beyond its offset, or
+  /// none if it is a tunnelled one (see above). Records it for the next evaluation either way.
+  std::optional<double> acting_depth(std::uint64_t key, double depth, double reach,
+                                     const PolygonMesh& mesh, int b, ContactReport& report);
 
   /// A first depth beyond this fraction of the target's size (the root of its reference area)
   /// is a tunnelled vertex.
   static constexpr double kTunnelDepth = 0.1;
+  /// A first depth beyond this multiple of the step's approach (|v_n| dt) is a late contact.
+  /// 2 leaves room for the target edge turning and bending within the step.
+  static constexpr double kReachSlack = 2.0;
 
   PenaltyContact law_;
   ContactGrid grid_;
@@ -74,8 +90,9 @@ class SurfaceContact {
   std::vector<IndexPair> cell_pairs_;        // mesh cell ids
   std::unordered_set<std::uint64_t> taken_;  // (node, target cell) keys of this step
   // (pair, target cell) keys of the penetrations found at the last evaluation and at this one:
-  // those that got a force, and those left alone as tunnelled.
-  std::unordered_set<std::uint64_t> inside_, inside_next_, tunnelled_, tunnelled_next_;
+  // those that got a force, with their offsets, and those left alone as tunnelled.
+  std::unordered_map<std::uint64_t, double> inside_, inside_next_;
+  std::unordered_set<std::uint64_t> tunnelled_, tunnelled_next_;
 };
 
 }  // namespace vorodg

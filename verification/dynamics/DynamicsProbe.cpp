@@ -83,6 +83,7 @@ void DynamicsProbe::observe_contact() {
   m_.max_penetration = std::max({m_.max_penetration, a.max_depth, b.max_depth});
   m_.max_penetration_over_h = m_.max_penetration / bodies_.h_avg;
   m_.tunnelled_contacts += a.new_tunnels;
+  m_.late_contacts += a.new_late;
   in_contact_ = a.contacts + b.contacts > 0;
   if (!in_contact_) return;
   if (std::isnan(m_.contact_start)) m_.contact_start = run_.time();

@@ -27,6 +27,7 @@ struct DynamicsMeasures {
   double contact_time = NAN, contact_time_estimate = NAN;
   int contact_steps = 0;
   double tunnelled_contacts = 0.0;  // vertices found first deep inside a cell, left alone
+  double late_contacts = 0.0;       // found first deeper than a step goes: act beyond that
   bool contact_ended = true;        // no contact at the last step
   // wall: normal speeds of the centre of mass, towards the wall at t = 0 and away at the end
   double impact_velocity = NAN, rebound_velocity = NAN, rebound_estimate = NAN;

@@ -37,6 +37,7 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"max_penetration", &M::max_penetration},
       {"max_penetration_over_h", &M::max_penetration_over_h},
       {"tunnelled_contacts", &M::tunnelled_contacts},
+      {"late_contacts", &M::late_contacts},
       {"impact_velocity", &M::impact_velocity},
       {"rebound_velocity", &M::rebound_velocity},
       {"rebound_estimate", &M::rebound_estimate},

@@ -22,7 +22,6 @@ CentralDifference::CentralDifference(const PolygonMesh& mesh, const LumpedMass& 
 }
 
 void CentralDifference::bind() {
-  force_.bind(dofs_);
   mass_node_ = mass_.node_masses(dofs_);
   node_vertex_.assign(dofs_.num_nodes(), -1);
   for (int c = 0; c < mesh_.num_cells(); ++c)
@@ -120,8 +119,12 @@ void CentralDifference::initialize(const Eigen::VectorXd& u0, const Eigen::Vecto
 }
 
 void CentralDifference::restart(bool cells_unchanged) {
-  const double elastic = cells_unchanged ? force_.reassemble(f_int_, options_.threads)
-                                         : force_.compute(u_, f_int_, options_.threads);
+  const double elastic = cells_unchanged ? force_.reassemble(dofs_, f_int_, options_.threads)
+                                         : force_.compute(dofs_, u_, f_int_, options_.threads);
+  restart_from(elastic, cells_unchanged);
+}
+
+void CentralDifference::restart_from(double elastic, bool cells_unchanged) {
   external_forces(record_.time, f_ext_);
   if (contact_) contact_->restart();  // the state may have jumped: a new work segment
   interface_forces(v_, f_contact_, cells_unchanged);
@@ -177,7 +180,7 @@ const StepRecord& CentralDifference::step() {
     u_[i] += dt_ * v_half_[i];
   }
   const double t_next = double(n + 1) * dt_;
-  const double elastic = force_.compute(u_, f_int_, threads);
+  const double elastic = force_.compute(dofs_, u_, f_int_, threads);
   external_forces(t_next, f_ext_next_);
   interface_forces(v_half_, f_contact_next_);
   boundary_values(t_next + 0.5 * dt_, vbar_next_half_);
@@ -257,6 +260,37 @@ void CentralDifference::remap(SplitDofMap dofs) {
   }
   // A split leaves every cell's displacements as they were at the last force evaluation.
   restart(split);
+  record_.remap_energy += record_.kinetic_leapfrog + record_.elastic - before;
+}
+
+void CentralDifference::disconnect(const std::vector<char>& connected, std::span<const int> edges) {
+  if (!initialized_) throw InputError("central difference: disconnect() before initialize()");
+  const double before = record_.kinetic_leapfrog + record_.elastic;
+  const int old_nodes = dofs_.num_nodes();
+  const SplitDofMap::Split split = dofs_.disconnect(mesh_, connected, edges);
+  const int nodes = dofs_.num_nodes();
+  // A split-off node copies its source's state, so every cell keeps its displacements.
+  node_vertex_.resize(nodes);
+  prescribed_.resize(2 * nodes);
+  for (Eigen::VectorXd* x : {&u_, &v_, &f_int_}) x->conservativeResize(2 * nodes);
+  for (int j = old_nodes; j < nodes; ++j) {
+    const int from = split.source[j - old_nodes];
+    node_vertex_[j] = node_vertex_[from];
+    for (int d = 0; d < 2; ++d) {
+      prescribed_[2 * j + d] = prescribed_[2 * from + d];
+      u_[2 * j + d] = u_[2 * from + d];
+      v_[2 * j + d] = v_[2 * from + d];
+    }
+  }
+  // What restart_from and the next step overwrite: sized only.
+  for (Eigen::VectorXd* x : {&reaction_, &f_ext_next_, &v_half_, &f_contact_next_})
+    x->resize(2 * nodes);
+  mass_node_.conservativeResize(nodes);
+  for (int i : split.nodes) mass_node_[i] = mass_.node_mass(dofs_, i);
+  force_.reassemble_nodes(dofs_, split.nodes, f_int_);
+  if (contact_) contact_->rebind(dofs_, mass_node_, split.nodes);
+  if (cohesive_) cohesive_->rebind(dofs_, split.vertices);
+  restart_from(record_.elastic, true);  // the cells, and so their energies, are unchanged
   record_.remap_energy += record_.kinetic_leapfrog + record_.elastic - before;
 }
 

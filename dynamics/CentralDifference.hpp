@@ -30,6 +30,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
@@ -85,6 +86,13 @@ class CentralDifference {
   /// are recomputed at the current time; the change of K* + elastic goes to remap_energy.
   /// Throws InputError before initialize().
   void remap(SplitDofMap dofs);
+  /// The same for the split of the current map by disconnecting `edges` (`connected` the new
+  /// edge set; SplitDofMap::disconnect), at a cost that follows the split rather than the mesh:
+  /// the split-off nodes are appended and copy their source's state, and only the masses and
+  /// internal forces of the nodes at the split vertices are recomputed. Bit for bit what remap
+  /// gives for the same classes, up to the node numbering (and the record's sums, which add the
+  /// nodes in their order).
+  void disconnect(const std::vector<char>& connected, std::span<const int> edges);
 
   double dt() const { return dt_; }
   double time() const { return record_.time; }
@@ -123,6 +131,8 @@ class CentralDifference {
   /// (after initialize or remap). `cells_unchanged`: every cell's displacements are those of the
   /// last force evaluation (a split), so the internal force is reassembled, not recomputed.
   void restart(bool cells_unchanged = false);
+  /// The rest of restart once the internal force and the elastic energy are known.
+  void restart_from(double elastic, bool cells_unchanged);
   /// The record's state from per-step sums: work increments (external, reaction, damping), then
   /// kinetic, a.M a, momentum x, y, angular momentum.
   void book(const std::array<double, 8>& sums, double elastic);

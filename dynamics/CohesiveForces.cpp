@@ -116,12 +116,23 @@ double CohesiveForces::stable_step(const StableTimeStep& cells, const PolygonMes
 }
 
 void CohesiveForces::bind(const SplitDofMap& dofs) {
-  for (Face& f : faces_) {
-    const MeshEdge& edge = mesh_.edge(f.edge);
-    for (int j = 0; j < 2; ++j) {
-      f.node0[j] = dofs.node(edge.cell0, f.side0[j]);
-      f.node1[j] = dofs.node(edge.cell1, f.side1[j]);
-    }
+  for (Face& f : faces_) bind_face(dofs, f);
+}
+
+void CohesiveForces::rebind(const SplitDofMap& dofs, std::span<const int> vertices) {
+  // A face at v is an edge of a cell at v (found from both its cells: bound twice, harmless).
+  for (int v : vertices)
+    for (int c : mesh_.vertex_cells(v))
+      for (int e : mesh_.cell_edges(c))
+        if (slot_[e] >= 0 && (mesh_.edge(e).v0 == v || mesh_.edge(e).v1 == v))
+          bind_face(dofs, faces_[slot_[e]]);
+}
+
+void CohesiveForces::bind_face(const SplitDofMap& dofs, Face& f) const {
+  const MeshEdge& edge = mesh_.edge(f.edge);
+  for (int j = 0; j < 2; ++j) {
+    f.node0[j] = dofs.node(edge.cell0, f.side0[j]);
+    f.node1[j] = dofs.node(edge.cell1, f.side1[j]);
   }
 }
 

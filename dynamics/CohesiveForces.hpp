@@ -42,6 +42,7 @@
 // two agree as the step shrinks, and their difference is the time discretization's error.
 #include <Eigen/Core>
 #include <array>
+#include <span>
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
@@ -84,6 +85,9 @@ class CohesiveForces {
   // What CentralDifference calls.
   /// Takes the nodes of the cracked edges' ends from a DOF map (again after a remap or a new edge).
   void bind(const SplitDofMap& dofs);
+  /// bind for the faces at the listed mesh vertices alone: after a split
+  /// (SplitDofMap::disconnect), the re-classed vertices, which include every new face's ends.
+  void rebind(const SplitDofMap& dofs, std::span<const int> vertices);
   /// Adds to f (node DOFs of the bound map) the cohesive forces at node displacements u,
   /// advances the points' histories and books the work since the last evaluation.
   void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f);
@@ -148,6 +152,9 @@ class CohesiveForces {
   const CohesiveLaw& law_of(std::size_t slot) const {
     return face_laws_.empty() ? law_ : face_laws_[slot];
   }
+  /// The nodes of face f's ends on both sides.
+  void bind_face(const SplitDofMap& dofs, Face& f) const;
+
   const PolygonMesh& mesh_;
   const CohesiveLaw& law_;
   std::vector<double> edge_strength_;   // per edge; empty: uniform

@@ -31,13 +31,24 @@ void ContactForces::bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_ma
                      " node masses: expected one per node, " + std::to_string(dofs.num_nodes()));
   node_.resize(reference_.size());
   mass_.resize(reference_.size());
-  for (int c = 0; c < mesh_.num_cells(); ++c)
-    for (int k = 0; k < mesh_.cell_size(c); ++k) {
-      const int p = mesh_.offsets()[c] + k, n = dofs.node(c, k);
-      node_[p] = n;
-      mass_[p] = node_masses[n];
-    }
+  for (int i = 0; i < dofs.num_nodes(); ++i) bind_node(dofs, node_masses, i);
   num_dofs_ = dofs.num_dofs();
+}
+
+void ContactForces::rebind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses,
+                           std::span<const int> nodes) {
+  if (node_masses.size() != dofs.num_nodes())
+    throw InputError("contact: " + std::to_string(node_masses.size()) +
+                     " node masses: expected one per node, " + std::to_string(dofs.num_nodes()));
+  for (int i : nodes) bind_node(dofs, node_masses, i);
+  num_dofs_ = dofs.num_dofs();
+}
+
+void ContactForces::bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses, int i) {
+  for (int p : dofs.node_pairs(i)) {
+    node_[p] = i;
+    mass_[p] = node_masses[i];
+  }
 }
 
 void ContactForces::restart() {

@@ -50,6 +50,10 @@ class ContactForces {
   /// The next evaluation starts a new segment of the work account (at initialize and after a
   /// remap, where the state jumps): the work booked so far is kept.
   void restart();
+  /// bind for the listed nodes alone (every other node kept its pairs and mass): after a split
+  /// (SplitDofMap::disconnect), the nodes at the split vertices.
+  void rebind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses,
+              std::span<const int> nodes);
   /// Sets f (node DOFs, resized) to the contact forces at node displacements u and velocities v
   /// (the half-step velocities of central differences, read only by contact damping) with step
   /// dt, and books their work. Throws InputError before bind().
@@ -77,6 +81,8 @@ class ContactForces {
 
  private:
   void gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
+  /// Node i's number and mass on each of its pairs.
+  void bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses, int i);
 
   const PolygonMesh& mesh_;
   PenaltyContact law_;

@@ -44,9 +44,7 @@ int DynamicFracture::step(int threads) {
     run_.remap(SplitDofMap(mesh_, connected_));
     split_yet_ = true;
   } else {
-    SplitDofMap split = run_.dofs();
-    split.disconnect(mesh_, connected_, edges);
-    run_.remap(std::move(split));
+    run_.disconnect(connected_, edges);
   }
   times_.rebuild += clock.seconds();
   return static_cast<int>(failing.size());

@@ -29,12 +29,13 @@ Ritz top_ritz(const std::vector<double>& alpha, const std::vector<double>& beta)
 
 }  // namespace
 
-GlobalTimeStep::GlobalTimeStep(InternalForce& force, const Eigen::VectorXd& node_masses,
-                               const StableTimeStep& bound, const LanczosOptions& options) {
+GlobalTimeStep::GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs,
+                               const Eigen::VectorXd& node_masses, const StableTimeStep& bound,
+                               const LanczosOptions& options) {
   const Eigen::Index n = 2 * node_masses.size();
-  if (n != 2 * force.num_nodes())
+  if (n != dofs.num_dofs())
     throw InputError("global time step: " + std::to_string(node_masses.size()) +
-                     " node masses for " + std::to_string(force.num_nodes()) + " bound nodes");
+                     " node masses for " + std::to_string(dofs.num_nodes()) + " nodes");
   Eigen::VectorXd scale(n);  // M^-1/2 per DOF
   for (Eigen::Index i = 0; i < n; ++i) scale[i] = 1.0 / std::sqrt(node_masses[i / 2]);
   Random random(options.seed);
@@ -45,7 +46,7 @@ GlobalTimeStep::GlobalTimeStep(InternalForce& force, const Eigen::VectorXd& node
   double beta_prev = 0.0;
   Ritz ritz;
   for (int j = 0; j < options.max_iterations; ++j) {
-    force.compute(scale.cwiseProduct(q), f, options.threads);
+    force.compute(dofs, scale.cwiseProduct(q), f, options.threads);
     w = scale.cwiseProduct(f) - beta_prev * q_prev;
     alpha.push_back(q.dot(w));
     w -= alpha.back() * q;

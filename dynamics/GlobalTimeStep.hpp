@@ -34,9 +34,9 @@ struct LanczosOptions {
 
 class GlobalTimeStep {
  public:
-  /// `force` must be bound to the DOF map whose per-node masses are `node_masses`; its
-  /// last-compute buffers are overwritten. `bound` caps the eigenvalue.
-  GlobalTimeStep(InternalForce& force, const Eigen::VectorXd& node_masses,
+  /// `node_masses` are the per-node masses of `dofs`; the force's last-compute buffers are
+  /// overwritten. `bound` caps the eigenvalue.
+  GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs, const Eigen::VectorXd& node_masses,
                  const StableTimeStep& bound, const LanczosOptions& options = {});
 
   /// 2 / sqrt(lambda), lambda = min(theta + r, cell bound).

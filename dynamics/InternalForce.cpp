@@ -93,42 +93,39 @@ InternalForce::InternalForce(const PolygonMesh& mesh, CellMatrices matrices, boo
   cell_energy_.assign(nc, 0.0);
 }
 
-void InternalForce::bind(const SplitDofMap& dofs) {
-  const int pairs = offsets_.back();
-  pair_node_.resize(pairs);
-  for (int c = 0; c < num_cells(); ++c)
-    for (int k = 0; k < cell_size(c); ++k) pair_node_[offsets_[c] + k] = dofs.node(c, k);
-  // Counting sort by node keeps each node's pairs in increasing order: the fixed gather order.
-  node_offsets_.assign(dofs.num_nodes() + 1, 0);
-  for (int p = 0; p < pairs; ++p) ++node_offsets_[pair_node_[p] + 1];
-  for (int i = 0; i < dofs.num_nodes(); ++i) node_offsets_[i + 1] += node_offsets_[i];
-  node_pairs_.resize(pairs);
-  std::vector<int> next(node_offsets_.begin(), node_offsets_.end() - 1);
-  for (int p = 0; p < pairs; ++p) node_pairs_[next[pair_node_[p]]++] = p;
-}
-
-double InternalForce::compute(const Eigen::VectorXd& u, Eigen::VectorXd& f, int threads) {
-  if (u.size() != 2 * num_nodes())
+double InternalForce::compute(const SplitDofMap& dofs, const Eigen::VectorXd& u, Eigen::VectorXd& f,
+                              int threads) {
+  if (dofs.pair_nodes().size() != pair_force_.size() / 2)
+    throw InputError("internal force: a DOF map of " + std::to_string(dofs.pair_nodes().size()) +
+                     " pairs for a mesh of " + std::to_string(pair_force_.size() / 2));
+  if (u.size() != dofs.num_dofs())
     throw InputError("internal force: " + std::to_string(u.size()) + " displacements for " +
-                     std::to_string(num_nodes()) + " bound nodes");
-  cell_forces(u.data(), threads);
-  return reassemble(f, threads);
+                     std::to_string(dofs.num_nodes()) + " nodes");
+  cell_forces(dofs.pair_nodes().data(), u.data(), threads);
+  return reassemble(dofs, f, threads);
 }
 
-double InternalForce::reassemble(Eigen::VectorXd& f, int threads) {
-  f.resize(2 * num_nodes());
-  gather(f.data(), threads);
+double InternalForce::reassemble(const SplitDofMap& dofs, Eigen::VectorXd& f, int threads) {
+  const int nodes = dofs.num_nodes();
+  f.resize(2 * nodes);
+#pragma omp parallel for schedule(static, 1024) num_threads(std::max(threads, 1))
+  for (int i = 0; i < nodes; ++i) gather_node(dofs, i, f.data());
   const auto energy = energy_sum_.sum<1>(num_cells(), threads,
                                          [&](int c, double* acc) { acc[0] += cell_energy_[c]; });
   return energy[0];
 }
 
-void InternalForce::cell_forces(const double* u, int threads) {
+void InternalForce::reassemble_nodes(const SplitDofMap& dofs, std::span<const int> nodes,
+                                     Eigen::VectorXd& f) const {
+  for (int i : nodes) gather_node(dofs, i, f.data());
+}
+
+void InternalForce::cell_forces(const int* pair_node, const double* u, int threads) {
   const int nc = num_cells();
 #pragma omp parallel for schedule(static, 512) num_threads(std::max(threads, 1))
   for (int c = 0; c < nc; ++c) {
     const double* K = K_.data.data() + K_.offset[c];
-    const int* node = pair_node_.data() + offsets_[c];
+    const int* node = pair_node + offsets_[c];
     double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
     double& e = cell_energy_[c];
     if (frames_) {
@@ -155,18 +152,14 @@ void InternalForce::cell_forces(const double* u, int threads) {
   }
 }
 
-void InternalForce::gather(double* f, int threads) const {
-  const int nodes = num_nodes();
-#pragma omp parallel for schedule(static, 1024) num_threads(std::max(threads, 1))
-  for (int i = 0; i < nodes; ++i) {
-    double fx = 0.0, fy = 0.0;
-    for (int j = node_offsets_[i]; j < node_offsets_[i + 1]; ++j) {
-      fx += pair_force_[2 * std::size_t(node_pairs_[j])];
-      fy += pair_force_[2 * std::size_t(node_pairs_[j]) + 1];
-    }
-    f[2 * i] = fx;
-    f[2 * i + 1] = fy;
+void InternalForce::gather_node(const SplitDofMap& dofs, int i, double* f) const {
+  double fx = 0.0, fy = 0.0;
+  for (int p : dofs.node_pairs(i)) {
+    fx += pair_force_[2 * std::size_t(p)];
+    fy += pair_force_[2 * std::size_t(p) + 1];
   }
+  f[2 * i] = fx;
+  f[2 * i + 1] = fy;
 }
 
 }  // namespace vorodg

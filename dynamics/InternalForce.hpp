@@ -40,21 +40,23 @@ class InternalForce {
   /// frame that turns with it (CorotationalFrames), so cells may rotate through any angle.
   InternalForce(const PolygonMesh& mesh, CellMatrices matrices, bool corotational = false);
 
-  /// Binds the node numbering of a DOF map of the same mesh (before compute, and again after a
-  /// split or merge of nodes).
-  void bind(const SplitDofMap& dofs);
-
-  /// f = K u over the bound map's node DOFs (u_x, u_y per node; f is resized) and returns the
-  /// elastic energy 1/2 u.K u, the sum of the cell energies in cell order.
-  double compute(const Eigen::VectorXd& u, Eigen::VectorXd& f, int threads);
-  /// The same f and energy from the last compute's cell forces, on the map bound since: valid
-  /// when every cell's displacements are what they were then, as after a split (which copies
-  /// them), and then bit-for-bit what compute would give, for a gather's cost.
-  double reassemble(Eigen::VectorXd& f, int threads);
+  /// f = K u over the node DOFs of `dofs`, a DOF map of the same mesh (u_x, u_y per node; f is
+  /// resized), and returns the elastic energy 1/2 u.K u, the sum of the cell energies in cell
+  /// order. Throws InputError if u does not have two entries per node.
+  double compute(const SplitDofMap& dofs, const Eigen::VectorXd& u, Eigen::VectorXd& f,
+                 int threads);
+  /// The same f and energy from the last compute's cell forces, on `dofs` (which may have
+  /// changed since): valid when every cell's displacements are what they were then, as after a
+  /// split (which copies them), and then bit-for-bit what compute would give, for a gather's
+  /// cost.
+  double reassemble(const SplitDofMap& dofs, Eigen::VectorXd& f, int threads);
+  /// The same as reassemble for the listed nodes alone (f must already have room for them):
+  /// after a split, the nodes whose pairs changed.
+  void reassemble_nodes(const SplitDofMap& dofs, std::span<const int> nodes,
+                        Eigen::VectorXd& f) const;
 
   int num_cells() const { return static_cast<int>(offsets_.size()) - 1; }
   int cell_size(int c) const { return offsets_[c + 1] - offsets_[c]; }
-  int num_nodes() const { return static_cast<int>(node_offsets_.size()) - 1; }
   const CellMatrices& matrices() const { return K_; }
   Eigen::Map<const Eigen::MatrixXd> cell_matrix(int c) const {
     return K_.block(c, 2 * cell_size(c));
@@ -67,13 +69,12 @@ class InternalForce {
   std::span<const double> pair_forces() const { return pair_force_; }
 
  private:
-  void cell_forces(const double* u, int threads);
-  void gather(double* f, int threads) const;
+  void cell_forces(const int* pair_node, const double* u, int threads);
+  /// f at node i: its pairs' forces added in increasing pair order.
+  void gather_node(const SplitDofMap& dofs, int i, double* f) const;
 
   std::vector<int> offsets_;  // the mesh's cell offsets: pair index = offsets_[c] + k
   CellMatrices K_;
-  std::vector<int> pair_node_;                     // bound node of each pair
-  std::vector<int> node_offsets_{0}, node_pairs_;  // pairs of each node, increasing
   std::vector<double> pair_force_, cell_energy_;
   OrderedSum energy_sum_;
   std::optional<CorotationalFrames> frames_;

@@ -30,10 +30,14 @@ LumpedMass::LumpedMass(const ElementTable& table, double density)
 }
 
 Eigen::VectorXd LumpedMass::node_masses(const SplitDofMap& dofs) const {
-  Eigen::VectorXd m = Eigen::VectorXd::Zero(dofs.num_nodes());
-  const int cells = static_cast<int>(offsets_.size()) - 1;
-  for (int c = 0; c < cells; ++c)
-    for (int k = 0; k < offsets_[c + 1] - offsets_[c]; ++k) m[dofs.node(c, k)] += pair_mass(c, k);
+  Eigen::VectorXd m(dofs.num_nodes());
+  for (int i = 0; i < dofs.num_nodes(); ++i) m[i] = node_mass(dofs, i);
+  return m;
+}
+
+double LumpedMass::node_mass(const SplitDofMap& dofs, int i) const {
+  double m = 0.0;
+  for (int p : dofs.node_pairs(i)) m += pair_[p];
   return m;
 }
 

@@ -50,6 +50,8 @@ class LumpedMass {
   /// Per node of `dofs` (a map of the same mesh), the sum of its pairs' masses, added in pair
   /// order so the result does not depend on how the map was built or on threads.
   Eigen::VectorXd node_masses(const SplitDofMap& dofs) const;
+  /// The same for node i alone.
+  double node_mass(const SplitDofMap& dofs, int i) const;
 
  private:
   std::vector<int> offsets_;

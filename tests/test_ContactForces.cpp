@@ -68,8 +68,7 @@ struct Model {
         bound(mesh, integrator.all_cell_matrices(1), mass) {
     InternalForce force(mesh, integrator.all_cell_matrices(1));
     const SplitDofMap dofs = SplitDofMap::continuous(mesh);
-    force.bind(dofs);
-    dt = GlobalTimeStep(force, mass.node_masses(dofs), bound).step(0.9);
+    dt = GlobalTimeStep(force, dofs, mass.node_masses(dofs), bound).step(0.9);
   }
   std::unique_ptr<CentralDifference> run() const {
     return std::make_unique<CentralDifference>(mesh, mass,

@@ -5,6 +5,8 @@
 // scratch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <set>
 
@@ -86,9 +88,44 @@ TEST(SplitDofMap, ALoneSplitEdgeInsideTheBodyCannotOpen) {
   EXPECT_TRUE(map.joins(mesh, inner));
 }
 
-TEST(SplitDofMap, DisconnectingEdgesGivesTheMapBuiltFromScratch) {
-  // Random batches of cracks, as fracture makes them: after each batch the updated map must be
-  // the constructor's, node for node, and so must every vertex's node list.
+/// Whether two maps of one mesh have the same classes: a one-to-one node correspondence.
+void expect_same_classes(const PolygonMesh& mesh, const SplitDofMap& a, const SplitDofMap& b) {
+  ASSERT_EQ(a.num_nodes(), b.num_nodes());
+  std::vector<int> a_of_b(b.num_nodes(), -1), b_of_a(a.num_nodes(), -1);
+  for (int p = 0; p < mesh.offsets().back(); ++p) {
+    const int i = a.pair_nodes()[p], j = b.pair_nodes()[p];
+    if (a_of_b[j] < 0) a_of_b[j] = i;
+    if (b_of_a[i] < 0) b_of_a[i] = j;
+    ASSERT_EQ(a_of_b[j], i) << "pair " << p;
+    ASSERT_EQ(b_of_a[i], j) << "pair " << p;
+  }
+}
+
+/// The map's own indexes agree with its pair nodes: each node's pairs (increasing) and each
+/// vertex's nodes (ascending).
+void expect_consistent_indexes(const PolygonMesh& mesh, const SplitDofMap& map) {
+  std::vector<std::vector<int>> pairs(map.num_nodes());
+  std::vector<std::vector<int>> nodes(mesh.num_vertices());
+  for (int p = 0; p < mesh.offsets().back(); ++p) {
+    const int i = map.pair_nodes()[p], v = mesh.cell_vertex_list()[p];
+    pairs[i].push_back(p);
+    if (std::find(nodes[v].begin(), nodes[v].end(), i) == nodes[v].end()) nodes[v].push_back(i);
+  }
+  for (int i = 0; i < map.num_nodes(); ++i) {
+    const auto listed = map.node_pairs(i);
+    ASSERT_EQ(std::vector<int>(listed.begin(), listed.end()), pairs[i]) << "node " << i;
+  }
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    std::sort(nodes[v].begin(), nodes[v].end());
+    const auto listed = map.vertex_nodes(v);
+    ASSERT_EQ(std::vector<int>(listed.begin(), listed.end()), nodes[v]) << "vertex " << v;
+  }
+}
+
+TEST(SplitDofMap, DisconnectingEdgesGivesTheClassesBuiltFromScratch) {
+  // Random batches of cracks, as fracture makes them: after each batch the updated map has the
+  // constructor's classes, every old node keeps its number, the split-off ones are appended
+  // with their sources, and the split lists every node whose pairs changed.
   for (MeshFamily f : {MeshFamily::rcp, MeshFamily::quad, MeshFamily::perturbed_hex}) {
     const PolygonMesh& mesh = mesh_of(f).mesh;
     Random random(31);
@@ -99,19 +136,48 @@ TEST(SplitDofMap, DisconnectingEdgesGivesTheMapBuiltFromScratch) {
       for (int e = 0; e < mesh.num_edges(); ++e)
         if (connected[e] && random.uniform() < 0.03) cracks.push_back(e);
       for (int e : cracks) connected[e] = 0;
-      map.disconnect(mesh, connected, cracks);
-      const SplitDofMap fresh(mesh, connected);
-      ASSERT_EQ(map.num_nodes(), fresh.num_nodes()) << "batch " << batch;
-      for (int c = 0; c < mesh.num_cells(); ++c)
-        for (int k = 0; k < mesh.cell_size(c); ++k)
-          ASSERT_EQ(map.node(c, k), fresh.node(c, k)) << "cell " << c << ", vertex " << k;
-      for (int v = 0; v < mesh.num_vertices(); ++v) {
-        const auto a = map.vertex_nodes(v), b = fresh.vertex_nodes(v);
-        ASSERT_EQ(std::vector<int>(a.begin(), a.end()), std::vector<int>(b.begin(), b.end()));
+      const SplitDofMap before = map;
+      const SplitDofMap::Split split = map.disconnect(mesh, connected, cracks);
+      expect_same_classes(mesh, map, SplitDofMap(mesh, connected));
+      expect_consistent_indexes(mesh, map);
+      ASSERT_EQ(map.num_nodes() - before.num_nodes(), static_cast<int>(split.source.size()));
+      for (int p = 0; p < mesh.offsets().back(); ++p) {
+        const int was = before.pair_nodes()[p], now = map.pair_nodes()[p];
+        if (now >= before.num_nodes()) {
+          ASSERT_EQ(split.source[now - before.num_nodes()], was) << "pair " << p;
+        } else {
+          ASSERT_EQ(now, was) << "pair " << p;  // an old node's pairs keep its number
+        }
+        const bool changed =
+            now != was || before.node_pairs(was).size() != map.node_pairs(was).size();
+        if (changed)
+          ASSERT_TRUE(std::binary_search(split.nodes.begin(), split.nodes.end(), was) &&
+                      std::binary_search(split.nodes.begin(), split.nodes.end(), now))
+              << "pair " << p;
       }
     }
     EXPECT_GT(map.num_nodes(), 2 * mesh.num_vertices());  // the batches split a good part
   }
+}
+
+TEST(SplitDofMap, RefusesADisconnectThatJoins) {
+  // An interior edge whose removal splits a node (one that reaches the boundary).
+  const PolygonMesh& mesh = mesh_of(MeshFamily::quad).mesh;
+  std::vector<char> connected(mesh.num_edges(), 1);
+  int inner = -1;
+  for (int e = 0; e < mesh.num_edges() && inner < 0; ++e) {
+    if (mesh.edge(e).on_boundary()) continue;
+    connected[e] = 0;
+    const SplitDofMap map(mesh, connected);
+    if (map.num_nodes() > mesh.num_vertices()) inner = e;
+    connected[e] = 1;
+  }
+  ASSERT_GE(inner, 0);
+  connected[inner] = 0;
+  SplitDofMap map(mesh, connected);
+  connected[inner] = 1;  // turned back on: the classes at its ends would merge
+  const std::vector<int> edges{inner};
+  EXPECT_THROW(map.disconnect(mesh, connected, edges), InputError);
 }
 
 TEST(SplitDofMap, RefusesFlagsOfTheWrongLength) {

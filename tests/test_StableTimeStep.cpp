@@ -113,8 +113,7 @@ TEST(StableTimeStep, EstimateIsConservativeAndWithinTenPercentOnEveryFamily) {
       const SplitDofMap dofs = SplitDofMap::continuous(model.mesh);
       const double nodal = model.limit.nodal_critical(dofs, model.mass) / exact;
       InternalForce force(model.mesh, model.matrices);
-      force.bind(dofs);
-      const GlobalTimeStep global(force, model.mass.node_masses(dofs), model.limit);
+      const GlobalTimeStep global(force, dofs, model.mass.node_masses(dofs), model.limit);
       const double lanczos = global.critical() / exact;
       std::printf(
           "%-14s %s %4d cells: estimate / true critical step: cell bound %.4f, nodal "
@@ -134,8 +133,7 @@ TEST(StableTimeStep, BisectionOnBlowUpFindsTheCriticalStep) {
   const DynamicsModel model(mesh_spec(MeshFamily::rcp, Rectangle(0, 0, 1, 1), 0.1), kMaterial, 1.0);
   const SplitDofMap dofs = SplitDofMap::continuous(model.mesh);
   InternalForce force(model.mesh, model.matrices);
-  force.bind(dofs);
-  const GlobalTimeStep global(force, model.mass.node_masses(dofs), model.limit);
+  const GlobalTimeStep global(force, dofs, model.mass.node_masses(dofs), model.limit);
   const double bound = model.limit.critical(), estimate = global.critical();
   const int steps = 2000;
   double stable = bound, unstable = 3.0 * bound;

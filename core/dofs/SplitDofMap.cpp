@@ -41,33 +41,52 @@ SplitDofMap::SplitDofMap(const PolygonMesh& mesh, const std::vector<char>& conne
     for (int v : {edge.v0, edge.v1})
       pairs.join(pair_of(edge.cell0, local0[e], v), pair_of(edge.cell1, local1[e], v));
   }
-  first_.resize(offsets_.back());
-  for (int p = 0; p < offsets_.back(); ++p) first_[p] = pairs.root(p);  // roots are smallest
-  number(mesh);
-}
-
-void SplitDofMap::number(const PolygonMesh& mesh) {
-  // first_[p] <= p, so a class's node is known by the time its later pairs come.
-  node_.resize(first_.size());
-  num_nodes_ = 0;
-  for (std::size_t p = 0; p < first_.size(); ++p)
-    node_[p] = first_[p] == static_cast<int>(p) ? num_nodes_++ : node_[first_[p]];
-  // Per vertex its nodes, ascending: a counting sort of the classes' first pairs by vertex, in
-  // pair order, which is node order.
+  // Nodes in order of their first pair: a class's root is its smallest pair, so its node is
+  // known by the time its later pairs come.
+  const int np = offsets_.back();
+  node_.resize(np);
+  for (int p = 0; p < np; ++p) {
+    const int root = pairs.root(p);
+    node_[p] = root == p ? num_nodes_++ : node_[root];
+  }
+  // Each vertex's slots, one per pair at it (a counting sort of the pairs by vertex).
   const std::vector<int>& vertex_of_pair = mesh.cell_vertex_list();
   const int nv = mesh.num_vertices();
   vertex_offsets_.assign(nv + 1, 0);
-  for (std::size_t p = 0; p < first_.size(); ++p)
-    if (first_[p] == static_cast<int>(p)) ++vertex_offsets_[vertex_of_pair[p] + 1];
+  for (int p = 0; p < np; ++p) ++vertex_offsets_[vertex_of_pair[p] + 1];
   for (int v = 0; v < nv; ++v) vertex_offsets_[v + 1] += vertex_offsets_[v];
-  vertex_nodes_.resize(num_nodes_);
+  vertex_pairs_.resize(np);
   std::vector<int> next(vertex_offsets_.begin(), vertex_offsets_.end() - 1);
-  for (std::size_t p = 0; p < first_.size(); ++p)
-    if (first_[p] == static_cast<int>(p)) vertex_nodes_[next[vertex_of_pair[p]]++] = node_[p];
+  for (int p = 0; p < np; ++p) vertex_pairs_[next[vertex_of_pair[p]]++] = p;
+  vertex_nodes_.resize(np);
+  vertex_node_count_.assign(nv, 0);
+  node_start_.resize(num_nodes_);
+  node_count_.resize(num_nodes_);
+  for (int v = 0; v < nv; ++v) index_vertex(v);
 }
 
-void SplitDofMap::disconnect(const PolygonMesh& mesh, const std::vector<char>& connected,
-                             std::span<const int> edges) {
+void SplitDofMap::index_vertex(int v) {
+  const auto first = vertex_pairs_.begin() + vertex_offsets_[v];
+  const auto last = vertex_pairs_.begin() + vertex_offsets_[v + 1];
+  std::sort(first, last,
+            [&](int a, int b) { return node_[a] != node_[b] ? node_[a] < node_[b] : a < b; });
+  int* nodes = vertex_nodes_.data() + vertex_offsets_[v];
+  int count = 0;
+  for (auto it = first; it != last; ++it) {
+    const int i = node_[*it];
+    if (count == 0 || nodes[count - 1] != i) {
+      nodes[count++] = i;
+      node_start_[i] = static_cast<int>(it - vertex_pairs_.begin());
+      node_count_[i] = 0;
+    }
+    ++node_count_[i];
+  }
+  vertex_node_count_[v] = count;
+}
+
+SplitDofMap::Split SplitDofMap::disconnect(const PolygonMesh& mesh,
+                                           const std::vector<char>& connected,
+                                           std::span<const int> edges) {
   if (static_cast<int>(connected.size()) != mesh.num_edges())
     throw InputError("split DOF map: " + std::to_string(connected.size()) +
                      " edge flags for a mesh of " + std::to_string(mesh.num_edges()) + " edges");
@@ -81,13 +100,27 @@ void SplitDofMap::disconnect(const PolygonMesh& mesh, const std::vector<char>& c
   }
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  for (int v : vertices) reclass(mesh, connected, v);
-  number(mesh);
+  Split split;
+  for (int v : vertices) reclass(mesh, connected, v, split);
+  node_start_.resize(num_nodes_);
+  node_count_.resize(num_nodes_);
+  for (int v : vertices) {
+    index_vertex(v);
+    const auto nodes = vertex_nodes(v);
+    split.nodes.insert(split.nodes.end(), nodes.begin(), nodes.end());
+  }
+  std::sort(split.nodes.begin(), split.nodes.end());
+  split.vertices = std::move(vertices);
+  return split;
 }
 
-void SplitDofMap::reclass(const PolygonMesh& mesh, const std::vector<char>& connected, int v) {
-  // The pairs at v, in increasing order, and a union-find over their positions in that list.
-  const auto cells = mesh.vertex_cells(v);
+void SplitDofMap::reclass(const PolygonMesh& mesh, const std::vector<char>& connected, int v,
+                          Split& split) {
+  // The cells at v in increasing order, so their pairs are increasing too (pairs are CSR by
+  // cell), and a union-find over their positions: a class's root is its smallest pair.
+  const auto around_v = mesh.vertex_cells(v);
+  std::vector<int> cells(around_v.begin(), around_v.end());
+  std::sort(cells.begin(), cells.end());
   const int n = static_cast<int>(cells.size());
   std::vector<int> pair(n);
   for (int i = 0; i < n; ++i) pair[i] = offsets_[cells[i]] + local_index(mesh, cells[i], v);
@@ -99,11 +132,25 @@ void SplitDofMap::reclass(const PolygonMesh& mesh, const std::vector<char>& conn
       const MeshEdge& edge = mesh.edge(e);
       if (edge.on_boundary() || !connected[e]) continue;
       const int other = edge.cell0 == c ? edge.cell1 : edge.cell0;
-      const int j = static_cast<int>(std::find(cells.begin(), cells.end(), other) - cells.begin());
-      around.join(i, j);
+      const auto j = std::lower_bound(cells.begin(), cells.end(), other) - cells.begin();
+      around.join(i, static_cast<int>(j));
     }
   }
-  for (int i = 0; i < n; ++i) first_[pair[i]] = pair[around.root(i)];
+  // Classes in order of their smallest pair; the first to hold a node's pairs keeps its number.
+  std::vector<int> number(n, -1);
+  for (int i = 0; i < n; ++i) {
+    const int root = around.root(i), old = node_[pair[i]];
+    if (node_[pair[root]] != old)
+      throw InputError("split DOF map: the edge set joins nodes " + std::to_string(old) + " and " +
+                       std::to_string(node_[pair[root]]) + " at vertex " + std::to_string(v) +
+                       ": a disconnect may only turn edges off");
+    if (root != i) continue;
+    bool kept = false;
+    for (int j = 0; j < i; ++j) kept = kept || (number[j] == old);
+    number[i] = kept ? num_nodes_++ : old;
+    if (kept) split.source.push_back(old);
+  }
+  for (int i = 0; i < n; ++i) node_[pair[i]] = number[around.root(i)];
 }
 
 SplitDofMap SplitDofMap::continuous(const PolygonMesh& mesh) {

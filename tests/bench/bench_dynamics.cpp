@@ -65,10 +65,9 @@ void BM_InternalForce(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(1));
   InternalForce force(m.mesh, m.matrices);
   const SplitDofMap dofs = SplitDofMap::continuous(m.mesh);
-  force.bind(dofs);
   const Eigen::VectorXd u = random_vector(dofs.num_dofs(), 1e-6);
   Eigen::VectorXd f(dofs.num_dofs());
-  for (auto _ : state) benchmark::DoNotOptimize(force.compute(u, f, threads));
+  for (auto _ : state) benchmark::DoNotOptimize(force.compute(dofs, u, f, threads));
   report(state, m.mesh.num_cells(), threads);
 }
 
@@ -89,12 +88,11 @@ void BM_Lanczos(benchmark::State& state) {
   const Model& m = model(static_cast<int>(state.range(0)));
   InternalForce force(m.mesh, m.matrices);
   const SplitDofMap dofs = SplitDofMap::continuous(m.mesh);
-  force.bind(dofs);
   const Eigen::VectorXd masses = m.mass.node_masses(dofs);
   int iterations = 0;
   double ratio = 0.0;
   for (auto _ : state) {
-    const GlobalTimeStep global(force, masses, m.limit);
+    const GlobalTimeStep global(force, dofs, masses, m.limit);
     iterations = global.iterations();
     ratio = m.limit.critical() / global.critical();
   }

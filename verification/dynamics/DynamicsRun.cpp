@@ -201,15 +201,14 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   const StableTimeStep bound(mesh, matrices, mass);
   const SplitDofMap dofs = SplitDofMap::continuous(mesh);
   InternalForce force(mesh, std::move(matrices));
-  force.bind(dofs);
-  const GlobalTimeStep lanczos(force, mass.node_masses(dofs), bound);  // of K: the linear force
+  const GlobalTimeStep lanczos(force, dofs, mass.node_masses(dofs),
+                               bound);  // of K: the linear force
   r.dt_lanczos = lanczos.critical();
   r.dt_cells = bound.critical();
   r.lanczos_iterations = lanczos.iterations();
   if (scene.corotational) {  // the same cells, each turning with its frame (K is its tangent at
                              // rest)
     InternalForce turning(mesh, force.matrices(), true);
-    turning.bind(dofs);
     force = std::move(turning);
   }
   // safety x the chosen estimate; >= 1 only got here with --force. With cracks, the cells' bound

@@ -150,10 +150,11 @@ TEST(SplitDofMap, DisconnectingEdgesGivesTheClassesBuiltFromScratch) {
         }
         const bool changed =
             now != was || before.node_pairs(was).size() != map.node_pairs(was).size();
-        if (changed)
+        if (changed) {
           ASSERT_TRUE(std::binary_search(split.nodes.begin(), split.nodes.end(), was) &&
                       std::binary_search(split.nodes.begin(), split.nodes.end(), now))
               << "pair " << p;
+        }
       }
     }
     EXPECT_GT(map.num_nodes(), 2 * mesh.num_vertices());  // the batches split a good part

@@ -9,6 +9,7 @@
 #include "verification/cli/MeshCommand.hpp"
 #include "verification/cli/RunCommand.hpp"
 #include "verification/cli/SolveCommand.hpp"
+#include "verification/study/Ensemble.hpp"
 
 namespace vorodg {
 namespace {
@@ -17,6 +18,13 @@ int print_info() {
   std::cout << "vorodg " << VORODG_VERSION << "\n"
             << "blas: " << blas_description() << "\n";
   return 0;
+}
+
+/// An error on one rank of an MPI job must not leave the others waiting for it: it ends them
+/// all (Ensemble::abort). Alone, the code is returned.
+int stop_job(int code) {
+  Ensemble::abort(code);
+  return code;
 }
 
 }  // namespace
@@ -64,13 +72,13 @@ int run_application(int argc, char** argv) {
     if (info->parsed()) return print_info();
   } catch (const InputError& e) {
     std::cerr << "vorodg: error: " << e.what() << "\n";
-    return kExitInputError;
+    return stop_job(kExitInputError);
   } catch (const NumericalError& e) {
     std::cerr << "vorodg: numerical breakdown: " << e.what() << "\n";
-    return kExitNumericalError;
+    return stop_job(kExitNumericalError);
   } catch (const std::bad_alloc&) {
     std::cerr << "vorodg: error: out of memory\n";
-    return kExitNumericalError;
+    return stop_job(kExitNumericalError);
   }
   return 0;
 }

@@ -12,6 +12,7 @@
 #include "verification/dynamics/DynamicsStudy.hpp"
 #include "verification/dynamics/PerturbationReport.hpp"
 #include "verification/fracture/FractureStudy.hpp"
+#include "verification/study/Ensemble.hpp"
 #include "verification/study/ExtremesReport.hpp"
 #include "verification/study/Scene.hpp"
 #include "verification/study/StudyReport.hpp"
@@ -109,8 +110,9 @@ int run_dynamics(const fs::path& path, const StudyOptions& options, bool no_plot
     const DynamicsStudyResult r = run_dynamics_study(*part, out, options.threads, options.progress);
     incomplete += r.incomplete;
     runs += r.records.size();
-    if (!no_plots) draw_dynamics_plots(out);
+    if (!no_plots && Ensemble::coordinator()) draw_dynamics_plots(out);
   }
+  if (!Ensemble::coordinator()) return 0;  // the reports are the coordinator's
   if (!scene.perturb_key.empty() && incomplete == 0) write_perturbation_report(scene, options.out);
   if (scene.fragmentation && scene.variants.size() >= 2 && !no_plots)
     draw_dynamics_plots(options.out);  // across the variants (and the perturbation plot)
@@ -138,8 +140,9 @@ int run_fracture(const fs::path& path, const StudyOptions& options, bool no_plot
     const FractureStudyResult r = run_fracture_study(*part, out, options.threads, options.progress);
     incomplete += r.incomplete;
     runs += r.records.size();
-    if (!no_plots) draw_fracture_plots(out);
+    if (!no_plots && Ensemble::coordinator()) draw_fracture_plots(out);
   }
+  if (!Ensemble::coordinator()) return 0;  // the reports are the coordinator's
   std::cout << "\n" << scene.name << ": " << runs << " runs, " << clock.seconds() << " s\n";
   if (incomplete > 0) {
     std::cerr << "vorodg: " << incomplete << " fracture runs are incomplete (see report.md)\n";
@@ -159,11 +162,13 @@ int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots,
     sub.out = options.out / sweep->name;
     std::cout << "\n== sweep " << sweep->name << " (" << sweep->axis << ")\n";
     results.push_back(run_study(*sweep, sub));
+    if (!Ensemble::coordinator()) continue;  // the reports are the coordinator's
     // A sweep's own report has no pictures: the extremes plot stands for them all.
     finish_report_markdown(write_study_report(*sweep, results.back(), sub.out).markdown, sub.out,
                            {});
     runs += results.back().size();
   }
+  if (!Ensemble::coordinator()) return 0;
   std::string markdown;
   const int broken = write_extremes_report(scene, results, options.out, markdown);
   if (!no_plots) draw_plots(options.out);
@@ -208,6 +213,7 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   const Scene scene = read_scene(scene_path);
   if (scene.study == "extremes") return run_extremes(scene, options, o.no_plots, clock);
   const auto results = run_study(scene, options);
+  if (!Ensemble::coordinator()) return 0;  // the reports are the coordinator's
   const StudyReport report = write_study_report(scene, results, o.out);
   if (!o.no_plots) draw_plots(o.out);
   finish_report_markdown(report.markdown, o.out, study_pictures());

@@ -13,6 +13,7 @@
 #include "verification/dynamics/DynamicsHistory.hpp"
 #include "verification/dynamics/FragmentLevels.hpp"
 #include "verification/dynamics/FragmentationRun.hpp"
+#include "verification/study/Ensemble.hpp"
 #include "verification/study/ResumableRuns.hpp"
 
 namespace fs = std::filesystem;
@@ -221,7 +222,8 @@ void write_reports(const DynamicsScene& scene, const DynamicsStudyResult& result
   json runs = json::array();
   for (const DynamicsRecord& r : result.records) {
     json j = to_json(r);
-    j.erase("seconds"), j.erase("loop_seconds");  // the same results give the same bytes
+    for (const char* timing : {"seconds", "loop_seconds", "check_seconds", "rebuild_seconds"})
+      j.erase(timing);  // the same results give the same bytes, on any number of processes
     runs.push_back(j);
   }
   json summary = {{"scene", scene.name},
@@ -232,7 +234,9 @@ void write_reports(const DynamicsScene& scene, const DynamicsStudyResult& result
                   {"incomplete", result.incomplete},
                   {"records", runs}};
   for (const auto& [name, field] : measure_fields())
-    if (const double w = worst(result.records, field); std::isfinite(w)) summary["worst"][name] = w;
+    if (const double w = worst(result.records, field);
+        std::isfinite(w) && !std::string_view(name).ends_with("seconds"))
+      summary["worst"][name] = w;
   write_file_atomically(out / "summary.json", summary.dump(1) + "\n");
   std::string md = report_md(scene, result);
   if (scene.fragmentation) {
@@ -251,9 +255,13 @@ DynamicsStudyResult run_dynamics_study(const DynamicsScene& scene, const fs::pat
   check_dynamics_meshes(scene, runs);
   fs::create_directories(out);
   std::vector<std::string> ids;
-  for (const DynamicsRunId& id : runs) ids.push_back(id.id());
+  std::vector<double> costs;
+  for (const DynamicsRunId& id : runs) {
+    ids.push_back(id.id());
+    costs.push_back(level_cost(scene.meshes.at(id.mesh), id.level));
+  }
   const auto done =
-      run_resumable(ids, out / "results.jsonl", threads, progress, [&](std::size_t i) {
+      run_resumable(ids, costs, out / "results.jsonl", threads, progress, [&](std::size_t i) {
         DynamicsRecord r;
         try {
           r = run_dynamics(scene, runs[i], out);
@@ -269,6 +277,7 @@ DynamicsStudyResult run_dynamics_study(const DynamicsScene& scene, const fs::pat
                                           (r.complete ? "" : " (incomplete: " + r.failure + ")")};
       });
   DynamicsStudyResult result;
+  if (!Ensemble::coordinator()) return result;  // the coordinator has the records
   for (const DynamicsRunId& id : runs) {
     result.records.push_back(from_json(done.at(id.id()), id));
     if (!result.records.back().complete) ++result.incomplete;

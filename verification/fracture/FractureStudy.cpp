@@ -13,6 +13,7 @@
 #include "verification/report/Extrapolation.hpp"
 #include "verification/report/KolmogorovSmirnov.hpp"
 #include "verification/report/SampleStatistics.hpp"
+#include "verification/study/Ensemble.hpp"
 #include "verification/study/ResumableRuns.hpp"
 
 namespace fs = std::filesystem;
@@ -217,9 +218,13 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
   check_fracture_meshes(scene, runs);
   fs::create_directories(out);
   std::vector<std::string> ids;
-  for (const FractureRunId& id : runs) ids.push_back(id.id());
+  std::vector<double> costs;
+  for (const FractureRunId& id : runs) {
+    ids.push_back(id.id());
+    costs.push_back(level_cost(scene.meshes.at(id.mesh), id.level));
+  }
   const auto done =
-      run_resumable(ids, out / "results.jsonl", threads, progress, [&](std::size_t i) {
+      run_resumable(ids, costs, out / "results.jsonl", threads, progress, [&](std::size_t i) {
         FractureRecord r;
         try {
           r = run_fracture(scene, runs[i], out);
@@ -234,6 +239,7 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
                                           (r.ended.empty() ? "" : " (ended: " + r.ended + ")")};
       });
   FractureStudyResult result;
+  if (!Ensemble::coordinator()) return result;  // the coordinator has the records
   for (const FractureRunId& id : runs) {
     result.records.push_back(from_json(done.at(id.id()), id));
     if (!result.records.back().complete) ++result.incomplete;

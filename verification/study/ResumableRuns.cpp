@@ -2,15 +2,18 @@
 
 #include <omp.h>
 #include <algorithm>
-#include <atomic>
 #include <fstream>
 #include <iostream>
-#include <mutex>
-#include <thread>
 
 #include "core/util/BlasInfo.hpp"
+#include "verification/study/TaskPool.hpp"
 
 namespace vorodg {
+
+double level_cost(const SceneMesh& mesh, int level) {
+  const double size = mesh.sizes.at(level);
+  return 1.0 / (size * size * size);
+}
 
 std::map<std::string, nlohmann::json> read_finished_runs(const std::filesystem::path& jsonl) {
   std::map<std::string, nlohmann::json> done;
@@ -26,36 +29,31 @@ std::map<std::string, nlohmann::json> read_finished_runs(const std::filesystem::
 }
 
 std::map<std::string, nlohmann::json> run_resumable(
-    const std::vector<std::string>& ids, const std::filesystem::path& jsonl, int threads,
-    bool progress, const std::function<RunOutcome(std::size_t)>& execute) {
+    const std::vector<std::string>& ids, const std::vector<double>& costs,
+    const std::filesystem::path& jsonl, int threads, bool progress,
+    const std::function<RunOutcome(std::size_t)>& execute) {
   std::map<std::string, nlohmann::json> done = read_finished_runs(jsonl);
-  std::mutex lock;
+  std::vector<Task> tasks;  // one per run left
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (!done.count(ids[i])) tasks.push_back({{static_cast<int>(i)}, costs.at(i)});
   std::ofstream append(jsonl, std::ios::app);
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    omp_set_num_threads(1);  // each run on its own thread: no nested OpenMP teams to spin
-    omp_set_dynamic(1);      // CHOLMOD asks for 4 threads whatever the setting: let them shrink
-    for (std::size_t i; (i = next++) < ids.size();) {
-      {
-        std::lock_guard<std::mutex> guard(lock);
-        if (done.count(ids[i])) continue;
-      }
-      const RunOutcome outcome = execute(i);
-      std::lock_guard<std::mutex> guard(lock);
-      append << outcome.record.dump() << '\n' << std::flush;
-      done[ids[i]] = outcome.record;
-      if (progress) std::cout << "  " << outcome.progress << "\n" << std::flush;
-    }
-  };
   // One run per thread, and OpenBLAS's threads only where threads outnumber the runs left (a
   // single fine run gets them all; otherwise they would only spin against the workers).
-  const auto left =
-      std::count_if(ids.begin(), ids.end(), [&](const std::string& id) { return !done.count(id); });
-  const int workers = std::clamp(static_cast<int>(left), 1, std::max(threads, 1));
+  const int workers = std::clamp(static_cast<int>(tasks.size()), 1, std::max(threads, 1));
   const int blas_threads = set_blas_threads(std::max(1, threads / workers));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < workers; ++t) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
+  run_tasks(
+      tasks, threads,
+      [&](const Task& task) {
+        omp_set_num_threads(1);  // each run on its own thread: no nested OpenMP teams to spin
+        omp_set_dynamic(1);      // CHOLMOD asks for 4 threads whatever the setting: let them shrink
+        const RunOutcome outcome = execute(task.runs.front());
+        return TaskOutput{{outcome.record.dump()}, {outcome.progress}};
+      },
+      [&](const Task& task, const TaskOutput& output) {
+        append << output.lines.front() << '\n' << std::flush;
+        done[ids[task.runs.front()]] = nlohmann::json::parse(output.lines.front());
+        if (progress) std::cout << "  " << output.notes.front() << "\n" << std::flush;
+      });
   set_blas_threads(blas_threads);
   return done;
 }

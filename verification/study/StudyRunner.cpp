@@ -1,18 +1,17 @@
 #include "verification/study/StudyRunner.hpp"
 
-#include <atomic>
 #include <fstream>
 #include <map>
-#include <mutex>
 #include <set>
-#include <thread>
 
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
+#include "verification/study/Ensemble.hpp"
 #include "verification/study/StudyProgress.hpp"
+#include "verification/study/TaskPool.hpp"
 
 namespace vorodg {
 namespace {
@@ -148,37 +147,41 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
     costs.push_back(expected_cost(scene, runs[i]));
     done.push_back(records[i].has_value());
   }
-  std::vector<std::vector<std::size_t>> work;
-  for (auto& [key, list] : pending) work.push_back(list);
+  std::vector<Task> tasks;
+  for (const auto& [key, list] : pending) {
+    Task task{{}, 0.0};
+    for (std::size_t i : list) task.runs.push_back(static_cast<int>(i)), task.cost += costs[i];
+    tasks.push_back(std::move(task));
+  }
 
   std::ofstream out(results_file, std::ios::app);
   if (!out) throw InputError("cannot write '" + results_file.string() + "'");
-  std::mutex lock;
-  StudyProgress progress(costs, done, options.progress);
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t w = next++; w < work.size(); w = next++) {
-      std::string mesh_error;
-      const auto mesh = make_mesh(scene, runs[work[w].front()], mesh_error);
-      for (std::size_t i : work[w]) {
-        RunRecord record = solve_run(scene, runs[i], mesh ? &*mesh : nullptr, mesh_error);
-        {
-          std::lock_guard<std::mutex> guard(lock);
-          out << to_json(record).dump() << "\n"
-              << std::flush;  // at once: a kill loses nothing done
-          records[i] = std::move(record);
-        }
-        progress.finished(i);
-      }
-    }
-  };
+  StudyProgress progress(costs, done, options.progress && Ensemble::coordinator());
   // One run per core: the BLAS must not start threads of its own on top. Always one, so that
   // the results (the BLAS's summation order included) do not depend on --threads.
   const int blas_threads = set_blas_threads(1);
-  std::vector<std::thread> threads;
-  for (int t = 0; t < std::max(options.threads, 1); ++t) threads.emplace_back(worker);
-  for (auto& t : threads) t.join();
+  run_tasks(
+      tasks, options.threads,
+      [&](const Task& task) {
+        TaskOutput output;
+        std::string mesh_error;
+        const auto mesh = make_mesh(scene, runs[task.runs.front()], mesh_error);
+        for (int i : task.runs)
+          output.lines.push_back(
+              to_json(solve_run(scene, runs[i], mesh ? &*mesh : nullptr, mesh_error)).dump());
+        return output;
+      },
+      [&](const Task& task, const TaskOutput& output) {
+        for (std::size_t k = 0; k < task.runs.size(); ++k) {
+          const int i = task.runs[k];
+          out << output.lines[k] << "\n" << std::flush;  // at once: a kill loses nothing done
+          // Through the line, as a resumed study reads it: the same records either way.
+          records[i] = record_from_json(runs[i], json::parse(output.lines[k]));
+          progress.finished(i);
+        }
+      });
   set_blas_threads(blas_threads);
+  if (!Ensemble::coordinator()) return {};  // the coordinator has the records
 
   std::vector<RunRecord> results;
   for (auto& record : records) results.push_back(std::move(*record));

@@ -1,0 +1,77 @@
+#include "verification/study/Ensemble.hpp"
+
+#include <cstdlib>
+#include <string>
+
+#include "core/util/Errors.hpp"
+
+#ifdef VORODG_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace vorodg {
+namespace {
+
+int g_rank = 0, g_size = 1;
+bool g_joined = false;
+
+/// The number of processes an MPI launcher asked for, from its environment (Open MPI, MPICH and
+/// Slurm's PMI), or 1.
+int launcher_size() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+    if (const char* value = std::getenv(name)) return std::atoi(value);
+  return 1;
+}
+
+}  // namespace
+
+bool Ensemble::built_with_mpi() {
+#ifdef VORODG_HAVE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+void Ensemble::start(int& argc, char**& argv) {
+#ifdef VORODG_HAVE_MPI
+  if (launcher_size() <= 1 && !std::getenv("OMPI_COMM_WORLD_RANK")) return;  // not under mpirun
+  int provided = 0;
+  // Only each process's main thread calls MPI (TaskPool funnels its workers' traffic).
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  g_joined = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &g_size);
+#else
+  (void)argc, (void)argv;
+  const int asked = launcher_size();
+  if (asked > 1)
+    throw InputError("started as one of " + std::to_string(asked) +
+                     " MPI processes, but this vorodg was built without MPI "
+                     "(-DVORODG_MPI=OFF): rebuild with MPI, or run one process (--threads)");
+#endif
+}
+
+void Ensemble::stop() {
+#ifdef VORODG_HAVE_MPI
+  if (g_joined) MPI_Finalize();
+  g_joined = false;
+#endif
+}
+
+void Ensemble::abort(int code) {
+#ifdef VORODG_HAVE_MPI
+  if (g_joined && g_size > 1) MPI_Abort(MPI_COMM_WORLD, code);
+#else
+  (void)code;
+#endif
+}
+
+int Ensemble::rank() {
+  return g_rank;
+}
+int Ensemble::size() {
+  return g_size;
+}
+
+}  // namespace vorodg

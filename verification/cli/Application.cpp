@@ -6,6 +6,7 @@
 
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
+#include "verification/cli/MergeCommand.hpp"
 #include "verification/cli/MeshCommand.hpp"
 #include "verification/cli/RunCommand.hpp"
 #include "verification/cli/SolveCommand.hpp"
@@ -41,15 +42,18 @@ int run_application(int argc, char** argv) {
   CLI::App* solve = add_solve_command(app, solve_options);
   RunCommandOptions run_options;
   CLI::App* run = add_run_command(app, run_options);
+  MergeCommandOptions merge_options;
+  CLI::App* merge = add_merge_command(app, merge_options);
   CLI::App* info = app.add_subcommand("info", "Print the version and the BLAS in use");
   // CLI11 would only say "A subcommand is required": name what was found.
   if (argc > 1) {
     const std::string first = argv[1];
     const bool option = first.starts_with('-');
     if (option ? first != "-h" && first != "--help" && first != "--help-all" && first != "--version"
-               : first != "mesh" && first != "solve" && first != "run" && first != "info") {
+               : first != "mesh" && first != "solve" && first != "run" && first != "merge" &&
+                     first != "info") {
       std::cerr << "vorodg: error: unknown " << (option ? "option" : "command") << " '" << first
-                << "': expected a command, mesh, solve, run or info (see --help)\n";
+                << "': expected a command, mesh, solve, run, merge or info (see --help)\n";
       return kExitInputError;
     }
   }
@@ -69,6 +73,7 @@ int run_application(int argc, char** argv) {
     if (mesh->parsed()) return run_mesh_command(mesh_options, *mesh);
     if (solve->parsed()) return run_solve_command(solve_options, *solve);
     if (run->parsed()) return run_run_command(run_options, *run);
+    if (merge->parsed()) return run_merge_command(merge_options, *merge);
     if (info->parsed()) return print_info();
   } catch (const InputError& e) {
     std::cerr << "vorodg: error: " << e.what() << "\n";

@@ -5,7 +5,10 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
+#include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "verification/cli/CliSupport.hpp"
@@ -28,6 +31,16 @@ fs::path scenes_dir() {
 }
 
 /// A scene given by name ("demo") is looked up among the shipped ones.
+/// "K/N" of --shard.
+Shard parse_shard(const std::string& text) {
+  Shard shard;
+  char slash = 0;
+  std::istringstream in(text);
+  if (!(in >> shard.index >> slash >> shard.count) || slash != '/' || !in.eof())
+    throw InputError("--shard '" + text + "': expected K/N, e.g. 3/16");
+  return shard;
+}
+
 fs::path resolve_scene(const std::string& name) {
   if (fs::exists(name)) return name;
   const fs::path shipped = scenes_dir() / (name + ".json");
@@ -110,9 +123,9 @@ int run_dynamics(const fs::path& path, const StudyOptions& options, bool no_plot
     const DynamicsStudyResult r = run_dynamics_study(*part, out, options.threads, options.progress);
     incomplete += r.incomplete;
     runs += r.records.size();
-    if (!no_plots && Ensemble::coordinator()) draw_dynamics_plots(out);
+    if (!no_plots && Ensemble::writes_reports()) draw_dynamics_plots(out);
   }
-  if (!Ensemble::coordinator()) return 0;  // the reports are the coordinator's
+  if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
   if (!scene.perturb_key.empty() && incomplete == 0) write_perturbation_report(scene, options.out);
   if (scene.fragmentation && scene.variants.size() >= 2 && !no_plots)
     draw_dynamics_plots(options.out);  // across the variants (and the perturbation plot)
@@ -140,9 +153,9 @@ int run_fracture(const fs::path& path, const StudyOptions& options, bool no_plot
     const FractureStudyResult r = run_fracture_study(*part, out, options.threads, options.progress);
     incomplete += r.incomplete;
     runs += r.records.size();
-    if (!no_plots && Ensemble::coordinator()) draw_fracture_plots(out);
+    if (!no_plots && Ensemble::writes_reports()) draw_fracture_plots(out);
   }
-  if (!Ensemble::coordinator()) return 0;  // the reports are the coordinator's
+  if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
   std::cout << "\n" << scene.name << ": " << runs << " runs, " << clock.seconds() << " s\n";
   if (incomplete > 0) {
     std::cerr << "vorodg: " << incomplete << " fracture runs are incomplete (see report.md)\n";
@@ -162,13 +175,13 @@ int run_extremes(const Scene& scene, const StudyOptions& options, bool no_plots,
     sub.out = options.out / sweep->name;
     std::cout << "\n== sweep " << sweep->name << " (" << sweep->axis << ")\n";
     results.push_back(run_study(*sweep, sub));
-    if (!Ensemble::coordinator()) continue;  // the reports are the coordinator's
+    if (!Ensemble::writes_reports()) continue;  // the reports are the coordinator's
     // A sweep's own report has no pictures: the extremes plot stands for them all.
     finish_report_markdown(write_study_report(*sweep, results.back(), sub.out).markdown, sub.out,
                            {});
     runs += results.back().size();
   }
-  if (!Ensemble::coordinator()) return 0;
+  if (!Ensemble::writes_reports()) return 0;
   std::string markdown;
   const int broken = write_extremes_report(scene, results, options.out, markdown);
   if (!no_plots) draw_plots(options.out);
@@ -189,6 +202,9 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& o) {
   cmd->add_flag("--list", o.list, "List the shipped scenes");
   cmd->add_flag("--no-plots", o.no_plots, "Skip the PNG plots");
   cmd->add_flag("--quiet", o.quiet, "No progress bar");
+  cmd->add_option("--shard", o.shard,
+                  "K/N: run only the tasks whose place is K modulo N, into their own results "
+                  "file (a job array without MPI; then `vorodg merge DIR`)");
   cmd->add_flag("--force", o.force,
                 "Dynamics scenes: allow time.safety >= 1 (a step at or above the critical one)");
   return cmd;
@@ -201,7 +217,15 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   if (o.out.empty()) throw InputError("run: expected an output folder (-o DIR)");
   if (o.threads < 1) throw InputError("--threads " + std::to_string(o.threads) + ": expected >= 1");
   echo_options("vorodg run", command);
-  const fs::path scene_path = resolve_scene(o.scene);
+  return run_study_scene(o);
+}
+
+int run_study_scene(const RunCommandOptions& o) {
+  if (!o.shard.empty()) Ensemble::set_shard(parse_shard(o.shard));
+  const fs::path scene_path = fs::absolute(resolve_scene(o.scene));
+  fs::create_directories(o.out);
+  write_file_atomically(fs::path(o.out) / kRunInfoFile,
+                        nlohmann::json{{"scene", scene_path.string()}}.dump(1) + "\n");
   Stopwatch clock;
   StudyOptions options;
   options.out = o.out;
@@ -213,7 +237,7 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   const Scene scene = read_scene(scene_path);
   if (scene.study == "extremes") return run_extremes(scene, options, o.no_plots, clock);
   const auto results = run_study(scene, options);
-  if (!Ensemble::coordinator()) return 0;  // the reports are the coordinator's
+  if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
   const StudyReport report = write_study_report(scene, results, o.out);
   if (!o.no_plots) draw_plots(o.out);
   finish_report_markdown(report.markdown, o.out, study_pictures());

@@ -14,9 +14,15 @@ struct RunCommandOptions {
   bool no_plots = false;
   bool quiet = false;
   bool force = false;  // dynamics: allow time.safety >= 1
+  std::string shard;   // "K/N": run the tasks whose place is K modulo N (a job array)
 };
 
 CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options);
 int run_run_command(const RunCommandOptions& options, const CLI::App& command);
+/// The study of `options` without the echo of the command line (what `merge` reuses).
+int run_study_scene(const RunCommandOptions& options);
+
+/// The file in an output folder that names the scene it was run from (for `vorodg merge`).
+inline constexpr const char* kRunInfoFile = "run.json";
 
 }  // namespace vorodg

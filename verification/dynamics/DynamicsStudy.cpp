@@ -277,7 +277,7 @@ DynamicsStudyResult run_dynamics_study(const DynamicsScene& scene, const fs::pat
                                           (r.complete ? "" : " (incomplete: " + r.failure + ")")};
       });
   DynamicsStudyResult result;
-  if (!Ensemble::coordinator()) return result;  // the coordinator has the records
+  if (!Ensemble::writes_reports()) return result;  // the coordinator of a whole study
   for (const DynamicsRunId& id : runs) {
     result.records.push_back(from_json(done.at(id.id()), id));
     if (!result.records.back().complete) ++result.incomplete;

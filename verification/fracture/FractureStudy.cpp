@@ -239,7 +239,7 @@ FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::pat
                                           (r.ended.empty() ? "" : " (ended: " + r.ended + ")")};
       });
   FractureStudyResult result;
-  if (!Ensemble::coordinator()) return result;  // the coordinator has the records
+  if (!Ensemble::writes_reports()) return result;  // the coordinator of a whole study
   for (const FractureRunId& id : runs) {
     result.records.push_back(from_json(done.at(id.id()), id));
     if (!result.records.back().complete) ++result.incomplete;

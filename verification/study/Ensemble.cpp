@@ -14,6 +14,9 @@ namespace {
 
 int g_rank = 0, g_size = 1;
 bool g_joined = false;
+Shard g_shard;
+bool g_report_only = false;
+constexpr const char* kShardPrefix = "results.shard-";
 
 /// The number of processes an MPI launcher asked for, from its environment (Open MPI, MPICH and
 /// Slurm's PMI), or 1.
@@ -65,6 +68,29 @@ void Ensemble::abort(int code) {
 #else
   (void)code;
 #endif
+}
+
+void Ensemble::set_shard(Shard shard) {
+  if (shard.count < 1 || shard.index < 0 || shard.index >= shard.count)
+    throw InputError("--shard " + std::to_string(shard.index) + "/" +
+                     std::to_string(shard.count) + ": expected K/N with 0 <= K < N");
+  if (g_size > 1 && shard.count > 1)
+    throw InputError("--shard under mpirun: use either MPI ranks or shards, not both");
+  g_shard = shard;
+}
+
+const Shard& Ensemble::shard() { return g_shard; }
+void Ensemble::set_report_only(bool on) { g_report_only = on; }
+bool Ensemble::report_only() { return g_report_only; }
+
+std::filesystem::path Ensemble::own_results(const std::filesystem::path& jsonl) {
+  if (g_shard.count == 1) return jsonl;
+  return jsonl.parent_path() / (kShardPrefix + std::to_string(g_shard.index) + "-of-" +
+                                std::to_string(g_shard.count) + ".jsonl");
+}
+
+bool Ensemble::is_shard_results(const std::string& name) {
+  return name.starts_with(kShardPrefix) && name.ends_with(".jsonl");
 }
 
 int Ensemble::rank() {

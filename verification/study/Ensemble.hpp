@@ -5,7 +5,19 @@
 //
 // A build without MPI (-DVORODG_MPI=OFF) refuses to start under an MPI launcher that asks for
 // more than one process, rather than running the whole study once per process.
+//
+// Without MPI, a job array shares a study by shards (`--shard K/N`): shard K runs the tasks
+// whose place in the study's task list is K modulo N, into its own results file, and writes no
+// report; `vorodg merge DIR` gathers the shards' results and writes the reports (report-only:
+// a run without a result is an error, not run).
+#include <filesystem>
+#include <string>
+
 namespace vorodg {
+
+struct Shard {
+  int index = 0, count = 1;  // this process runs the tasks whose place is index modulo count
+};
 
 class Ensemble {
  public:
@@ -22,6 +34,19 @@ class Ensemble {
   static int size();
   static bool coordinator() { return rank() == 0; }
   static bool built_with_mpi();
+
+  /// Throws InputError unless 0 <= index < count, or if this is an MPI job of several ranks.
+  static void set_shard(Shard shard);
+  static const Shard& shard();
+  static void set_report_only(bool on);
+  static bool report_only();
+  /// Whether this process writes the reports: the coordinator of a whole study.
+  static bool writes_reports() { return coordinator() && shard().count == 1; }
+  /// Where this process appends its results, for the study results file `jsonl`: the file
+  /// itself, or a shard's own beside it (results.shard-K-of-N.jsonl).
+  static std::filesystem::path own_results(const std::filesystem::path& jsonl);
+  /// Whether `name` is a shard's results file.
+  static bool is_shard_results(const std::string& name);
 };
 
 }  // namespace vorodg

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "core/util/BlasInfo.hpp"
+#include "verification/study/Ensemble.hpp"
 #include "verification/study/TaskPool.hpp"
 
 namespace vorodg {
@@ -32,11 +33,14 @@ std::map<std::string, nlohmann::json> run_resumable(
     const std::vector<std::string>& ids, const std::vector<double>& costs,
     const std::filesystem::path& jsonl, int threads, bool progress,
     const std::function<RunOutcome(std::size_t)>& execute) {
+  const std::filesystem::path own = Ensemble::own_results(jsonl);
   std::map<std::string, nlohmann::json> done = read_finished_runs(jsonl);
+  if (own != jsonl) done.merge(read_finished_runs(own));
   std::vector<Task> tasks;  // one per run left
   for (std::size_t i = 0; i < ids.size(); ++i)
-    if (!done.count(ids[i])) tasks.push_back({{static_cast<int>(i)}, costs.at(i)});
-  std::ofstream append(jsonl, std::ios::app);
+    if (!done.count(ids[i]))
+      tasks.push_back({{static_cast<int>(i)}, costs.at(i), static_cast<int>(i)});
+  std::ofstream append(own, std::ios::app);
   // One run per thread, and OpenBLAS's threads only where threads outnumber the runs left (a
   // single fine run gets them all; otherwise they would only spin against the workers).
   const int workers = std::clamp(static_cast<int>(tasks.size()), 1, std::max(threads, 1));

@@ -10,6 +10,7 @@
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
 #include "verification/study/Ensemble.hpp"
+#include "verification/study/ResumableRuns.hpp"
 #include "verification/study/StudyProgress.hpp"
 #include "verification/study/TaskPool.hpp"
 
@@ -20,19 +21,6 @@ using nlohmann::json;
 
 /// Lines already in results.jsonl, by run id; a line cut short by a killed run is ignored (its
 /// run is simply done again).
-std::map<std::string, json> read_result_lines(const std::filesystem::path& file) {
-  std::map<std::string, json> lines;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    try {
-      json r = json::parse(line);
-      if (r.contains("id") && r["id"].is_string()) lines[r["id"].get<std::string>()] = r;
-    } catch (const json::exception&) {
-    }
-  }
-  return lines;
-}
-
 StudyRun make_run(const Scene& scene, int m, int level, int realization, const std::string& problem,
                   double nu, int f, std::optional<double> kp) {
   const SceneMesh& mesh = scene.meshes[m];
@@ -128,7 +116,9 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
     throw InputError("output folder '" + options.out.string() + "' cannot be created" +
                      (ec ? " (" + ec.message() + ")" : std::string()));
   const fs::path results_file = options.out / "results.jsonl";
-  const std::map<std::string, json> lines = read_result_lines(results_file);
+  const fs::path own_file = Ensemble::own_results(results_file);
+  std::map<std::string, json> lines = read_finished_runs(results_file);
+  if (own_file != results_file) lines.merge(read_finished_runs(own_file));
 
   std::vector<std::optional<RunRecord>> records(runs.size());
   // Work by mesh: every pending run on the same (mesh, level, realization) shares one mesh.
@@ -147,15 +137,20 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
     costs.push_back(expected_cost(scene, runs[i]));
     done.push_back(records[i].has_value());
   }
+  // A task's place among every mesh of the study, finished or not (what shards split by).
+  std::map<std::tuple<int, int, int>, int> place;
+  for (const StudyRun& run : runs) place.emplace(std::tuple{run.mesh, run.level, run.realization}, 0);
+  int next_place = 0;
+  for (auto& [key, p] : place) p = next_place++;
   std::vector<Task> tasks;
   for (const auto& [key, list] : pending) {
-    Task task{{}, 0.0};
+    Task task{{}, 0.0, place.at(key)};
     for (std::size_t i : list) task.runs.push_back(static_cast<int>(i)), task.cost += costs[i];
     tasks.push_back(std::move(task));
   }
 
-  std::ofstream out(results_file, std::ios::app);
-  if (!out) throw InputError("cannot write '" + results_file.string() + "'");
+  std::ofstream out(own_file, std::ios::app);
+  if (!out) throw InputError("cannot write '" + own_file.string() + "'");
   StudyProgress progress(costs, done, options.progress && Ensemble::coordinator());
   // One run per core: the BLAS must not start threads of its own on top. Always one, so that
   // the results (the BLAS's summation order included) do not depend on --threads.
@@ -181,7 +176,7 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
         }
       });
   set_blas_threads(blas_threads);
-  if (!Ensemble::coordinator()) return {};  // the coordinator has the records
+  if (!Ensemble::writes_reports()) return {};  // the coordinator of a whole study has them all
 
   std::vector<RunRecord> results;
   for (auto& record : records) results.push_back(std::move(*record));

@@ -6,6 +6,7 @@
 #include <numeric>
 #include <thread>
 
+#include "core/util/Errors.hpp"
 #include "verification/study/Ensemble.hpp"
 #include "verification/study/TaskPoolMpi.hpp"
 
@@ -19,9 +20,19 @@ std::vector<std::size_t> task_order(const std::vector<Task>& tasks) {
   return order;
 }
 
-void run_tasks(const std::vector<Task>& tasks, int threads,
+void run_tasks(const std::vector<Task>& all, int threads,
                const std::function<TaskOutput(const Task&)>& execute,
                const std::function<void(const Task&, const TaskOutput&)>& record) {
+  const Shard& shard = Ensemble::shard();
+  std::vector<Task> tasks;
+  for (const Task& task : all)
+    if (task.place % shard.count == shard.index) tasks.push_back(task);
+  if (Ensemble::report_only() && !tasks.empty()) {
+    std::size_t runs = 0;
+    for (const Task& task : tasks) runs += task.runs.size();
+    throw InputError(std::to_string(runs) + " runs have no results yet: a shard has not " +
+                     "finished (run it again, then merge)");
+  }
   if (Ensemble::size() > 1) {
     run_tasks_mpi(tasks, threads, execute, record);
     return;

@@ -24,6 +24,7 @@ namespace vorodg {
 struct Task {
   std::vector<int> runs;  // indices into the study's run list
   double cost = 1.0;      // expected, in any unit: only the order matters
+  int place = 0;          // among all the study's tasks, finished or not: what shards split by
 };
 
 struct TaskOutput {
@@ -31,9 +32,10 @@ struct TaskOutput {
   std::vector<std::string> notes;  // console lines
 };
 
-/// Runs every task once (see above). On the ranks other than the coordinator `tasks` is not
-/// read and `record` is never called. An exception out of `execute` ends the process (callers
-/// turn a run's failure into a failed record).
+/// Runs every task once (see above): under `--shard K/N` only those whose place is K modulo N.
+/// On the ranks other than the coordinator `tasks` is not read and `record` is never called.
+/// An exception out of `execute` ends the process (callers turn a run's failure into a failed
+/// record). In report-only mode (`vorodg merge`) any task left is an InputError.
 void run_tasks(const std::vector<Task>& tasks, int threads,
                const std::function<TaskOutput(const Task&)>& execute,
                const std::function<void(const Task&, const TaskOutput&)>& record);

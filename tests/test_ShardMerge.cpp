@@ -37,8 +37,8 @@ class ShardMerge : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   RunResult run(const std::string& scene, const std::string& out, const std::string& shard) const {
-    std::vector<std::string> args{"run", scene, "-o", (dir_ / out).string(), "--quiet",
-                                  "--no-plots", "--threads", "1"};
+    std::vector<std::string> args{"run",     scene,        "-o",        (dir_ / out).string(),
+                                  "--quiet", "--no-plots", "--threads", "1"};
     if (!shard.empty()) args.insert(args.end(), {"--shard", shard});
     return run_program(kExe, args, dir_);
   }

@@ -41,6 +41,14 @@ Shard parse_shard(const std::string& text) {
   return shard;
 }
 
+/// Names the scene in the output folder (for `vorodg merge`), once its runs are done: bad input
+/// leaves nothing behind. Rank 0 of an MPI job, or each shard, writes it.
+void record_scene(const fs::path& out, const fs::path& scene) {
+  if (!Ensemble::coordinator()) return;
+  write_file_atomically(out / kRunInfoFile,
+                        nlohmann::json{{"scene", fs::absolute(scene).string()}}.dump(1) + "\n");
+}
+
 fs::path resolve_scene(const std::string& name) {
   if (fs::exists(name)) return name;
   const fs::path shipped = scenes_dir() / (name + ".json");
@@ -125,6 +133,7 @@ int run_dynamics(const fs::path& path, const StudyOptions& options, bool no_plot
     runs += r.records.size();
     if (!no_plots && Ensemble::writes_reports()) draw_dynamics_plots(out);
   }
+  record_scene(options.out, path);
   if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
   if (!scene.perturb_key.empty() && incomplete == 0) write_perturbation_report(scene, options.out);
   if (scene.fragmentation && scene.variants.size() >= 2 && !no_plots)
@@ -155,6 +164,7 @@ int run_fracture(const fs::path& path, const StudyOptions& options, bool no_plot
     runs += r.records.size();
     if (!no_plots && Ensemble::writes_reports()) draw_fracture_plots(out);
   }
+  record_scene(options.out, path);
   if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
   std::cout << "\n" << scene.name << ": " << runs << " runs, " << clock.seconds() << " s\n";
   if (incomplete > 0) {
@@ -223,9 +233,6 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
 int run_study_scene(const RunCommandOptions& o) {
   if (!o.shard.empty()) Ensemble::set_shard(parse_shard(o.shard));
   const fs::path scene_path = fs::absolute(resolve_scene(o.scene));
-  fs::create_directories(o.out);
-  write_file_atomically(fs::path(o.out) / kRunInfoFile,
-                        nlohmann::json{{"scene", scene_path.string()}}.dump(1) + "\n");
   Stopwatch clock;
   StudyOptions options;
   options.out = o.out;
@@ -235,8 +242,13 @@ int run_study_scene(const RunCommandOptions& o) {
   if (is_dynamics_scene(scene_path))
     return run_dynamics(scene_path, options, o.no_plots, o.force, clock);
   const Scene scene = read_scene(scene_path);
-  if (scene.study == "extremes") return run_extremes(scene, options, o.no_plots, clock);
+  if (scene.study == "extremes") {
+    const int code = run_extremes(scene, options, o.no_plots, clock);
+    record_scene(o.out, scene_path);
+    return code;
+  }
   const auto results = run_study(scene, options);
+  record_scene(o.out, scene_path);
   if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
   const StudyReport report = write_study_report(scene, results, o.out);
   if (!o.no_plots) draw_plots(o.out);

@@ -72,16 +72,22 @@ void Ensemble::abort(int code) {
 
 void Ensemble::set_shard(Shard shard) {
   if (shard.count < 1 || shard.index < 0 || shard.index >= shard.count)
-    throw InputError("--shard " + std::to_string(shard.index) + "/" +
-                     std::to_string(shard.count) + ": expected K/N with 0 <= K < N");
+    throw InputError("--shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
+                     ": expected K/N with 0 <= K < N");
   if (g_size > 1 && shard.count > 1)
     throw InputError("--shard under mpirun: use either MPI ranks or shards, not both");
   g_shard = shard;
 }
 
-const Shard& Ensemble::shard() { return g_shard; }
-void Ensemble::set_report_only(bool on) { g_report_only = on; }
-bool Ensemble::report_only() { return g_report_only; }
+const Shard& Ensemble::shard() {
+  return g_shard;
+}
+void Ensemble::set_report_only(bool on) {
+  g_report_only = on;
+}
+bool Ensemble::report_only() {
+  return g_report_only;
+}
 
 std::filesystem::path Ensemble::own_results(const std::filesystem::path& jsonl) {
   if (g_shard.count == 1) return jsonl;

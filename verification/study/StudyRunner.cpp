@@ -139,7 +139,8 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
   }
   // A task's place among every mesh of the study, finished or not (what shards split by).
   std::map<std::tuple<int, int, int>, int> place;
-  for (const StudyRun& run : runs) place.emplace(std::tuple{run.mesh, run.level, run.realization}, 0);
+  for (const StudyRun& run : runs)
+    place.emplace(std::tuple{run.mesh, run.level, run.realization}, 0);
   int next_place = 0;
   for (auto& [key, p] : place) p = next_place++;
   std::vector<Task> tasks;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "support/RunVorodg.hpp"
+#include "support/SmallStudy.hpp"
 #include "support/TestDir.hpp"
 
 namespace vorodg {
@@ -22,14 +23,7 @@ namespace fs = std::filesystem;
 const fs::path kExe = VORODG_EXE;
 
 // Four levels, three realizations, CG and two DG penalties: 36 runs in 12 tasks, a few seconds.
-const char* kScene = R"({
-  "name": "small",
-  "description": "a convergence study big enough to be killed half way",
-  "study": "convergence",
-  "problems": ["beam"],
-  "meshes": [{"family": "rcp", "sizes": [0.3, 0.15, 0.075, 0.05], "realizations": 3, "seed": 7}],
-  "formulations": [{"name": "cg"}, {"name": "dg-nitsche", "kp": [100, 1000]}]
-})";
+const std::string kScene = small_study_scene("small", {0.3, 0.15, 0.075, 0.05}, 3, 7);
 
 class MpiRun : public ::testing::Test {
  protected:

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "support/RunVorodg.hpp"
+#include "support/SmallStudy.hpp"
 
 namespace vorodg {
 namespace {
@@ -19,14 +20,7 @@ namespace fs = std::filesystem;
 
 const fs::path kExe = VORODG_EXE;
 
-const char* kScene = R"({
-  "name": "tiny",
-  "description": "two levels, two realizations, CG and DG",
-  "study": "convergence",
-  "problems": ["beam"],
-  "meshes": [{"family": "rcp", "sizes": [0.3, 0.15], "realizations": 2, "seed": 5}],
-  "formulations": [{"name": "cg"}, {"name": "dg-nitsche", "kp": [100, 1000]}]
-})";
+const std::string kScene = small_study_scene("tiny", {0.3, 0.15}, 2, 5);
 
 class RunCommand : public ::testing::Test {
  protected:

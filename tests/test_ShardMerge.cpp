@@ -9,6 +9,7 @@
 #include <string>
 
 #include "support/RunVorodg.hpp"
+#include "support/SmallStudy.hpp"
 #include "support/TestDir.hpp"
 
 namespace vorodg {
@@ -20,14 +21,7 @@ namespace fs = std::filesystem;
 const fs::path kExe = VORODG_EXE;
 
 // Three levels, two realizations: 6 meshes (tasks), 18 runs.
-const char* kScene = R"({
-  "name": "sharded",
-  "description": "a convergence study split into shards",
-  "study": "convergence",
-  "problems": ["beam"],
-  "meshes": [{"family": "rcp", "sizes": [0.3, 0.2, 0.15], "realizations": 2, "seed": 11}],
-  "formulations": [{"name": "cg"}, {"name": "dg-nitsche", "kp": [100, 1000]}]
-})";
+const std::string kScene = small_study_scene("sharded", {0.3, 0.2, 0.15}, 2, 11);
 
 class ShardMerge : public ::testing::Test {
  protected:

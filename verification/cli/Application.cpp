@@ -17,7 +17,9 @@ namespace {
 
 int print_info() {
   std::cout << "vorodg " << VORODG_VERSION << "\n"
-            << "blas: " << blas_description() << "\n";
+            << "blas: " << blas_description() << "\n"
+            << "mpi: " << (Ensemble::built_with_mpi() ? "yes" : "no (built with -DVORODG_MPI=OFF)")
+            << "\n";
   return 0;
 }
 
@@ -44,7 +46,8 @@ int run_application(int argc, char** argv) {
   CLI::App* run = add_run_command(app, run_options);
   MergeCommandOptions merge_options;
   CLI::App* merge = add_merge_command(app, merge_options);
-  CLI::App* info = app.add_subcommand("info", "Print the version and the BLAS in use");
+  CLI::App* info =
+      app.add_subcommand("info", "Print the version, the BLAS in use and whether MPI is built in");
   // CLI11 would only say "A subcommand is required": name what was found.
   if (argc > 1) {
     const std::string first = argv[1];

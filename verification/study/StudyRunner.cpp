@@ -170,7 +170,8 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
       [&](const Task& task, const TaskOutput& output) {
         for (std::size_t k = 0; k < task.runs.size(); ++k) {
           const int i = task.runs[k];
-          out << output.lines[k] << "\n" << std::flush;  // at once: a kill loses nothing done
+          // At once: a kill loses only the tasks in flight (a task is the unit a rank reports).
+          out << output.lines[k] << "\n" << std::flush;
           // Through the line, as a resumed study reads it: the same records either way.
           records[i] = record_from_json(runs[i], json::parse(output.lines[k]));
           progress.finished(i);

@@ -11,12 +11,13 @@
 namespace vorodg {
 
 CgElasticity::CgElasticity(const ElementTable& table, const ElasticityIntegrator& integrator,
-                           const BoundaryValueProblem& problem, int threads, FillOrdering ordering)
+                           const BoundaryValueProblem& problem, int threads,
+                           LinearSolverOptions solver)
     : table_(table),
       integrator_(integrator),
       problem_(problem),
       threads_(std::max(threads, 1)),
-      ordering_(ordering) {}
+      solver_options_(solver) {}
 
 void CgElasticity::run() {
   setup_system();
@@ -99,16 +100,52 @@ void CgElasticity::add_lifting(int c, const Eigen::Ref<const Eigen::MatrixXd>& K
 }
 
 void CgElasticity::solve() {
-  Stopwatch clock;
-  SparseCholesky cholesky;
-  factorization_ = cholesky.factorize(K_, {.ordering = ordering_});
-  seconds_["analysis"] = factorization_.seconds_analyze;
-  seconds_["factorization"] = factorization_.seconds_factorize;
-  clock.restart();
-  const Eigen::VectorXd u_free = cholesky.solve(rhs_);
+  solver_used_ = resolve_solver(solver_options_.kind, num_free_dofs());
+  const Eigen::VectorXd u_free =
+      solver_used_ == LinearSolverKind::amg_cg ? solve_by_amg_cg() : solve_by_cholesky();
   const Eigen::VectorXd u = constraints_->expand(u_free);
   displacement_ = Eigen::Map<const Eigen::Matrix2Xd>(u.data(), 2, table_.mesh().num_vertices());
+}
+
+Eigen::VectorXd CgElasticity::solve_by_cholesky() {
+  SparseCholesky cholesky;
+  factorization_ = cholesky.factorize(K_, {.ordering = solver_options_.ordering});
+  seconds_["analysis"] = factorization_.seconds_analyze;
+  seconds_["factorization"] = factorization_.seconds_factorize;
+  Stopwatch clock;
+  Eigen::VectorXd u_free = cholesky.solve(rhs_);
   seconds_["solve"] = clock.seconds();
+  return u_free;
+}
+
+Eigen::VectorXd CgElasticity::solve_by_amg_cg() {
+  const PolygonMesh& mesh = table_.mesh();
+  const double tolerance = solver_options_.amg_tolerance > 0.0
+                               ? solver_options_.amg_tolerance
+                               : amg_tolerance_for(mesh.h_avg(), mesh.domain().scale());
+  AmgConjugateGradient amg;
+  // Without the rotation mode: nodal coarsening with it costs more here (AmgConjugateGradient).
+  amg.setup(K_, Eigen::VectorXd(), {.tolerance = tolerance});
+  Eigen::VectorXd u_free = amg.solve(rhs_);
+  amg_report_ = amg.report();
+  seconds_["amg_setup"] = amg_report_.seconds_setup;
+  seconds_["solve"] = amg_report_.seconds_solve;
+  return u_free;
+}
+
+Eigen::VectorXd CgElasticity::free_rotation_mode() const {
+  const PolygonMesh& mesh = table_.mesh();
+  const Eigen::Vector2d centre = 0.5 * (mesh.domain().lo() + mesh.domain().hi());
+  const double scale = mesh.domain().scale();
+  Eigen::VectorXd rotation(num_free_dofs());
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const int f = constraints_->free_index(2 * v);
+    if (f < 0) continue;
+    const Eigen::Vector2d d = (mesh.vertex(v) - centre) / scale;
+    rotation[f] = -d.y();
+    rotation[f + 1] = d.x();
+  }
+  return rotation;
 }
 
 Eigen::VectorXd CgElasticity::cell_dofs(int c) const {

@@ -3,7 +3,9 @@
 // spirit): two DOFs per mesh vertex, the shared cell-stiffness kernel, prescribed displacements
 // imposed at the vertices of Dirichlet sides (the shape functions are Kronecker-delta there) and
 // eliminated from the system, tractions integrated along the edges of traction sides, a body
-// force over the cells, and one CHOLMOD supernodal Cholesky solve.
+// force over the cells, and one linear solve: CHOLMOD's supernodal Cholesky, or conjugate
+// gradients with hypre's AMG for systems whose factor would not fit (core/solve/
+// LinearSolverChoice).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <optional>
@@ -11,7 +13,9 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/problem/BoundaryValueProblem.hpp"
+#include "core/solve/AmgConjugateGradient.hpp"
 #include "core/solve/DirichletConstraints.hpp"
+#include "core/solve/LinearSolverChoice.hpp"
 #include "core/solve/SparseCholesky.hpp"
 #include "core/util/Stopwatch.hpp"
 
@@ -21,10 +25,11 @@ class CgElasticity {
  public:
   CgElasticity(const ElementTable& table, const ElasticityIntegrator& integrator,
                const BoundaryValueProblem& problem, int threads = 1,
-               FillOrdering ordering = FillOrdering::node_metis);
+               LinearSolverOptions solver = {});
 
   /// setup_system, assemble_system, solve. Throws InputError if no side carries Dirichlet data
-  /// (rigid motions free), NumericalError if the factorization breaks down.
+  /// (rigid motions free), NumericalError if the factorization breaks down or CG does not
+  /// converge.
   void run();
 
   void setup_system();
@@ -37,24 +42,38 @@ class CgElasticity {
   Eigen::VectorXd cell_dofs(int c) const;
   int num_dofs() const { return 2 * table_.mesh().num_vertices(); }
   int num_free_dofs() const { return constraints_ ? constraints_->num_free() : 0; }
-  const FactorizationReport& factorization() const { return factorization_; }
+  /// The assembled system (after assemble_system): the lower triangle of the free-free block,
+  /// and its right-hand side.
+  const Eigen::SparseMatrix<double>& system_matrix() const { return K_; }
+  const Eigen::VectorXd& system_rhs() const { return rhs_; }
+  /// The in-plane rigid rotation about the domain's centre on the free DOFs (after
+  /// setup_system), scaled by the domain's size: what AMG adds to its interpolation.
+  Eigen::VectorXd free_rotation_mode() const;
+  /// The solver the options resolved to (known after solve()).
+  LinearSolverKind solver() const { return solver_used_; }
+  const FactorizationReport& factorization() const { return factorization_; }  // cholmod
+  const AmgCgReport& amg_report() const { return amg_report_; }                // amg-cg
   const StageTimes& seconds() const { return seconds_; }
 
  private:
   void add_lifting(int c, const Eigen::Ref<const Eigen::MatrixXd>& Kc,
                    Eigen::VectorXd& lifted) const;
+  Eigen::VectorXd solve_by_cholesky();
+  Eigen::VectorXd solve_by_amg_cg();
 
   const ElementTable& table_;
   const ElasticityIntegrator& integrator_;
   const BoundaryValueProblem& problem_;
   int threads_;
-  FillOrdering ordering_;
+  LinearSolverOptions solver_options_;
+  LinearSolverKind solver_used_ = LinearSolverKind::automatic;
 
   std::optional<DirichletConstraints> constraints_;
   Eigen::SparseMatrix<double> K_;  // lower triangle of the free-free block
   Eigen::VectorXd rhs_;            // free DOFs
   Eigen::Matrix2Xd displacement_;
   FactorizationReport factorization_;
+  AmgCgReport amg_report_;
   StageTimes seconds_;
 };
 

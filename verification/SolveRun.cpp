@@ -69,12 +69,15 @@ DgOptions dg_options(const SolveSettings& settings) {
   DgOptions options = settings.dg;
   options.method =
       settings.formulation == "cg" ? DgMethod::penalty : parse_dg_method(settings.formulation);
-  options.ordering = settings.ordering;
+  options.ordering = settings.solver.ordering;
   return options;
 }
 
 SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   const bool cg = settings.formulation == "cg";
+  if (!cg && settings.solver.kind == LinearSolverKind::amg_cg)
+    throw InputError("solver amg-cg with formulation " + settings.formulation +
+                     ": expected cg (DG systems are solved with cholmod)");
   SolveResult result;
   const auto problem = make_problem(settings, mesh.domain());
   Stopwatch clock;
@@ -90,7 +93,7 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   ElasticityIntegrator::MeanStrainOperators mean_strain;
   if (cg) {
     CgElasticity formulation(table, integrator, *problem, settings.element.threads,
-                             settings.ordering);
+                             settings.solver);
     formulation.setup_system();
     formulation.assemble_system();
     // What the errors and stresses need later is kept per cell; the table's point values go
@@ -101,6 +104,8 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
     result.seconds["cell_means"] = clock.seconds();
     formulation.solve();
     collect(formulation, mesh, result);
+    result.solver = formulation.solver();
+    result.amg = formulation.amg_report();
     result.edge_gaps.assign(mesh.num_edges(), 0.0);
   } else {
     DgElasticity formulation(table, integrator, *problem, dg_options(settings),

@@ -11,6 +11,8 @@
 #include "core/element/ElementTable.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "core/solve/AmgConjugateGradient.hpp"
+#include "core/solve/LinearSolverChoice.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/DgElasticity.hpp"
 #include "verification/problems/ExactSolution.hpp"
@@ -25,8 +27,8 @@ struct SolveSettings {
   double nu = 0.3;
   double load = 1.0;  // beam end load P
   bool mean_dilation = false;
-  ElementOptions element;  // rule, correction, weight refinement/degree, threads
-  FillOrdering ordering = FillOrdering::node_metis;  // the sparse Cholesky factor's ordering
+  ElementOptions element;      // rule, correction, weight refinement/degree, threads
+  LinearSolverOptions solver;  // CG: cholmod (its ordering; DG too) or amg-cg (its tolerance)
   bool energy_error = true;
   DgOptions dg;  // penalty scaling and k_p, tolerance, iterations, variants
 };
@@ -39,7 +41,9 @@ struct SolveResult {
   int dofs = 0, free_dofs = 0;
   double l2_error = 0.0, energy_error = 0.0;  // relative
   double rcond = 0.0;                         // CHOLMOD's reciprocal condition estimate
-  long factor_nonzeros = 0;            // entries of the Cholesky factor (its memory: 8 bytes each)
+  long factor_nonzeros = 0;  // entries of the Cholesky factor (its memory: 8 bytes each)
+  LinearSolverKind solver = LinearSolverKind::cholmod;  // what the CG solve used (DG: cholmod)
+  AmgCgReport amg;                                      // amg-cg: iterations and residual
   double max_divergence_defect = 0.0;  // before correction, relative to sqrt(cell area)
   double min_moment_rcond = 0.0;
   StageTimes seconds;

@@ -4,6 +4,11 @@
 // matrices, assembly, cell means, analysis, factorization, solve, error), the factor's nonzeros
 // and the peak memory, so the cost of everything else can be set against the factorization.
 // Target at 1e6 cells: total at most 2x the factorization, peak memory at most 8 GB.
+//
+// The second argument is the solver: 0 cholmod, 1 amg-cg (its tolerance tied to the mesh), for
+// the crossover of the two (docs/performance.md "Solvers"). amg-cg adds the counters
+// `amg_setup`, `iterations` and `relative_residual`. Peak memory is the process's so far: run
+// one case per process (--benchmark_filter) to read it per case.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -27,6 +32,7 @@ void BM_CgPipeline(benchmark::State& state) {
   SolveSettings settings;
   settings.problem = "beam";
   settings.element.threads = 2;
+  settings.solver.kind = state.range(1) ? LinearSolverKind::amg_cg : LinearSolverKind::cholmod;
   StageTimes total;
   int n_cells = 0;
   for (auto _ : state) {
@@ -40,6 +46,9 @@ void BM_CgPipeline(benchmark::State& state) {
     n_cells = mesh.mesh.num_cells();
     state.counters["dofs"] = r.dofs;
     state.counters["factor_nonzeros"] = static_cast<double>(r.factor_nonzeros);
+    state.counters["iterations"] = r.amg.iterations;
+    state.counters["relative_residual"] = r.amg.relative_residual;
+    state.counters["l2_error"] = r.l2_error;
   }
   for (const auto& [stage, s] : total) state.counters[stage] = s / state.iterations();
   state.counters["cells"] = n_cells;
@@ -50,13 +59,13 @@ void BM_CgPipeline(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_CgPipeline)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Arg(100000)
+    ->ArgNames({"cells", "amg"})
+    ->ArgsProduct({{1000, 10000, 30000, 100000, 300000}, {0, 1}})
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
 BENCHMARK(BM_CgPipeline)
-    ->Arg(1000000)
+    ->ArgNames({"cells", "amg"})
+    ->ArgsProduct({{1000000}, {0, 1}})
     ->Iterations(1)
     ->Repetitions(1)
     ->Unit(benchmark::kSecond)

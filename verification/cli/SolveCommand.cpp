@@ -29,7 +29,13 @@ void check_converged(const SolveResult& r, const SolveSettings& settings) {
 void print_summary(const SolveSettings& settings, const MeshSpec& spec, const RunMetrics& m) {
   std::cout << settings.problem << " on " << family_name(spec.family) << ": " << m.cells
             << " cells, " << m.dofs << " dofs, h_avg " << m.h_avg << ", L2 error " << m.l2_error
-            << ", energy error " << m.energy_error << ", rcond " << m.rcond << "\n";
+            << ", energy error " << m.energy_error << "\n";
+  if (m.solver == "amg-cg")
+    std::cout << "solver amg-cg: " << m.solver_iterations << " iterations, relative residual "
+              << m.solver_residual << "\n";
+  else
+    std::cout << "solver cholmod: " << m.factor_nonzeros << " factor entries, rcond " << m.rcond
+              << "\n";
   if (m.dg)
     std::cout << settings.formulation << ": penalty "
               << penalty_name(penalty_scaling(dg_options(settings))) << ", k_p "

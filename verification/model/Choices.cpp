@@ -76,6 +76,15 @@ cholmod     CHOLMOD's own choice
   return choices;
 }
 
+const Choices& solver_choices() {
+  static const Choices choices = table(R"(
+auto     cholmod up to a size, amg-cg beyond (where built with hypre)
+cholmod  CHOLMOD's supernodal sparse Cholesky
+amg-cg   conjugate gradients preconditioned by hypre's BoomerAMG
+)");
+  return choices;
+}
+
 const Choices& plane_choices() {
   static const Choices choices = table(R"(
 stress  plane stress
@@ -161,6 +170,8 @@ namespace {
 
 constexpr FillOrdering kOrderings[] = {FillOrdering::node_metis, FillOrdering::node_amd,
                                        FillOrdering::amd, FillOrdering::cholmod_default};
+constexpr LinearSolverKind kSolvers[] = {LinearSolverKind::automatic, LinearSolverKind::cholmod,
+                                         LinearSolverKind::amg_cg};
 constexpr PlaneModel kPlanes[] = {PlaneModel::stress, PlaneModel::strain};
 constexpr PenaltyScaling kPenalties[] = {PenaltyScaling::h_avg, PenaltyScaling::local_h,
                                          PenaltyScaling::fixed_h, PenaltyScaling::coercive};
@@ -188,6 +199,12 @@ FillOrdering parse_ordering(const std::string& name) {
 }
 std::string ordering_name(FillOrdering ordering) {
   return enum_name(ordering_choices(), kOrderings, ordering);
+}
+LinearSolverKind parse_solver(const std::string& name) {
+  return parse_enum(solver_choices(), kSolvers, name);
+}
+std::string solver_name(LinearSolverKind kind) {
+  return enum_name(solver_choices(), kSolvers, kind);
 }
 PlaneModel parse_plane(const std::string& name) {
   return parse_enum(plane_choices(), kPlanes, name);

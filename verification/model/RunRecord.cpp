@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/util/PeakMemory.hpp"
+#include "verification/model/Choices.hpp"
 
 namespace vorodg {
 namespace {
@@ -34,6 +35,9 @@ RunMetrics run_metrics(const PolygonMesh& mesh, const SolveResult& r) {
           .energy_error = r.energy_error,
           .rcond = r.rcond,
           .factor_nonzeros = r.factor_nonzeros,
+          .solver = solver_name(r.solver),
+          .solver_iterations = r.amg.iterations,
+          .solver_residual = r.amg.relative_residual,
           .max_divergence_defect = r.max_divergence_defect,
           .min_moment_rcond = r.min_moment_rcond,
           .seconds = r.seconds,
@@ -51,6 +55,9 @@ json to_json(const RunMetrics& m) {
             {"energy_error", m.energy_error},
             {"rcond", m.rcond},
             {"factor_nonzeros", m.factor_nonzeros},
+            {"solver", m.solver},
+            {"solver_iterations", m.solver_iterations},
+            {"solver_residual", m.solver_residual},
             {"max_divergence_defect", m.max_divergence_defect},
             {"min_moment_rcond", m.min_moment_rcond},
             {"iterations", m.iterations()},
@@ -78,6 +85,9 @@ RunMetrics metrics_from_json(const json& j) {
   m.energy_error = number(j, "energy_error");
   m.rcond = number(j, "rcond");
   m.factor_nonzeros = j.at("factor_nonzeros").get<long>();
+  m.solver = j.value("solver", "cholmod");  // records from before amg-cg existed
+  m.solver_iterations = j.value("solver_iterations", 0);
+  m.solver_residual = j.value("solver_residual", 0.0);
   m.max_divergence_defect = number(j, "max_divergence_defect");
   m.min_moment_rcond = number(j, "min_moment_rcond");
   m.seconds = j.at("seconds").get<StageTimes>();

@@ -35,6 +35,9 @@ struct RunMetrics {
   int cells = 0, vertices = 0, dofs = 0, free_dofs = 0;
   double h_avg = 0.0, l2_error = 0.0, energy_error = 0.0, rcond = 0.0;
   long factor_nonzeros = 0;
+  std::string solver = "cholmod";  // the one the run used: cholmod or amg-cg
+  int solver_iterations = 0;       // amg-cg: CG iterations (cholmod: 0)
+  double solver_residual = 0.0;    // amg-cg: ||b - A x|| / ||b|| (cholmod: 0)
   double max_divergence_defect = 0.0, min_moment_rcond = 0.0;
   StageTimes seconds;
   std::optional<DgReport> dg;  // DG only

@@ -162,8 +162,17 @@ std::vector<SettingSpec> make_specs() {
       choice(
           "ordering", "--ordering", "fill-reducing ordering of the sparse factor",
           Scope::command_line, ordering_choices(),
-          [](const S& s) { return ordering_name(s.ordering); },
-          [](S& s, const std::string& v) { s.ordering = parse_ordering(v); }),
+          [](const S& s) { return ordering_name(s.solver.ordering); },
+          [](S& s, const std::string& v) { s.solver.ordering = parse_ordering(v); }),
+      choice(
+          "solver", "--solver", "CG: the linear solver", Scope::formulation, solver_choices(),
+          [](const S& s) { return solver_name(s.solver.kind); },
+          [](S& s, const std::string& v) { s.solver.kind = parse_solver(v); }),
+      number("amg_tolerance", "--amg-tol", "amg_tolerance",
+             "amg-cg: relative tolerance of CG in the AMG-preconditioned norm; 0 ties it to the "
+             "mesh: 0.01 (h_avg/L)^2 within [1e-12, 1e-6]",
+             Scope::formulation, at_least(0),
+             [](S& s) -> double& { return s.solver.amg_tolerance; }),
   };
 }
 

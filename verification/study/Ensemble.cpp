@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
+#include "core/util/MpiRuntime.hpp"
 
 #ifdef VORODG_HAVE_MPI
 #include <mpi.h>
@@ -29,19 +30,15 @@ int launcher_size() {
 }  // namespace
 
 bool Ensemble::built_with_mpi() {
-#ifdef VORODG_HAVE_MPI
-  return true;
-#else
-  return false;
-#endif
+  return mpi_runtime::built_with_mpi();
 }
 
 void Ensemble::start(int& argc, char**& argv) {
 #ifdef VORODG_HAVE_MPI
   if (launcher_size() <= 1 && !std::getenv("OMPI_COMM_WORLD_RANK")) return;  // not under mpirun
-  int provided = 0;
-  // Only each process's main thread calls MPI (TaskPool funnels its workers' traffic).
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  // Only each process's main thread calls MPI for the pool (TaskPool funnels its workers'
+  // traffic); hypre's solves on MPI_COMM_SELF in the workers need the threads level anyway.
+  mpi_runtime::initialize(&argc, &argv);
   g_joined = true;
   MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
   MPI_Comm_size(MPI_COMM_WORLD, &g_size);
@@ -56,10 +53,8 @@ void Ensemble::start(int& argc, char**& argv) {
 }
 
 void Ensemble::stop() {
-#ifdef VORODG_HAVE_MPI
-  if (g_joined) MPI_Finalize();
+  mpi_runtime::finalize();  // also ends a singleton session started by an AMG solve
   g_joined = false;
-#endif
 }
 
 void Ensemble::abort(int code) {

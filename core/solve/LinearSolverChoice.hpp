@@ -1,0 +1,37 @@
+#pragma once
+// Which linear solver a CG elasticity system gets: CHOLMOD's sparse Cholesky (exact to
+// round-off; memory grows like the factor, docs/performance.md "Solvers") or conjugate gradients
+// with hypre's AMG (memory like the matrix; stops at a tolerance), or the one the size calls for.
+#include "core/solve/SparseCholesky.hpp"
+
+namespace vorodg {
+
+enum class LinearSolverKind {
+  automatic,  // cholmod up to kAmgFromFreeDofs free DOFs, amg-cg from there (where available)
+  cholmod,
+  amg_cg,
+};
+
+/// From this many free DOFs on, `automatic` chooses amg-cg: the measured crossover of the two
+/// solvers' times on the rcp beam (docs/performance.md "Solvers").
+inline constexpr int kAmgFromFreeDofs = 2'000'000;
+
+struct LinearSolverOptions {
+  LinearSolverKind kind = LinearSolverKind::automatic;
+  FillOrdering ordering = FillOrdering::node_metis;  // cholmod
+  /// amg-cg: the stopping tolerance (AmgCgOptions::tolerance); 0 ties it to the mesh, see
+  /// amg_tolerance_for().
+  double amg_tolerance = 0.0;
+};
+
+/// The solver `options.kind` stands for on a system of `free_dofs` unknowns.
+LinearSolverKind resolve_solver(LinearSolverKind kind, long free_dofs);
+
+/// The amg-cg tolerance tied to the discretization: the L2 error of a linearly complete element
+/// falls like (h/L)^2, and the algebraic error CG leaves, relative, is about its tolerance in
+/// the energy norm (an AMG-preconditioned operator is well conditioned). A hundredth of
+/// (h_avg/L)^2 keeps the algebraic part below a hundredth of the discretization error with room
+/// for the constant; clamped to [1e-12, 1e-6]. L is the larger side of the domain.
+double amg_tolerance_for(double h_avg, double length);
+
+}  // namespace vorodg

@@ -168,6 +168,20 @@ TEST(LinearSolverChoice, AutomaticPicksCholmodBelowTheCrossover) {
   EXPECT_EQ(resolve_solver(LinearSolverKind::amg_cg, 10), LinearSolverKind::amg_cg);
 }
 
+TEST(LinearSolverChoice, PatchTestsKeepTheFactorUnlessAskedOtherwise) {
+  SolveSettings s;
+  for (const char* problem : {"patch", "patch-mixed", "patch-traction"}) {
+    s.problem = problem;
+    s.solver.kind = LinearSolverKind::automatic;
+    EXPECT_EQ(cg_solver(s).kind, LinearSolverKind::cholmod) << problem;
+    s.solver.kind = LinearSolverKind::amg_cg;
+    EXPECT_EQ(cg_solver(s).kind, LinearSolverKind::amg_cg) << problem;
+  }
+  s.problem = "beam";
+  s.solver.kind = LinearSolverKind::automatic;
+  EXPECT_EQ(cg_solver(s).kind, LinearSolverKind::automatic);
+}
+
 TEST(LinearSolverChoice, ToleranceFollowsTheMeshWithinItsClamps) {
   EXPECT_DOUBLE_EQ(amg_tolerance_for(0.01, 1.0), 1e-6);   // 0.01 * 1e-4 = 1e-6
   EXPECT_DOUBLE_EQ(amg_tolerance_for(0.001, 1.0), 1e-8);  // 0.01 * 1e-6

@@ -73,6 +73,13 @@ DgOptions dg_options(const SolveSettings& settings) {
   return options;
 }
 
+LinearSolverOptions cg_solver(const SolveSettings& settings) {
+  LinearSolverOptions solver = settings.solver;
+  if (settings.problem.starts_with("patch") && solver.kind == LinearSolverKind::automatic)
+    solver.kind = LinearSolverKind::cholmod;
+  return solver;
+}
+
 SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   const bool cg = settings.formulation == "cg";
   if (!cg && settings.solver.kind == LinearSolverKind::amg_cg)
@@ -93,7 +100,7 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   ElasticityIntegrator::MeanStrainOperators mean_strain;
   if (cg) {
     CgElasticity formulation(table, integrator, *problem, settings.element.threads,
-                             settings.solver);
+                             cg_solver(settings));
     formulation.setup_system();
     formulation.assemble_system();
     // What the errors and stresses need later is kept per cell; the table's point values go

@@ -60,6 +60,10 @@ struct SolveResult {
 /// Throws InputError for an unknown name or a domain the problem cannot live on.
 std::unique_ptr<ExactSolution> make_problem(const SolveSettings& settings, const Rectangle& domain);
 
+/// The CG solver options of a solve: the settings', except that a patch test asks for exactness
+/// to round-off, which a factor gives and a tolerance does not, so there `auto` means cholmod.
+LinearSolverOptions cg_solver(const SolveSettings& settings);
+
 /// Builds the element table, assembles, solves and measures the errors.
 SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings);
 

@@ -132,7 +132,7 @@ struct AmgConjugateGradient::Impl {
   HYPRE_IJVector rotation = nullptr;
   HYPRE_ParVector rotation_par = nullptr;
   HYPRE_Solver amg = nullptr, pcg = nullptr;
-  Eigen::SparseMatrix<double> lower;  // a copy, for the true residual after each solve
+  const Eigen::SparseMatrix<double>* lower = nullptr;  // the caller's, for the true residual
   AmgCgOptions options;
 
   void release() {
@@ -160,7 +160,7 @@ void AmgConjugateGradient::setup(const Eigen::SparseMatrix<double>& lower,
   s.release();
   s.n = static_cast<int>(lower.rows());
   s.options = options;
-  s.lower = lower;
+  s.lower = &lower;
   s.A = make_matrix(lower);
   if (rotation.size() == s.n) {
     s.rotation = make_vector(s.n, rotation.data());
@@ -209,7 +209,7 @@ Eigen::VectorXd AmgConjugateGradient::solve(const Eigen::VectorXd& rhs) {
     report_.seconds_solve = clock.seconds();
   }
   const double b_norm = rhs.norm();
-  const Eigen::VectorXd r = rhs - s.lower.selfadjointView<Eigen::Lower>() * u;
+  const Eigen::VectorXd r = rhs - s.lower->selfadjointView<Eigen::Lower>() * u;
   report_.relative_residual = b_norm > 0.0 ? r.norm() / b_norm : r.norm();
   if (!u.allFinite())
     throw NumericalError("amg-cg: the solution is not finite after " +

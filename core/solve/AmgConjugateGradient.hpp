@@ -42,10 +42,11 @@ class AmgConjugateGradient {
   AmgConjugateGradient& operator=(const AmgConjugateGradient&) = delete;
 
   /// Builds the AMG hierarchy of the symmetric positive definite matrix whose lower triangle is
-  /// given. `rotation`, the infinitesimal rigid rotation (-y, x) on the DOFs, switches to nodal
-  /// coarsening with the rotation in the interpolation (hypre's elasticity setting; measured
-  /// slower on our systems, see the .cpp); empty: the unknown-based systems AMG.
-  /// Throws InputError if hypre is not available.
+  /// given; the matrix must outlive the solves (they compute the true residual with it).
+  /// `rotation`, the infinitesimal rigid rotation (-y, x) on the DOFs, switches to nodal coarsening
+  /// with the rotation in the interpolation (hypre's elasticity setting; measured slower on our
+  /// systems, see the .cpp); empty: the unknown-based systems AMG. Throws InputError if hypre is
+  /// not available.
   void setup(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& rotation,
              const AmgCgOptions& options = {});
   /// Solves from a zero start. Throws NumericalError if CG does not reach the tolerance within

@@ -1,12 +1,15 @@
 // DG iteration cost against the factorization: the beam on rcp meshes with dg-nitsche
 // and dg-al (k_p = 1e3 E); counters give the analysis and factorization seconds of a + eps P and
 // the seconds of one iteration (back-solve + interface-load update). Target at 1e5 cells: one
-// iteration <= 10% of the factorization.
+// iteration <= 10% of the factorization. BM_DgAmgCg: whether AMG-preconditioned CG converges on
+// a + eps P (docs/solvers.md).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/solve/AmgConjugateGradient.hpp"
+#include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/TraceConstants.hpp"
 #include "verification/SolveRun.hpp"
@@ -75,7 +78,57 @@ void BM_TraceConstants(benchmark::State& state) {
   state.counters["over_element_setup"] = seconds / element_seconds;
 }
 
+/// Does AMG-preconditioned CG still converge on the DG operator a + eps P (dg-nitsche's, on the
+/// rcp beam) as k_p grows? range(1) is log10 k_p. One CG solve of a + eps P against a right-hand
+/// side of ones, tolerance 1e-8, at most 1000 iterations; `converged` 0 where it did not.
+/// CHOLMOD's analysis and factorization of the same matrix are the counters to compare with.
+void BM_DgAmgCg(benchmark::State& state) {
+  const GeneratedMesh mesh = rcp_beam_mesh(state.range(0));
+  SolveSettings settings;
+  settings.formulation = "dg-nitsche";
+  settings.dg.kp = std::pow(10.0, static_cast<double>(state.range(1)));
+  const auto problem = make_problem(settings, mesh.mesh.domain());
+  const ElementTable table(mesh.mesh, ElementOptions{});
+  const ElasticityIntegrator integrator(table, problem->material(), false);
+  DgElasticity dg(table, integrator, *problem, dg_options(settings), 2);
+  dg.setup_system();
+  dg.assemble_system();
+  const Eigen::SparseMatrix<double> lower = dg.system_matrix().triangularView<Eigen::Lower>();
+  const Eigen::VectorXd rhs = Eigen::VectorXd::Ones(lower.rows());
+  bool converged = true;
+  AmgConjugateGradient amg;
+  for (auto _ : state) {
+    amg.setup(lower, Eigen::VectorXd(), {.tolerance = 1e-8, .max_iterations = 1000});
+    try {
+      benchmark::DoNotOptimize(amg.solve(rhs));
+    } catch (const NumericalError&) {
+      converged = false;
+    }
+  }
+  SparseCholesky cholesky;
+  const FactorizationReport factor = cholesky.factorize(lower);
+  state.counters["dofs"] = static_cast<double>(lower.rows());
+  state.counters["converged"] = converged;
+  state.counters["iterations"] = amg.report().iterations;
+  state.counters["amg_setup"] = amg.report().seconds_setup;
+  state.counters["cg"] = amg.report().seconds_solve;
+  state.counters["analysis"] = factor.seconds_analyze;
+  state.counters["factorization"] = factor.seconds_factorize;
+}
+
 }  // namespace
+
+BENCHMARK(BM_DgAmgCg)
+    ->ArgNames({"cells", "log10_kp"})
+    ->Args({10000, 1})
+    ->Args({100000, 1})
+    ->Args({10000, 3})
+    ->Args({100000, 3})
+    ->Args({10000, 5})  // does not converge: 1000 iterations (at 1e5 cells they would take 12 min)
+    ->Iterations(1)
+    ->Repetitions(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 BENCHMARK(BM_TraceConstants)
     ->Args({100000, 0})

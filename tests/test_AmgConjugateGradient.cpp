@@ -6,10 +6,15 @@
 //   - the nodal setting with the rotation mode solves the same system;
 //   - results are bitwise the same for 1 and 2 assembly threads, and for solves run
 //     concurrently from two threads (hypre's calls are serialized);
-//   - it refuses to return an unconverged solution; `auto` picks cholmod below the crossover.
+//   - it refuses to return an unconverged solution; `auto` picks cholmod below the crossover;
+//   - with hypre linked, a large freed array still goes back to the system (SuperLU_DIST, which
+//     hypre links, turns that off when it is loaded; vorodg turns it back on).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <Eigen/SparseCholesky>
+#include <fstream>
 #include <thread>
 
 #include "cg/CgElasticity.hpp"
@@ -203,6 +208,27 @@ TEST(LinearSolverChoice, DgFormulationsRefuseAmgCg) {
   s.formulation = "dg-nitsche";
   s.solver.kind = LinearSolverKind::amg_cg;
   EXPECT_THROW(run_solve(mesh, s), InputError);
+}
+
+/// Resident memory of this process in KiB (/proc/self/statm counts pages).
+long resident_kib() {
+  std::ifstream statm("/proc/self/statm");
+  long size = 0, resident = 0;
+  statm >> size >> resident;
+  return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+TEST(MemoryReturn, AFreedLargeArrayLeavesTheProcess) {
+#ifdef VORODG_SANITIZED
+  GTEST_SKIP() << "AddressSanitizer keeps freed memory in quarantine";
+#endif
+  const long before = resident_kib();
+  {
+    std::vector<double> big(std::size_t{128} << 17);  // 128 MiB, every page touched
+    for (std::size_t i = 0; i < big.size(); i += 512) big[i] = 1.0;
+    EXPECT_GT(resident_kib() - before, 100 * 1024);
+  }
+  EXPECT_LT(resident_kib() - before, 16 * 1024);
 }
 
 }  // namespace

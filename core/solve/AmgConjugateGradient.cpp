@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <mutex>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -47,14 +48,20 @@ const bool g_malloc_restored = [] {
 
 std::mutex g_hypre;  // hypre's global state: one call into it at a time per process
 
+/// The indices 0 .. n-1: every row, as hypre's set and get calls take them.
+std::vector<HYPRE_Int> all_rows(int n) {
+  std::vector<HYPRE_Int> rows(n);
+  std::iota(rows.begin(), rows.end(), 0);
+  return rows;
+}
+
 /// A hypre vector on MPI_COMM_SELF holding `values` (zeros if empty).
 HYPRE_IJVector make_vector(int n, const double* values) {
   HYPRE_IJVector v;
   HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, n - 1, &v);
   HYPRE_IJVectorSetObjectType(v, HYPRE_PARCSR);
   HYPRE_IJVectorInitialize(v);
-  std::vector<HYPRE_Int> rows(n);
-  for (int i = 0; i < n; ++i) rows[i] = i;
+  const std::vector<HYPRE_Int> rows = all_rows(n);
   const std::vector<double> zeros(values ? 0 : n, 0.0);
   HYPRE_IJVectorSetValues(v, n, rows.data(), values ? values : zeros.data());
   HYPRE_IJVectorAssemble(v);
@@ -98,8 +105,7 @@ HYPRE_IJMatrix make_matrix(const Eigen::SparseMatrix<double>& lower) {
   HYPRE_IJMatrixSetObjectType(A, HYPRE_PARCSR);
   HYPRE_IJMatrixSetRowSizes(A, row_size.data());
   HYPRE_IJMatrixInitialize(A);
-  std::vector<HYPRE_Int> rows(n);
-  for (int i = 0; i < n; ++i) rows[i] = i;
+  const std::vector<HYPRE_Int> rows = all_rows(n);
   HYPRE_IJMatrixSetValues(A, n, row_size.data(), rows.data(), cols.data(), values.data());
   HYPRE_IJMatrixAssemble(A);
   return A;
@@ -216,8 +222,7 @@ Eigen::VectorXd AmgConjugateGradient::solve(const Eigen::VectorXd& rhs) {
     HYPRE_ClearAllErrors();  // non-convergence is judged below, from the residual
     HYPRE_Int iterations = 0;
     HYPRE_PCGGetNumIterations(s.pcg, &iterations);
-    std::vector<HYPRE_Int> rows(s.n);
-    for (int i = 0; i < s.n; ++i) rows[i] = i;
+    const std::vector<HYPRE_Int> rows = all_rows(s.n);
     HYPRE_IJVectorGetValues(x, s.n, rows.data(), u.data());
     HYPRE_IJVectorDestroy(b);
     HYPRE_IJVectorDestroy(x);

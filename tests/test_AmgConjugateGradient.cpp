@@ -1,5 +1,5 @@
 // The amg-cg solver (core/solve/AmgConjugateGradient, its choice in core/solve/
-// LinearSolverChoice and its use by CG elasticity), docs/performance.md "Solvers":
+// LinearSolverChoice and its use by CG elasticity), docs/solvers.md:
 //   - on the rcp beam it gives the errors CHOLMOD gives, within 1% of themselves, at the
 //     tolerance tied to the mesh, and the residual it reports is the true one;
 //   - its iteration count stays nearly flat as the mesh is refined (what AMG is for);

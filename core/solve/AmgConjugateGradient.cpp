@@ -2,7 +2,6 @@
 
 #include <malloc.h>
 
-#include <cmath>
 #include <mutex>
 #include <numeric>
 #include <string>
@@ -113,7 +112,7 @@ HYPRE_IJMatrix make_matrix(const Eigen::SparseMatrix<double>& lower) {
 
 /// BoomerAMG as one V-cycle per CG iteration, in its systems version: the unknowns of a node
 /// are told apart by their component (2k, 2k+1) and coarsened per component ("unknown
-/// approach"), with a strength threshold of 0.25 (docs/performance.md "Solvers": of the options
+/// approach"), with a strength threshold of 0.25 (docs/solvers.md: of the options
 /// tried on the rcp beam, the iterations stayed flattest, 18-21 from 4e3 to 1.7e6 DOFs, and
 /// grew least as nu -> 1/2).
 ///

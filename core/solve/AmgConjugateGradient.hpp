@@ -2,8 +2,7 @@
 // Iterative solves for what a sparse factor cannot hold: conjugate gradients preconditioned by
 // one V-cycle of hypre's BoomerAMG in its systems version for 2D elasticity (the two components
 // of a node coarsened apart). The memory is a few copies of the matrix, where a Cholesky factor
-// of a 2D elasticity matrix grows like N log N with large constants (docs/performance.md
-// "Solvers").
+// of a 2D elasticity matrix grows like N log N with large constants (docs/solvers.md).
 //
 // Debian's hypre runs on MPI: its objects live on MPI_COMM_SELF (every process solves its own
 // systems), and MPI is initialized on first use if the program has not done so. hypre keeps

@@ -1,6 +1,6 @@
 #pragma once
 // Which linear solver a CG elasticity system gets: CHOLMOD's sparse Cholesky (exact to
-// round-off; memory grows like the factor, docs/performance.md "Solvers") or conjugate gradients
+// round-off; memory grows like the factor, docs/solvers.md) or conjugate gradients
 // with hypre's AMG (memory like the matrix; stops at a tolerance), or the one the size calls for.
 #include "core/solve/SparseCholesky.hpp"
 
@@ -12,10 +12,10 @@ enum class LinearSolverKind {
   amg_cg,
 };
 
-/// From this many free DOFs on, `automatic` chooses amg-cg. On the rcp beam (docs/performance.md
-/// "Solvers") amg-cg on one thread matches CHOLMOD on two near 1e5 free DOFs and is 12-37%
-/// faster from 4e5 on, with half the peak memory at 3.8e6; below 5e5 the exactness of a factor
-/// is kept, so every shipped scene solves as it did before amg-cg existed.
+/// From this many free DOFs on, `automatic` chooses amg-cg. On the rcp beam (docs/solvers.md)
+/// amg-cg on one thread matches CHOLMOD on two near 1e5 free DOFs and is 12-37% faster from 4e5 on,
+/// with a third less peak memory at 3.8e6; below 5e5 the exactness of a factor is kept, so every
+/// shipped scene solves as it did before amg-cg existed.
 inline constexpr int kAmgFromFreeDofs = 500'000;
 
 struct LinearSolverOptions {

@@ -6,7 +6,7 @@
 // Target at 1e6 cells: total at most 2x the factorization, peak memory at most 8 GB.
 //
 // The second argument is the solver: 0 cholmod, 1 amg-cg (its tolerance tied to the mesh), for
-// the crossover of the two (docs/performance.md "Solvers"). amg-cg adds the counters
+// the crossover of the two (docs/solvers.md). amg-cg adds the counters
 // `amg_setup`, `iterations` and `relative_residual`. Peak memory is the process's so far: run
 // one case per process (--benchmark_filter) to read it per case.
 #include <benchmark/benchmark.h>

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include <omp.h>
-
 #include "core/element/LoadIntegrator.hpp"
 #include "core/solve/LowerBlockAssembler.hpp"
 #include "core/util/Errors.hpp"
@@ -42,10 +40,11 @@ void CgElasticity::assemble_system() {
     const int f = constraints_->free_index(2 * v);
     return f < 0 ? -1 : f / 2;
   };
-  LowerBlockAssembler assembler(num_free_dofs() / 2, nc, [&](int c, std::vector<int>& nodes) {
+  const LowerBlockAssembler::ElementNodes cell_nodes = [&](int c, std::vector<int>& nodes) {
     nodes.clear();
     for (int v : mesh.cell_vertices(c)) nodes.push_back(free_node(v));
-  });
+  };
+  LowerBlockAssembler assembler(num_free_dofs() / 2, nc, cell_nodes);
   seconds_["pattern"] = clock.seconds();
 
   Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
@@ -57,26 +56,14 @@ void CgElasticity::assemble_system() {
   // a(u, v): the cell matrices of a chunk in parallel, then added column range by column range
   // (each thread owns the columns of a node range, so every entry sums in cell order).
   constexpr int kChunk = 16384;
-  const int nodes = num_free_dofs() / 2;
   double matrix_seconds = 0.0;
-  std::vector<int> cell_nodes;
   for (int first = 0; first < nc; first += kChunk) {
     const int last = std::min(first + kChunk, nc);
     Stopwatch chunk_clock;
     const auto cells = integrator_.cell_matrices(first, last, threads_);
     matrix_seconds += chunk_clock.seconds();
-#pragma omp parallel num_threads(threads_)
-    {
-      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-      const int node_begin = static_cast<int>(static_cast<long>(nodes) * t / nt);
-      const int node_end = static_cast<int>(static_cast<long>(nodes) * (t + 1) / nt);
-      std::vector<int> local_nodes;
-      for (int c = first; c < last; ++c) {
-        local_nodes.clear();
-        for (int v : mesh.cell_vertices(c)) local_nodes.push_back(free_node(v));
-        assembler.add(local_nodes, cells.block(c, 2 * mesh.cell_size(c)), node_begin, node_end);
-      }
-    }
+    assembler.add_in_parallel(first, last, threads_, cell_nodes,
+                              [&](int c) { return cells.block(c, 2 * mesh.cell_size(c)); });
     for (int c = first; c < last; ++c)
       add_lifting(c, cells.block(c, 2 * mesh.cell_size(c)), lifted);
   }
@@ -109,7 +96,10 @@ void CgElasticity::solve() {
 
 Eigen::VectorXd CgElasticity::solve_by_cholesky() {
   SparseCholesky cholesky;
-  factorization_ = cholesky.factorize(K_, {.ordering = solver_options_.ordering});
+  // The matrix goes to the factorization, which frees it before the factor's values are
+  // allocated: one copy of it less at the memory peak of the solve.
+  factorization_ = cholesky.factorize(
+      std::move(K_), {.ordering = solver_options_.ordering, .shared_analyses = shared_analyses_});
   seconds_["analysis"] = factorization_.seconds_analyze;
   seconds_["factorization"] = factorization_.seconds_factorize;
   Stopwatch clock;

@@ -35,6 +35,9 @@ class CgElasticity {
   void setup_system();
   void assemble_system();
   void solve();
+  /// Shares the symbolic analysis of the factorization with other runs on the same mesh (a
+  /// study's): one kept for the same pattern is used, a new one is kept. Results are unchanged.
+  void share_analyses(SymbolicAnalyses* analyses) { shared_analyses_ = analyses; }
 
   /// Displacement of every vertex (the nodal values: shape functions are Kronecker-delta).
   const Eigen::Matrix2Xd& vertex_displacement() const { return displacement_; }
@@ -43,7 +46,7 @@ class CgElasticity {
   int num_dofs() const { return 2 * table_.mesh().num_vertices(); }
   int num_free_dofs() const { return constraints_ ? constraints_->num_free() : 0; }
   /// The assembled system (after assemble_system): the lower triangle of the free-free block,
-  /// and its right-hand side.
+  /// and its right-hand side. A solve with cholmod consumes the matrix (it is empty afterwards).
   const Eigen::SparseMatrix<double>& system_matrix() const { return K_; }
   const Eigen::VectorXd& system_rhs() const { return rhs_; }
   /// The in-plane rigid rotation about the domain's centre on the free DOFs (after
@@ -67,6 +70,7 @@ class CgElasticity {
   int threads_;
   LinearSolverOptions solver_options_;
   LinearSolverKind solver_used_ = LinearSolverKind::automatic;
+  SymbolicAnalyses* shared_analyses_ = nullptr;
 
   std::optional<DirichletConstraints> constraints_;
   Eigen::SparseMatrix<double> K_;  // lower triangle of the free-free block

@@ -8,8 +8,13 @@
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "dg/DgSystemAssembly.hpp"
 
 namespace vorodg {
+
+namespace {
+constexpr int kConsistencyChunk = 1024;  // interfaces per parallel work item
+}  // namespace
 
 DgMethod parse_dg_method(const std::string& formulation) {
   if (formulation == "dg-penalty") return DgMethod::penalty;
@@ -69,19 +74,15 @@ void DgElasticity::setup_system() {
   seconds_["setup"] = clock.seconds();
 }
 
+bool DgElasticity::symmetric() const {
+  return !(options_.method == DgMethod::sipg && options_.sipg_sign > 0);
+}
+
 void DgElasticity::assemble_system() {
   Stopwatch clock;
   const PolygonMesh& mesh = table_.mesh();
-  std::vector<Eigen::Triplet<double>> triplets;
   // a(u, v): the shared cell kernel, block by block (each cell owns its DOFs).
   const auto cells = integrator_.all_cell_matrices(threads_);
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    const int m = space_.cell_dof_count(c);
-    const std::vector<int> dofs = space_.cell_dofs(c);
-    const auto Kc = cells.block(c, m);
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i) triplets.emplace_back(dofs[i], dofs[j], Kc(i, j));
-  }
   seconds_["cell_matrices"] = clock.seconds();
   clock.restart();
   penalty_ = std::make_unique<InterfacePenalty>(
@@ -89,44 +90,11 @@ void DgElasticity::assemble_system() {
       options_.weighted_average, interface_traction(options_), threads_);
   seconds_["penalty"] = clock.seconds();
   clock.restart();
-  const SegmentRule& rule = gauss2_segment();
-  const bool sipg = options_.method == DgMethod::sipg;
-  const TractionKind kind = interface_traction(options_);
-  const auto& faces = space_.interfaces();
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const Interface& f = faces[i];
-    const std::vector<int> dofs = ops_.dofs(f);
-    Eigen::MatrixXd local = Eigen::MatrixXd::Zero(dofs.size(), dofs.size());
-    for (int g = 0; g < 2; ++g) {
-      const double w = rule.weights[g] * f.length;
-      const InterfaceOperator J = ops_.jump(f, rule.t[g]);
-      local += penalty_->eps(i) * w * J.transpose() * J;  // eps int [u].[v], exact (linear jumps)
-    }
-    if (sipg) {  // -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u]
-      const Eigen::MatrixXd JT = consistency_block(i, kind);
-      local += -JT + options_.sipg_sign * JT.transpose();
-    }
-    for (std::size_t col = 0; col < dofs.size(); ++col)
-      for (std::size_t row = 0; row < dofs.size(); ++row)
-        triplets.emplace_back(dofs[row], dofs[col], local(row, col));
-  }
-  Eigen::SparseMatrix<double> full(num_dofs(), num_dofs());
-  full.setFromTriplets(triplets.begin(), triplets.end());
-  // Split into the free-free block and the free rows of the prescribed columns.
-  std::vector<Eigen::Triplet<double>> ff, fp;
-  for (int col = 0; col < full.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(full, col); it; ++it) {
-      const int fi = constraints_->free_index(it.row()), fj = constraints_->free_index(col);
-      if (fi < 0) continue;
-      if (fj >= 0)
-        ff.emplace_back(fi, fj, it.value());
-      else
-        fp.emplace_back(fi, col, it.value());
-    }
-  A_.resize(num_free_dofs(), num_free_dofs());
-  A_.setFromTriplets(ff.begin(), ff.end());
-  A_fixed_.resize(num_free_dofs(), num_dofs());
-  A_fixed_.setFromTriplets(fp.begin(), fp.end());
+  DgSystem system = assemble_dg_system(
+      space_, *constraints_, cells, [&](std::size_t i) { return interface_matrix(i); }, symmetric(),
+      threads_);
+  A_ = std::move(system.matrix);
+  A_fixed_ = std::move(system.fixed);
 
   // l(v) on the cells' own copies.
   Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
@@ -137,6 +105,26 @@ void DgElasticity::assemble_system() {
   lambda_.assign(2 * space_.interfaces().size(), Eigen::Vector2d::Zero());
   if (options_.method == DgMethod::nitsche) build_consistency();
   seconds_["assembly"] = clock.seconds();
+}
+
+/// The interface terms that stay on the left side, on interface i's two cells' DOFs:
+/// eps int [u].[v] (exact with two points: jumps are linear along the edge), and for SIPG
+/// -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u].
+Eigen::MatrixXd DgElasticity::interface_matrix(std::size_t i) const {
+  const Interface& f = space_.interfaces()[i];
+  const SegmentRule& rule = gauss2_segment();
+  const int m = space_.cell_dof_count(f.cell[0]) + space_.cell_dof_count(f.cell[1]);
+  Eigen::MatrixXd local = Eigen::MatrixXd::Zero(m, m);
+  for (int g = 0; g < 2; ++g) {
+    const double w = rule.weights[g] * f.length;
+    const InterfaceOperator J = ops_.jump(f, rule.t[g]);
+    local += penalty_->eps(i) * w * J.transpose() * J;
+  }
+  if (options_.method == DgMethod::sipg) {
+    const Eigen::MatrixXd JT = consistency_block(i, interface_traction(options_));
+    local += -JT + options_.sipg_sign * JT.transpose();
+  }
+  return local;
 }
 
 /// The interface terms that move to the right side: -int lambda.[v] (al) or
@@ -175,19 +163,26 @@ Eigen::MatrixXd DgElasticity::consistency_block(std::size_t i, TractionKind kind
   return block;
 }
 
-/// int {sigma(u)} n.[v] as a matrix on all DOFs.
+/// int {sigma(u)} n.[v] as a matrix on all DOFs. Only the rows of the edge's end vertices are
+/// non-zero in a block ([v] lives there), so exact zeros are left out: a product with the matrix
+/// adds the same terms in the same order either way.
 void DgElasticity::build_consistency() {
   const TractionKind kind = interface_traction(options_);
-  std::vector<Eigen::Triplet<double>> triplets;
   const auto& faces = space_.interfaces();
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const Interface& f = faces[i];
-    const std::vector<int> dofs = ops_.dofs(f);
-    const Eigen::MatrixXd local = consistency_block(i, kind);
-    for (std::size_t j = 0; j < dofs.size(); ++j)
-      for (std::size_t r = 0; r < dofs.size(); ++r)
-        triplets.emplace_back(dofs[r], dofs[j], local(r, j));
-  }
+  const int n = static_cast<int>(faces.size());
+  std::vector<std::vector<Eigen::Triplet<double>>> parts((n + kConsistencyChunk - 1) /
+                                                         kConsistencyChunk);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_)
+  for (int part = 0; part < static_cast<int>(parts.size()); ++part)
+    for (int i = part * kConsistencyChunk; i < std::min(n, (part + 1) * kConsistencyChunk); ++i) {
+      const std::vector<int> dofs = ops_.dofs(faces[i]);
+      const Eigen::MatrixXd local = consistency_block(i, kind);
+      for (std::size_t j = 0; j < dofs.size(); ++j)
+        for (std::size_t r = 0; r < dofs.size(); ++r)
+          if (local(r, j) != 0.0) parts[part].emplace_back(dofs[r], dofs[j], local(r, j));
+    }
+  std::vector<Eigen::Triplet<double>> triplets;  // in interface order, as the sums must run
+  for (const auto& part : parts) triplets.insert(triplets.end(), part.begin(), part.end());
   consistency_.resize(num_dofs(), num_dofs());
   consistency_.setFromTriplets(triplets.begin(), triplets.end());
 }
@@ -195,13 +190,13 @@ void DgElasticity::build_consistency() {
 void DgElasticity::solve() {
   Stopwatch clock;
   report_.penalty = median_penalty();
-  const bool symmetric = !(options_.method == DgMethod::sipg && options_.sipg_sign > 0);
+  const bool symmetric = this->symmetric();
   SparseCholesky cholesky;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   if (symmetric) {
     try {
-      factorization_ =
-          cholesky.factorize(A_.triangularView<Eigen::Lower>(), {.ordering = options_.ordering});
+      factorization_ = cholesky.factorize(
+          A_, {.ordering = options_.ordering, .shared_analyses = shared_analyses_});
     } catch (const NumericalError&) {
       if (options_.method != DgMethod::sipg) throw;
       // Symmetric interior penalty is coercive only above a penalty threshold, which the large

@@ -76,6 +76,9 @@ class DgElasticity {
   void setup_system();
   void assemble_system();
   void solve();
+  /// Shares the symbolic analysis of the factorization with other runs on the same mesh (a
+  /// study's): one kept for the same pattern is used, a new one is kept. Results are unchanged.
+  void share_analyses(SymbolicAnalyses* analyses) { shared_analyses_ = analyses; }
 
   const DgSpace& space() const { return space_; }
   /// The cell's own DOF vector (its copies), as the integrator expects.
@@ -85,7 +88,10 @@ class DgElasticity {
   int num_dofs() const { return space_.num_dofs(); }
   int num_free_dofs() const { return constraints_ ? constraints_->num_free() : 0; }
   const FactorizationReport& factorization() const { return factorization_; }
-  /// The assembled matrix on the free DOFs (after assemble_system()).
+  /// Whether the system is symmetric (all but non-symmetric interior penalty, NIPG).
+  bool symmetric() const;
+  /// The assembled matrix on the free DOFs (after assemble_system()): its lower triangle if
+  /// symmetric(), else the whole matrix.
   const Eigen::SparseMatrix<double>& system_matrix() const { return A_; }
   const DgReport& report() const { return report_; }
   /// The interface penalties and weights (after assemble_system()).
@@ -94,6 +100,7 @@ class DgElasticity {
 
  private:
   Eigen::VectorXd interface_load(const Eigen::VectorXd& u);
+  Eigen::MatrixXd interface_matrix(std::size_t interface) const;
   void build_consistency();
   Eigen::MatrixXd consistency_block(std::size_t interface, TractionKind kind) const;
   void measure_gap();
@@ -104,13 +111,14 @@ class DgElasticity {
   const BoundaryValueProblem& problem_;
   DgOptions options_;
   int threads_;
+  SymbolicAnalyses* shared_analyses_ = nullptr;
   DgSpace space_;
   InterfaceOperators ops_;
   std::unique_ptr<InterfacePenalty> penalty_;
 
   std::optional<DirichletConstraints> constraints_;
   Eigen::VectorXd load_, u_;
-  Eigen::SparseMatrix<double> A_;            // free-free block (full)
+  Eigen::SparseMatrix<double> A_;            // free-free block (lower triangle if symmetric)
   Eigen::SparseMatrix<double> A_fixed_;      // free rows, prescribed columns
   std::vector<Eigen::Vector2d> lambda_;      // al: multiplier per interface quadrature point
   Eigen::SparseMatrix<double> consistency_;  // nitsche: int {sigma(u)} n.[v] on all DOFs

@@ -192,3 +192,39 @@ TEST(SparseCholesky, OddSizeFallsBackToAmd) {
 
 }  // namespace
 }  // namespace vorodg
+
+namespace vorodg {
+namespace {
+
+// A matrix given up to the factorization is freed early, and factors to the same bits.
+TEST(SparseCholesky, AMatrixGivenUpFactorsToTheSameBits) {
+  for (int n : {12, 60}) {  // 288 DOFs (AMD on the DOFs), 7200 DOFs (METIS on the nodes)
+    std::vector<Eigen::Triplet<double>> t;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const int a = i * n + j;
+        for (int d = 0; d < 2; ++d) t.emplace_back(2 * a + d, 2 * a + d, 4.5 + 0.01 * d);
+        t.emplace_back(2 * a + 1, 2 * a, 0.3);
+        if (i + 1 < n)
+          for (int d = 0; d < 2; ++d) t.emplace_back(2 * (a + n) + d, 2 * a + d, -1.0);
+        if (j + 1 < n)
+          for (int d = 0; d < 2; ++d) t.emplace_back(2 * (a + 1) + d, 2 * a + d, -1.0);
+      }
+    SpMat lower(2 * n * n, 2 * n * n);
+    lower.setFromTriplets(t.begin(), t.end());
+    SpMat given = lower;
+    SparseCholesky kept, consumed;
+    const FactorizationReport a = kept.factorize(lower);
+    const FactorizationReport b = consumed.factorize(std::move(given));
+    EXPECT_EQ(given.nonZeros(), 0);
+    EXPECT_EQ(a.factor_nonzeros, b.factor_nonzeros);
+    EXPECT_EQ(a.rcond, b.rcond);
+    const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(lower.rows(), 1.0, -2.0);
+    const Eigen::VectorXd x = kept.solve(rhs), y = consumed.solve(rhs);
+    for (Eigen::Index i = 0; i < rhs.size(); ++i)
+      ASSERT_EQ(x[i], y[i]) << "n " << n << " entry " << i;
+  }
+}
+
+}  // namespace
+}  // namespace vorodg

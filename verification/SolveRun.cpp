@@ -49,6 +49,7 @@ void collect(const Formulation& formulation, const PolygonMesh& mesh, SolveResul
   result.free_dofs = formulation.num_free_dofs();
   result.rcond = formulation.factorization().rcond;
   result.factor_nonzeros = formulation.factorization().factor_nonzeros;
+  if (formulation.factorization().analysis_shared) result.shared_stages.push_back("analysis");
   result.cell_offsets.assign(mesh.num_cells() + 1, 0);
   for (int c = 0; c < mesh.num_cells(); ++c)
     result.cell_offsets[c + 1] = result.cell_offsets[c] + 2 * mesh.cell_size(c);
@@ -80,16 +81,30 @@ LinearSolverOptions cg_solver(const SolveSettings& settings) {
   return solver;
 }
 
-SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
+SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
+                      SharedMeshWork* shared) {
   const bool cg = settings.formulation == "cg";
   if (!cg && settings.solver.kind == LinearSolverKind::amg_cg)
     throw InputError("solver amg-cg with formulation " + settings.formulation +
                      ": expected cg (DG systems are solved with cholmod)");
   SolveResult result;
   const auto problem = make_problem(settings, mesh.domain());
+  if (shared && &shared->mesh() != &mesh)
+    throw NumericalError("internal: shared work of another mesh");
   Stopwatch clock;
-  ElementTable table(mesh, settings.element);
-  result.seconds["element"] = clock.seconds();
+  std::unique_ptr<ElementTable> own_table;
+  const ElementTable* table_used = nullptr;
+  if (shared) {
+    bool reused = false;
+    table_used = &shared->element_table(settings.element, result.seconds["element"], reused);
+    if (reused) result.shared_stages.push_back("element");
+  } else {
+    own_table = std::make_unique<ElementTable>(mesh, settings.element);
+    table_used = own_table.get();
+    result.seconds["element"] = clock.seconds();
+  }
+  const ElementTable& table = *table_used;
+  SymbolicAnalyses* analyses = shared ? &shared->analyses() : nullptr;
   for (int c = 0; c < mesh.num_cells(); ++c) {
     result.max_divergence_defect = std::max(
         result.max_divergence_defect, table.divergence_defect(c) / std::sqrt(mesh.cell_area(c)));
@@ -101,13 +116,18 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   if (cg) {
     CgElasticity formulation(table, integrator, *problem, settings.element.threads,
                              cg_solver(settings));
+    formulation.share_analyses(analyses);
     formulation.setup_system();
     formulation.assemble_system();
-    // What the errors and stresses need later is kept per cell; the table's point values go
-    // before the factorization, the largest memory peak of a solve.
+    // What the errors and stresses need later is kept per cell; the table's point values and
+    // weight functions go before the factorization, the largest memory peak of a solve (unless
+    // other runs on the mesh still need them), and the weights come back for the errors.
     clock.restart();
     mean_strain = integrator.all_mean_strain_operators(settings.element.threads);
-    table.release_point_values();
+    if (own_table) {
+      own_table->release_point_values();
+      own_table->release_weights();
+    }
     result.seconds["cell_means"] = clock.seconds();
     formulation.solve();
     collect(formulation, mesh, result);
@@ -117,6 +137,7 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
   } else {
     DgElasticity formulation(table, integrator, *problem, dg_options(settings),
                              settings.element.threads);
+    formulation.share_analyses(analyses);
     formulation.run();
     clock.restart();
     mean_strain = integrator.all_mean_strain_operators(settings.element.threads);
@@ -126,6 +147,11 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings) {
     result.dg = formulation.report();
   }
 
+  if (cg && own_table) {
+    clock.restart();
+    own_table->restore_weights();
+    result.seconds["error_weights"] = clock.seconds();
+  }
   clock.restart();
   const auto cell_dofs = [&](int c) -> Eigen::VectorXd {
     return result.cell_dof_values.segment(result.cell_offsets[c], 2 * mesh.cell_size(c));

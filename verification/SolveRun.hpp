@@ -15,6 +15,7 @@
 #include "core/solve/LinearSolverChoice.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/DgElasticity.hpp"
+#include "verification/SharedMeshWork.hpp"
 #include "verification/problems/ExactSolution.hpp"
 
 namespace vorodg {
@@ -47,11 +48,12 @@ struct SolveResult {
   double max_divergence_defect = 0.0;  // before correction, relative to sqrt(cell area)
   double min_moment_rcond = 0.0;
   StageTimes seconds;
-  Eigen::Matrix2Xd vertex_displacement;  // CG: per vertex; DG: the first cell's copy
-  std::vector<int> cell_offsets;         // per cell, into cell_dof_values (2 per vertex copy)
-  Eigen::VectorXd cell_dof_values;       // every cell's own displacement DOFs
-  std::vector<double> edge_gaps;         // DG: largest |[u]| on each edge (0 for CG)
-  std::optional<DgReport> dg;            // DG only: iterations, stop reason, gap
+  std::vector<std::string> shared_stages;  // made once for the mesh (SharedMeshWork)
+  Eigen::Matrix2Xd vertex_displacement;    // CG: per vertex; DG: the first cell's copy
+  std::vector<int> cell_offsets;           // per cell, into cell_dof_values (2 per vertex copy)
+  Eigen::VectorXd cell_dof_values;         // every cell's own displacement DOFs
+  std::vector<double> edge_gaps;           // DG: largest |[u]| on each edge (0 for CG)
+  std::optional<DgReport> dg;              // DG only: iterations, stop reason, gap
   std::vector<Eigen::Vector3d> cell_mean_stress;
   std::vector<double> cell_l2_density, cell_energy_density;
 };
@@ -64,8 +66,11 @@ std::unique_ptr<ExactSolution> make_problem(const SolveSettings& settings, const
 /// to round-off, which a factor gives and a tolerance does not, so there `auto` means cholmod.
 LinearSolverOptions cg_solver(const SolveSettings& settings);
 
-/// Builds the element table, assembles, solves and measures the errors.
-SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings);
+/// Builds the element table, assembles, solves and measures the errors. With `shared`, the
+/// element table and the factorization's symbolic analysis come from (or go to) the work shared
+/// by the runs on `mesh`; the results are the same either way.
+SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
+                      SharedMeshWork* shared = nullptr);
 
 /// Von Mises stress of an in-plane stress state (sigma_zz = nu (sxx + syy) in plane strain).
 double von_mises(const Eigen::Vector3d& stress, const IsotropicElasticity& material);

@@ -100,7 +100,7 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
 void ElementTable::build_cell(int c) {
   const auto loop = mesh_.cell_vertices(c);
   const int n = static_cast<int>(loop.size());
-  const Point& C = weights_->centroids()[c];
+  const Point& C = weights().centroids()[c];
   const RkCellFrame frame = cell_frame(mesh_, c, C);
   Eigen::Vector2d nodes[kMaxNodes], grad_w[kMaxNodes];
   double w[kMaxNodes];
@@ -118,7 +118,7 @@ void ElementTable::build_cell(int c) {
       fan_points_[at] = {k, rule.bary[r]};
       points_[at] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
       weights_q_[at] = rule.weights[r] * fan_area;
-      weights_->evaluate(c, k, rule.bary[r], w, grad_w);
+      weights().evaluate(c, k, rule.bary[r], w, grad_w);
       for (int j = 0; j < n; ++j) min_weight = std::min(min_weight, std::isnan(w[j]) ? -1.0 : w[j]);
       const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
       const double rc = rk_shape_functions(frame, {nodes, static_cast<std::size_t>(n)}, points_[at],
@@ -155,7 +155,7 @@ void ElementTable::build_cell(int c) {
 Point ElementTable::position(int c, const FanPoint& at) const {
   const auto loop = mesh_.cell_vertices(c);
   const int n = static_cast<int>(loop.size());
-  return at.bary[0] * weights_->centroids()[c] + at.bary[1] * mesh_.vertex(loop[at.fan]) +
+  return at.bary[0] * weights().centroids()[c] + at.bary[1] * mesh_.vertex(loop[at.fan]) +
          at.bary[2] * mesh_.vertex(loop[(at.fan + 1) % n]);
 }
 
@@ -171,9 +171,9 @@ void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vecto
   Eigen::Vector3d bary = at.bary;
   if (on_edge)
     bary = Eigen::Vector3d(kInside, at.bary[1] * (1 - kInside), at.bary[2] * (1 - kInside));
-  weights_->evaluate(c, at.fan, bary, w, grad_w);
+  weights().evaluate(c, at.fan, bary, w, grad_w);
   const FanPoint inside{at.fan, bary};
-  rk_shape_functions(cell_frame(mesh_, c, weights_->centroids()[c]),
+  rk_shape_functions(cell_frame(mesh_, c, weights().centroids()[c]),
                      {nodes, static_cast<std::size_t>(n)}, position(c, inside), w, grad_w, psi,
                      grad);
   if (on_edge) {  // exact edge limit: linear between the edge's end points
@@ -184,8 +184,23 @@ void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vecto
   }
 }
 
+const WeightFunctions& ElementTable::weights() const {
+  if (!weights_) throw NumericalError("internal: the weight functions were released");
+  return *weights_;
+}
+
+void ElementTable::release_weights() {
+  weights_.reset();
+}
+
+void ElementTable::restore_weights() {
+  if (!weights_)
+    weights_ = std::make_unique<WeightFunctions>(mesh_, options_.weights, options_.threads);
+}
+
 void ElementTable::release_point_values() {
   std::vector<Point>().swap(points_);
+  std::vector<double>().swap(weights_q_);
   std::vector<FanPoint>().swap(fan_points_);
   std::vector<double>().swap(shape_);
   std::vector<Eigen::Vector2d>().swap(grad_);

@@ -16,6 +16,7 @@ struct ElementOptions {
   bool divergence_correction = true;  // enforce the discrete divergence identity (Eq. 16)
   WeightFunctionOptions weights;
   int threads = 1;  // setup threads; results do not depend on it
+  bool operator==(const ElementOptions&) const = default;
 };
 
 /// Quadrature point of a cell: fan triangle and barycentric coordinates (centroid, v_k, v_k+1).
@@ -33,7 +34,8 @@ class ElementTable {
 
   const PolygonMesh& mesh() const { return mesh_; }
   const ElementOptions& options() const { return options_; }
-  const WeightFunctions& weights() const { return *weights_; }
+  /// The weight functions (not between release_weights() and restore_weights()).
+  const WeightFunctions& weights() const;
 
   int num_points(int c) const { return point_offsets_[c + 1] - point_offsets_[c]; }
   int num_nodes(int c) const { return mesh_.cell_size(c); }
@@ -64,11 +66,17 @@ class ElementTable {
   void evaluate(int c, const FanPoint& at, double* psi, Eigen::Vector2d* grad) const;
   Point position(int c, const FanPoint& at) const;
 
-  /// Frees the values and gradients stored at the quadrature points (and the points), about
-  /// 3.5 KB per hexagon, once the cell matrices and cell mean operators are built: a CG solve
-  /// then factors without them (at 1e6 cells, 3.6 GB). Afterwards only evaluate(), position(),
-  /// weight() and the per-cell data are available.
+  /// Frees the values, gradients and weights stored at the quadrature points (and the points),
+  /// about 3.6 KB per hexagon, once the cell matrices and cell mean operators are built: a CG
+  /// solve then factors without them (at 1e6 cells, 3.7 GB). Afterwards only evaluate(),
+  /// position() and the per-cell data are available.
   void release_point_values();
+  /// Frees the weight functions' nodal values too (about 0.9 KB per hexagon at the default
+  /// setting, 0.9 GB at 1e6 cells) while a factorization needs the memory. evaluate(),
+  /// position() and weights() need them back: restore_weights() computes them again, the same
+  /// to the bit.
+  void release_weights();
+  void restore_weights();
 
  private:
   void build_cell(int c);

@@ -21,6 +21,7 @@ namespace vorodg {
 struct WeightFunctionOptions {
   int refinement = 0;  // each fan triangle cut into 4^refinement sub-triangles
   int degree = 2;      // 1 (P1) or 2 (P2) on the sub-triangles
+  bool operator==(const WeightFunctionOptions&) const = default;
 };
 
 /// The weight-function options a user may choose: degrees, and refinement 0..kMaxWeightRefinement.

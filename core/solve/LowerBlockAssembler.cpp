@@ -1,5 +1,7 @@
 #include "core/solve/LowerBlockAssembler.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 
 #include "core/util/Errors.hpp"
@@ -94,6 +96,22 @@ void LowerBlockAssembler::add(std::span<const int> nodes,
           values[pos + 1] += Ke(2 * ia + 1, 2 * jb + dj);
         }
       }
+    }
+  }
+}
+
+void LowerBlockAssembler::add_in_parallel(int first, int last, int threads,
+                                          const ElementNodes& element_nodes,
+                                          const ElementBlock& block) {
+#pragma omp parallel num_threads(std::max(threads, 1))
+  {
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const int node_begin = static_cast<int>(static_cast<long>(num_nodes_) * t / nt);
+    const int node_end = static_cast<int>(static_cast<long>(num_nodes_) * (t + 1) / nt);
+    std::vector<int> nodes;
+    for (int e = first; e < last; ++e) {
+      element_nodes(e, nodes);
+      add(nodes, block(e), node_begin, node_end);
     }
   }
 }

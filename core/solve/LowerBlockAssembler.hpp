@@ -30,6 +30,12 @@ class LowerBlockAssembler {
   void add(std::span<const int> nodes, const Eigen::Ref<const Eigen::MatrixXd>& Ke) {
     add(nodes, Ke, 0, num_nodes_);
   }
+  /// The matrix of element e, (x, y) per node of element_nodes(e).
+  using ElementBlock = std::function<Eigen::Ref<const Eigen::MatrixXd>(int e)>;
+  /// Adds elements [first, last) on `threads` threads, each owning the columns of a node range
+  /// (add() above), so every entry still sums in element order.
+  void add_in_parallel(int first, int last, int threads, const ElementNodes& element_nodes,
+                       const ElementBlock& block);
   /// The assembled lower triangle (moves the values out; the assembler is spent afterwards).
   Eigen::SparseMatrix<double> release();
 

@@ -113,7 +113,57 @@ struct SparseCholesky::Impl {
     cholmod_finish(&common);
   }
   void analyze(const Eigen::SparseMatrix<double>& lower, const FactorizationOptions& options);
+  void obtain_analysis(const Eigen::SparseMatrix<double>& lower,
+                       const FactorizationOptions& options, FactorizationReport& report);
+  void numeric(const Eigen::SparseMatrix<double>& lower, Eigen::SparseMatrix<double>* release);
 };
+
+/// The numeric factorization. With `release` (the matrix given up by the caller, `lower`
+/// itself) and a permuted supernodal factor, it does what cholmod_factorize does in that case
+/// (the permuted lower triangle through two transposes, then the supernodal kernel) but frees
+/// the caller's matrix between the two: one copy of the matrix less beside the factor, the
+/// memory peak of a solve. The factor is the same to the bit.
+void SparseCholesky::Impl::numeric(const Eigen::SparseMatrix<double>& lower,
+                                   Eigen::SparseMatrix<double>* release) {
+  cholmod_sparse a = view_of(lower, -1);
+  if (!release || !factor->is_super || factor->ordering == CHOLMOD_NATURAL) {
+    cholmod_factorize(&a, factor, &common);
+    if (release) *release = Eigen::SparseMatrix<double>();
+    return;
+  }
+  common.status = CHOLMOD_OK;
+  const size_t n = factor->n;
+  cholmod_allocate_work(n, 2 * n + 2 * factor->nsuper, 0, &common);
+  cholmod_sparse* upper =
+      common.status == CHOLMOD_OK
+          ? cholmod_ptranspose(&a, 2, static_cast<int*>(factor->Perm), nullptr, 0, &common)
+          : nullptr;
+  cholmod_sparse* permuted =
+      upper ? cholmod_ptranspose(upper, 2, nullptr, nullptr, 0, &common) : nullptr;
+  cholmod_free_sparse(&upper, &common);
+  *release = Eigen::SparseMatrix<double>();  // CHOLMOD has its own copy now
+  double zero[2] = {0.0, 0.0};
+  if (permuted) cholmod_super_numeric(permuted, nullptr, zero, factor, &common);
+  cholmod_free_sparse(&permuted, &common);
+}
+
+/// The analysis shared for this pattern and these settings if there is one, else a new one
+/// (kept for the next factorization with the same pattern, if sharing).
+void SparseCholesky::Impl::obtain_analysis(const Eigen::SparseMatrix<double>& lower,
+                                           const FactorizationOptions& options,
+                                           FactorizationReport& report) {
+  Stopwatch clock;
+  const long settings = static_cast<long>(options.ordering) + 16L * (options.indefinite ? 1 : 0) +
+                        256L * options.block_size;
+  SymbolicAnalyses* shared = options.shared_analyses;
+  if (factor) cholmod_free_factor(&factor, &common);
+  if (shared) factor = shared->copy(lower, settings, &common, report.seconds_analyze);
+  report.analysis_shared = factor != nullptr;
+  if (factor) return;
+  analyze(lower, options);
+  report.seconds_analyze = clock.seconds();
+  if (shared) shared->keep(lower, settings, factor, report.seconds_analyze);
+}
 
 void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
                                    const FactorizationOptions& options) {
@@ -149,6 +199,19 @@ SparseCholesky::~SparseCholesky() = default;
 
 FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower,
                                               const FactorizationOptions& options) {
+  return factorize(lower, options, nullptr);
+}
+
+FactorizationReport SparseCholesky::factorize(Eigen::SparseMatrix<double>&& lower,
+                                              const FactorizationOptions& options) {
+  Eigen::SparseMatrix<double> owned;
+  owned.swap(lower);  // Eigen 3.4's move would copy
+  return factorize(owned, options, &owned);
+}
+
+FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower,
+                                              const FactorizationOptions& options,
+                                              Eigen::SparseMatrix<double>* release) {
   if (lower.rows() != lower.cols() || !lower.isCompressed())
     throw NumericalError("internal: factorize needs a square compressed matrix");
   FactorizationReport report;
@@ -159,12 +222,12 @@ FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>&
   if (!reuse) {
     impl_->common.supernodal = mode;
     impl_->common.final_ll = options.indefinite ? 0 : 1;
-    impl_->analyze(lower, options);
+    impl_->obtain_analysis(lower, options, report);
+  } else {
+    report.seconds_analyze = 0.0;
   }
-  report.seconds_analyze = clock.seconds();
   clock.restart();
-  cholmod_sparse a = view_of(lower, -1);
-  cholmod_factorize(&a, impl_->factor, &impl_->common);
+  impl_->numeric(lower, release);
   report.seconds_factorize = clock.seconds();
   const bool failed =
       impl_->common.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n;

@@ -10,6 +10,8 @@
 #include <Eigen/SparseCore>
 #include <memory>
 
+#include "core/solve/SymbolicAnalyses.hpp"
+
 namespace vorodg {
 
 /// How the fill-reducing ordering is chosen.
@@ -25,6 +27,9 @@ struct FactorizationReport {
   double seconds_analyze = 0.0;    // ordering and symbolic factorization
   double seconds_factorize = 0.0;  // numeric factorization
   long factor_nonzeros = 0;
+  /// The analysis was shared (FactorizationOptions::shared_analyses): seconds_analyze is what
+  /// making it took, once, for the factorization that kept it.
+  bool analysis_shared = false;
 };
 
 struct FactorizationOptions {
@@ -37,6 +42,9 @@ struct FactorizationOptions {
   /// Keep the ordering and symbolic factor of the previous call, whose matrix had the same
   /// pattern (Newton iterations, load steps): only the numeric factorization is redone.
   bool reuse_analysis = false;
+  /// Analyses shared with other factorizations (of other runs on the same mesh): one kept for
+  /// this matrix's pattern is used instead of analyzing again, a new one is kept there.
+  SymbolicAnalyses* shared_analyses = nullptr;
 };
 
 class SparseCholesky {
@@ -51,10 +59,19 @@ class SparseCholesky {
   /// left free by missing Dirichlet data) or its condition estimate is below `options.min_rcond`.
   FactorizationReport factorize(const Eigen::SparseMatrix<double>& lower,
                                 const FactorizationOptions& options = {});
+  /// The same, for a matrix the caller gives up: it is freed as soon as CHOLMOD holds its own
+  /// permuted copy, before the factor's values are allocated, so that the memory peak (the
+  /// factor) carries one copy of the matrix instead of two. Same factor to the bit.
+  FactorizationReport factorize(Eigen::SparseMatrix<double>&& lower,
+                                const FactorizationOptions& options = {});
   /// Solves with the current factor. Throws NumericalError on a non-finite result.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
 
  private:
+  FactorizationReport factorize(const Eigen::SparseMatrix<double>& lower,
+                                const FactorizationOptions& options,
+                                Eigen::SparseMatrix<double>* release);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

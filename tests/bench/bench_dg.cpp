@@ -2,13 +2,16 @@
 // and dg-al (k_p = 1e3 E); counters give the analysis and factorization seconds of a + eps P and
 // the seconds of one iteration (back-solve + interface-load update). Target at 1e5 cells: one
 // iteration <= 10% of the factorization. BM_DgAmgCg: whether AMG-preconditioned CG converges on
-// a + eps P (docs/solvers.md).
+// a + eps P (docs/solvers.md). BM_StudyOnOneMesh: the seven runs fig26 makes on each mesh
+// (cg, dg-nitsche at four k_p, dg-al, dg-sipg), alone or sharing the mesh's element table and
+// symbolic analyses (SharedMeshWork), one thread as in a study.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/solve/AmgConjugateGradient.hpp"
+#include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/TraceConstants.hpp"
@@ -47,6 +50,41 @@ void BM_DgIteration(benchmark::State& state) {
   state.counters["iterations"] = r.dg->iterations;
   state.counters["iteration_over_factorization"] =
       r.dg->seconds_per_iteration / r.seconds["factorization"];
+  // Everything the DG operator's assembly costs: cell matrices, penalties, the sparse matrix.
+  const double assembly = r.seconds["cell_matrices"] + r.seconds["penalty"] + r.seconds["assembly"];
+  state.counters["assembly"] = assembly;
+  state.counters["assembly_over_factorization"] = assembly / r.seconds["factorization"];
+}
+
+void BM_StudyOnOneMesh(benchmark::State& state) {
+  const GeneratedMesh mesh = rcp_beam_mesh(state.range(0));
+  const bool share = state.range(1) == 1;
+  std::vector<SolveSettings> runs;
+  const auto add = [&](const std::string& formulation, double kp) {
+    SolveSettings s;
+    s.formulation = formulation;
+    s.dg.kp = kp;
+    if (formulation == "dg-sipg") {
+      s.dg.penalty = PenaltyScaling::h_avg;
+      s.dg.traction = TractionKind::mean;
+    }
+    runs.push_back(s);
+  };
+  add("cg", 1.0);
+  for (double kp : {1e1, 1e2, 1e3, 1e4}) add("dg-nitsche", kp);
+  add("dg-al", 1e3);
+  add("dg-sipg", 1e3);
+  const int blas_threads = set_blas_threads(1);  // as a study runs
+  double l2 = 0.0;
+  for (auto _ : state) {
+    std::optional<SharedMeshWork> shared;
+    if (share) shared.emplace(mesh.mesh);
+    for (const SolveSettings& s : runs)
+      l2 += run_solve(mesh.mesh, s, shared ? &*shared : nullptr).l2_error;
+  }
+  set_blas_threads(blas_threads);
+  benchmark::DoNotOptimize(l2);
+  state.counters["cells"] = mesh.mesh.num_cells();
 }
 
 /// The coercive penalty's per-cell eigenproblems against the element table's setup, on the
@@ -134,6 +172,17 @@ BENCHMARK(BM_TraceConstants)
     ->Args({100000, 0})
     ->Args({100000, 1})
     ->Args({100000, 2})
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+
+BENCHMARK(BM_StudyOnOneMesh)
+    ->ArgNames({"cells", "shared"})
+    ->Args({10000, 0})
+    ->Args({10000, 1})
+    ->Args({30000, 0})
+    ->Args({30000, 1})
     ->Iterations(1)
     ->Repetitions(3)
     ->Unit(benchmark::kSecond)

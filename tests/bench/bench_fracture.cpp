@@ -1,7 +1,7 @@
 // Time per load step of the quasi-static fracture path: Petersson's beam of the shipped
 // tpb-case1 scene (pre-inserted) and tpb-case2 (restricted) at about 1e4 and 1e5 cells, over the
 // first three of its 100 steps (to a crack mouth opening of 30 um: the notch-tip faces start to
-// soften; the steps through the peak cost several times more, see docs/performance.md).
+// soften; the steps through the peak cost several times more, see docs/performance-fracture.md).
 // Counters: cells, DOFs, steps, seconds per step of the path alone (setup excluded), setup
 // seconds, factorizations and Newton iterations per step.
 #include <benchmark/benchmark.h>

@@ -41,6 +41,7 @@ RunMetrics run_metrics(const PolygonMesh& mesh, const SolveResult& r) {
           .max_divergence_defect = r.max_divergence_defect,
           .min_moment_rcond = r.min_moment_rcond,
           .seconds = r.seconds,
+          .shared_stages = r.shared_stages,
           .dg = r.dg,
           .peak_memory_mb = peak_memory_mb()};  // of the whole process so far
 }
@@ -64,6 +65,7 @@ json to_json(const RunMetrics& m) {
             {"stop_reason", m.stop_reason()},
             {"relative_gap", m.dg ? m.dg->relative_gap : 0.0},
             {"seconds", json(m.seconds)},
+            {"shared_stages", m.shared_stages},
             {"peak_memory_mb", m.peak_memory_mb}};
   if (m.dg) {  // DG only: the presence of "penalty" says a record is DG
     j["penalty"] = m.dg->penalty;
@@ -91,6 +93,7 @@ RunMetrics metrics_from_json(const json& j) {
   m.max_divergence_defect = number(j, "max_divergence_defect");
   m.min_moment_rcond = number(j, "min_moment_rcond");
   m.seconds = j.at("seconds").get<StageTimes>();
+  m.shared_stages = j.value("shared_stages", std::vector<std::string>{});  // older records: none
   m.peak_memory_mb = number(j, "peak_memory_mb");
   if (j.contains("penalty")) {
     const json& d = j;

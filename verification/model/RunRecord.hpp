@@ -40,7 +40,8 @@ struct RunMetrics {
   double solver_residual = 0.0;    // amg-cg: ||b - A x|| / ||b|| (cholmod: 0)
   double max_divergence_defect = 0.0, min_moment_rcond = 0.0;
   StageTimes seconds;
-  std::optional<DgReport> dg;  // DG only
+  std::vector<std::string> shared_stages;  // stages made once for the mesh (SharedMeshWork)
+  std::optional<DgReport> dg;              // DG only
   double peak_memory_mb = 0.0;
 
   int iterations() const { return dg ? dg->iterations : 1; }

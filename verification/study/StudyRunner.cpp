@@ -62,11 +62,11 @@ std::optional<GeneratedMesh> make_mesh(const Scene& scene, const StudyRun& run,
 }
 
 RunRecord solve_run(const Scene& scene, const StudyRun& run, const GeneratedMesh* mesh,
-                    const std::string& mesh_error) {
+                    SharedMeshWork* shared, const std::string& mesh_error) {
   RunRecord record{run, std::nullopt, ""};
   try {  // a run that breaks down is a reported outcome
     if (!mesh) throw InputError(mesh_error);
-    const SolveResult r = run_solve(mesh->mesh, run_settings(scene, run));
+    const SolveResult r = run_solve(mesh->mesh, run_settings(scene, run), shared);
     record.metrics = run_metrics(mesh->mesh, r);
   } catch (const std::exception& e) {
     record.error = e.what();
@@ -162,9 +162,13 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
         TaskOutput output;
         std::string mesh_error;
         const auto mesh = make_mesh(scene, runs[task.runs.front()], mesh_error);
+        // The task's runs share the mesh's element tables and symbolic analyses.
+        std::optional<SharedMeshWork> shared;
+        if (mesh) shared.emplace(mesh->mesh);
         for (int i : task.runs)
-          output.lines.push_back(
-              to_json(solve_run(scene, runs[i], mesh ? &*mesh : nullptr, mesh_error)).dump());
+          output.lines.push_back(to_json(solve_run(scene, runs[i], mesh ? &*mesh : nullptr,
+                                                   shared ? &*shared : nullptr, mesh_error))
+                                     .dump());
         return output;
       },
       [&](const Task& task, const TaskOutput& output) {

@@ -81,78 +81,96 @@ LinearSolverOptions cg_solver(const SolveSettings& settings) {
   return solver;
 }
 
-SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
-                      SharedMeshWork* shared) {
-  const bool cg = settings.formulation == "cg";
-  if (!cg && settings.solver.kind == LinearSolverKind::amg_cg)
-    throw InputError("solver amg-cg with formulation " + settings.formulation +
-                     ": expected cg (DG systems are solved with cholmod)");
-  SolveResult result;
-  const auto problem = make_problem(settings, mesh.domain());
-  if (shared && &shared->mesh() != &mesh)
-    throw NumericalError("internal: shared work of another mesh");
-  Stopwatch clock;
-  std::unique_ptr<ElementTable> own_table;
-  const ElementTable* table_used = nullptr;
+namespace {
+
+/// The run's element table: the one shared by the runs on the mesh, or its own (`own`).
+const ElementTable& obtain_table(const PolygonMesh& mesh, const SolveSettings& settings,
+                                 SharedMeshWork* shared, std::unique_ptr<ElementTable>& own,
+                                 SolveResult& result) {
   if (shared) {
+    if (&shared->mesh() != &mesh) throw NumericalError("internal: shared work of another mesh");
     bool reused = false;
-    table_used = &shared->element_table(settings.element, result.seconds["element"], reused);
+    const ElementTable& table =
+        shared->element_table(settings.element, result.seconds["element"], reused);
     if (reused) result.shared_stages.push_back("element");
-  } else {
-    own_table = std::make_unique<ElementTable>(mesh, settings.element);
-    table_used = own_table.get();
-    result.seconds["element"] = clock.seconds();
+    return table;
   }
-  const ElementTable& table = *table_used;
-  SymbolicAnalyses* analyses = shared ? &shared->analyses() : nullptr;
+  Stopwatch clock;
+  own = std::make_unique<ElementTable>(mesh, settings.element);
+  result.seconds["element"] = clock.seconds();
+  return *own;
+}
+
+void record_element_quality(const ElementTable& table, SolveResult& result) {
+  const PolygonMesh& mesh = table.mesh();
   for (int c = 0; c < mesh.num_cells(); ++c) {
     result.max_divergence_defect = std::max(
         result.max_divergence_defect, table.divergence_defect(c) / std::sqrt(mesh.cell_area(c)));
     result.min_moment_rcond = c == 0 ? table.min_moment_rcond(c)
                                      : std::min(result.min_moment_rcond, table.min_moment_rcond(c));
   }
-  const ElasticityIntegrator integrator(table, problem->material(), settings.mean_dilation);
-  ElasticityIntegrator::MeanStrainOperators mean_strain;
-  if (cg) {
-    CgElasticity formulation(table, integrator, *problem, settings.element.threads,
-                             cg_solver(settings));
-    formulation.share_analyses(analyses);
-    formulation.setup_system();
-    formulation.assemble_system();
-    // What the errors and stresses need later is kept per cell; the table's point values and
-    // weight functions go before the factorization, the largest memory peak of a solve (unless
-    // other runs on the mesh still need them), and the weights come back for the errors.
-    clock.restart();
-    mean_strain = integrator.all_mean_strain_operators(settings.element.threads);
-    if (own_table) {
-      own_table->release_point_values();
-      own_table->release_weights();
-    }
-    result.seconds["cell_means"] = clock.seconds();
-    formulation.solve();
-    collect(formulation, mesh, result);
-    result.solver = formulation.solver();
-    result.amg = formulation.amg_report();
-    result.edge_gaps.assign(mesh.num_edges(), 0.0);
-  } else {
-    DgElasticity formulation(table, integrator, *problem, dg_options(settings),
-                             settings.element.threads);
-    formulation.share_analyses(analyses);
-    formulation.run();
-    clock.restart();
-    mean_strain = integrator.all_mean_strain_operators(settings.element.threads);
-    result.seconds["cell_means"] = clock.seconds();
-    collect(formulation, mesh, result);
-    result.edge_gaps = formulation.edge_gaps();
-    result.dg = formulation.report();
-  }
+}
 
-  if (cg && own_table) {
+/// CG: assemble, keep the cell mean strain operators, then (with a table of its own) release the
+/// table's point values and weight functions before the factorization, the largest memory peak
+/// of a solve; the weights come back for the errors.
+ElasticityIntegrator::MeanStrainOperators solve_cg(const ElasticityIntegrator& integrator,
+                                                   const ExactSolution& problem,
+                                                   const SolveSettings& settings,
+                                                   SymbolicAnalyses* analyses,
+                                                   ElementTable* own_table, SolveResult& result) {
+  const ElementTable& table = integrator.table();
+  CgElasticity formulation(table, integrator, problem, settings.element.threads,
+                           cg_solver(settings));
+  formulation.share_analyses(analyses);
+  formulation.setup_system();
+  formulation.assemble_system();
+  Stopwatch clock;
+  auto mean_strain = integrator.all_mean_strain_operators(settings.element.threads);
+  if (own_table) {
+    own_table->release_point_values();
+    own_table->release_weights();
+  }
+  result.seconds["cell_means"] = clock.seconds();
+  formulation.solve();
+  collect(formulation, table.mesh(), result);
+  result.solver = formulation.solver();
+  result.amg = formulation.amg_report();
+  result.edge_gaps.assign(table.mesh().num_edges(), 0.0);
+  if (own_table) {
     clock.restart();
     own_table->restore_weights();
     result.seconds["error_weights"] = clock.seconds();
   }
-  clock.restart();
+  return mean_strain;
+}
+
+ElasticityIntegrator::MeanStrainOperators solve_dg(const ElasticityIntegrator& integrator,
+                                                   const ExactSolution& problem,
+                                                   const SolveSettings& settings,
+                                                   SymbolicAnalyses* analyses,
+                                                   SolveResult& result) {
+  const ElementTable& table = integrator.table();
+  DgElasticity formulation(table, integrator, problem, dg_options(settings),
+                           settings.element.threads);
+  formulation.share_analyses(analyses);
+  formulation.run();
+  Stopwatch clock;
+  auto mean_strain = integrator.all_mean_strain_operators(settings.element.threads);
+  result.seconds["cell_means"] = clock.seconds();
+  collect(formulation, table.mesh(), result);
+  result.edge_gaps = formulation.edge_gaps();
+  result.dg = formulation.report();
+  return mean_strain;
+}
+
+/// The errors against the exact solution and the cell mean stresses.
+void measure_errors(const ElementTable& table, const ExactSolution& problem,
+                    const SolveSettings& settings,
+                    const ElasticityIntegrator::MeanStrainOperators& mean_strain,
+                    SolveResult& result) {
+  Stopwatch clock;
+  const PolygonMesh& mesh = table.mesh();
   const auto cell_dofs = [&](int c) -> Eigen::VectorXd {
     return result.cell_dof_values.segment(result.cell_offsets[c], 2 * mesh.cell_size(c));
   };
@@ -162,7 +180,7 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
       const auto op = mean_strain.block(c);
       return op.row(0).dot(u) + op.row(1).dot(u);
     };
-  const ErrorReport errors = compute_errors(table, *problem, cell_dofs, settings.energy_error,
+  const ErrorReport errors = compute_errors(table, problem, cell_dofs, settings.energy_error,
                                             settings.element.threads, dilatation_mean);
   result.l2_error = errors.l2_error;
   result.energy_error = errors.energy_error;
@@ -170,8 +188,29 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
   result.cell_energy_density = errors.cell_energy_density;
   result.cell_mean_stress.resize(mesh.num_cells());
   for (int c = 0; c < mesh.num_cells(); ++c)
-    result.cell_mean_stress[c] = problem->material().D() * (mean_strain.block(c) * cell_dofs(c));
+    result.cell_mean_stress[c] = problem.material().D() * (mean_strain.block(c) * cell_dofs(c));
   result.seconds["error"] = clock.seconds();
+}
+
+}  // namespace
+
+SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
+                      SharedMeshWork* shared) {
+  const bool cg = settings.formulation == "cg";
+  if (!cg && settings.solver.kind == LinearSolverKind::amg_cg)
+    throw InputError("solver amg-cg with formulation " + settings.formulation +
+                     ": expected cg (DG systems are solved with cholmod)");
+  SolveResult result;
+  const auto problem = make_problem(settings, mesh.domain());
+  std::unique_ptr<ElementTable> own_table;
+  const ElementTable& table = obtain_table(mesh, settings, shared, own_table, result);
+  record_element_quality(table, result);
+  const ElasticityIntegrator integrator(table, problem->material(), settings.mean_dilation);
+  SymbolicAnalyses* analyses = shared ? &shared->analyses() : nullptr;
+  const auto mean_strain =
+      cg ? solve_cg(integrator, *problem, settings, analyses, own_table.get(), result)
+         : solve_dg(integrator, *problem, settings, analyses, result);
+  measure_errors(table, *problem, settings, mean_strain, result);
   return result;
 }
 

@@ -18,6 +18,7 @@ class ElasticityIntegrator {
                        bool mean_dilation);
 
   const IsotropicElasticity& material() const { return material_; }
+  const ElementTable& table() const { return table_; }
   bool mean_dilation() const { return mean_dilation_; }
 
   /// B at quadrature point q of cell c (3 x 2n), in Voigt form (eps_xx, eps_yy, 2 eps_xy).

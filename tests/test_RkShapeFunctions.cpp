@@ -138,6 +138,29 @@ TEST(RkKernel, IndependentOfTheFrame) {
   }
 }
 
+// A cell's node basis computed once (what ElementTable does) gives the same bits.
+TEST(RkKernel, TheNodeBasisOnceGivesTheSameBits) {
+  const auto nodes = irregular_pentagon();
+  const int n = static_cast<int>(nodes.size());
+  const GaussianWeights weights{nodes, 1.0};
+  const RkCellFrame frame{{0.7, 0.8}, 1.3};
+  std::vector<Eigen::Vector3d> basis(n);
+  rk_node_basis(frame, nodes, basis.data());
+  for (const Eigen::Vector2d x : {Eigen::Vector2d(0.6, 0.7), Eigen::Vector2d(0.31, 0.55)}) {
+    std::vector<double> w(n), a(n), b(n);
+    std::vector<Eigen::Vector2d> gw(n), ga(n), gb(n);
+    weights(x, w.data(), gw.data());
+    const double ra = rk_shape_functions(frame, nodes, x, w.data(), gw.data(), a.data(), ga.data());
+    const double rb = rk_shape_functions(frame, std::span<const Eigen::Vector3d>(basis), x,
+                                         w.data(), gw.data(), b.data(), gb.data());
+    EXPECT_EQ(ra, rb);
+    for (int I = 0; I < n; ++I) {
+      EXPECT_EQ(a[I], b[I]);
+      EXPECT_EQ(ga[I], gb[I]);
+    }
+  }
+}
+
 TEST(RkKernel, ThreeNodesGiveTheLinearTriangleForAnyWeights) {
   const std::vector<Eigen::Vector2d> tri = {{0.2, 0.1}, {1.1, 0.3}, {0.4, 0.9}};
   const double area2 =

@@ -105,6 +105,8 @@ void ElementTable::build_cell(int c) {
   Eigen::Vector2d nodes[kMaxNodes], grad_w[kMaxNodes];
   double w[kMaxNodes];
   for (int k = 0; k < n; ++k) nodes[k] = mesh_.vertex(loop[k]);
+  Eigen::Vector3d node_basis[kMaxNodes];
+  rk_node_basis(frame, {nodes, static_cast<std::size_t>(n)}, node_basis);
   const TriangleRule& rule = triangle_rule(options_.rule_points);
   double min_rcond = std::numeric_limits<double>::infinity();
   double min_weight = std::numeric_limits<double>::infinity();
@@ -121,8 +123,8 @@ void ElementTable::build_cell(int c) {
       weights().evaluate(c, k, rule.bary[r], w, grad_w);
       for (int j = 0; j < n; ++j) min_weight = std::min(min_weight, std::isnan(w[j]) ? -1.0 : w[j]);
       const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
-      const double rc = rk_shape_functions(frame, {nodes, static_cast<std::size_t>(n)}, points_[at],
-                                           w, grad_w, &shape_[v], &grad_[v]);
+      const double rc = rk_shape_functions(frame, {node_basis, static_cast<std::size_t>(n)},
+                                           points_[at], w, grad_w, &shape_[v], &grad_[v]);
       min_rcond = std::min(min_rcond, std::isfinite(rc) ? rc : 0.0);
     }
   }

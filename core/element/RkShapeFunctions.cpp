@@ -1,26 +1,60 @@
 #include "core/element/RkShapeFunctions.hpp"
 
 #include <Eigen/Dense>
+#include <stdexcept>
 
 namespace vorodg {
+
+namespace {
+
+Eigen::Vector3d basis_at(const RkCellFrame& frame, const Eigen::Vector2d& y) {
+  return {1.0, (y.x() - frame.centre.x()) / frame.scale, (y.y() - frame.centre.y()) / frame.scale};
+}
+
+/// Adds s p p^T to the symmetric 3x3 matrix A, entry by entry on its upper triangle (the lower
+/// one is copied at the end): half the work of the full outer product, the same sums.
+void add_outer(double s, const Eigen::Vector3d& p, Eigen::Matrix3d& A) {
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i <= j; ++i) A(i, j) += s * (p[i] * p[j]);
+}
+
+void fill_lower(Eigen::Matrix3d& A) {
+  A(1, 0) = A(0, 1);
+  A(2, 0) = A(0, 2);
+  A(2, 1) = A(1, 2);
+}
+
+}  // namespace
+
+void rk_node_basis(const RkCellFrame& frame, std::span<const Eigen::Vector2d> nodes,
+                   Eigen::Vector3d* basis) {
+  for (std::size_t J = 0; J < nodes.size(); ++J) basis[J] = basis_at(frame, nodes[J]);
+}
 
 double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vector2d> nodes,
                           const Eigen::Vector2d& x, const double* w, const Eigen::Vector2d* grad_w,
                           double* psi, Eigen::Vector2d* grad_psi) {
-  const int n = static_cast<int>(nodes.size());
-  auto basis = [&](const Eigen::Vector2d& y) {
-    return Eigen::Vector3d(1.0, (y.x() - frame.centre.x()) / frame.scale,
-                           (y.y() - frame.centre.y()) / frame.scale);
-  };
+  constexpr std::size_t kMax = 64;
+  if (nodes.size() > kMax) throw std::length_error("rk_shape_functions: more than 64 nodes");
+  Eigen::Vector3d basis[kMax];
+  rk_node_basis(frame, nodes, basis);
+  return rk_shape_functions(frame, {basis, nodes.size()}, x, w, grad_w, psi, grad_psi);
+}
+
+double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vector3d> node_basis,
+                          const Eigen::Vector2d& x, const double* w, const Eigen::Vector2d* grad_w,
+                          double* psi, Eigen::Vector2d* grad_psi) {
+  const int n = static_cast<int>(node_basis.size());
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero(),
                   dM[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   for (int J = 0; J < n; ++J) {
-    const Eigen::Vector3d pJ = basis(nodes[J]);
-    const Eigen::Matrix3d ppT = pJ * pJ.transpose();
-    M += w[J] * ppT;
-    dM[0] += grad_w[J].x() * ppT;
-    dM[1] += grad_w[J].y() * ppT;
+    add_outer(w[J], node_basis[J], M);
+    add_outer(grad_w[J].x(), node_basis[J], dM[0]);
+    add_outer(grad_w[J].y(), node_basis[J], dM[1]);
   }
+  fill_lower(M);
+  fill_lower(dM[0]);
+  fill_lower(dM[1]);
   // M is 3x3 symmetric positive definite inside the cell: its inverse in closed form (adjugate
   // over determinant) is exact enough and far cheaper than a factorization per point.
   const Eigen::Matrix3d Minv = M.inverse();
@@ -33,15 +67,15 @@ double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vecto
     Eigen::Vector3d y = Minv * rhs;
     return Eigen::Vector3d(y + Minv * (rhs - M * y));
   };
-  const Eigen::Vector3d b = solve(basis(x));  // M^-1 p(x)
-  Eigen::Vector3d c[2];                       // M^-1 dp/dx_d - M^-1 dM_d M^-1 p(x)
+  const Eigen::Vector3d b = solve(basis_at(frame, x));  // M^-1 p(x)
+  Eigen::Vector3d c[2];                                 // M^-1 dp/dx_d - M^-1 dM_d M^-1 p(x)
   for (int d = 0; d < 2; ++d) {
     Eigen::Vector3d dp = Eigen::Vector3d::Zero();
     dp[1 + d] = 1.0 / frame.scale;
     c[d] = solve(dp - dM[d] * b);
   }
   for (int I = 0; I < n; ++I) {
-    const Eigen::Vector3d pI = basis(nodes[I]);
+    const Eigen::Vector3d& pI = node_basis[I];
     const double modulation = b.dot(pI);
     psi[I] = modulation * w[I];
     grad_psi[I] = Eigen::Vector2d(c[0].dot(pI), c[1].dot(pI)) * w[I] + modulation * grad_w[I];

@@ -22,4 +22,13 @@ double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vecto
                           const Eigen::Vector2d& x, const double* w, const Eigen::Vector2d* grad_w,
                           double* psi, Eigen::Vector2d* grad_psi);
 
+/// The basis at the nodes, p(x_J): the same for every point of a cell, so a cell's points can
+/// share it (the overload below).
+void rk_node_basis(const RkCellFrame& frame, std::span<const Eigen::Vector2d> nodes,
+                   Eigen::Vector3d* basis);
+/// The same shape functions from the nodes' basis (rk_node_basis), to the same bits.
+double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vector3d> node_basis,
+                          const Eigen::Vector2d& x, const double* w, const Eigen::Vector2d* grad_w,
+                          double* psi, Eigen::Vector2d* grad_psi);
+
 }  // namespace vorodg

@@ -1,6 +1,6 @@
 // Maximal Poisson-disk sampling: minimum distance, maximality (no room left), containment,
 // determinism, the saturated covered fraction of random sequential addition (~0.547), fixed
-// points, input checks; and the 1D boundary sampler.
+// points, input checks, independence of the thread count; and the 1D boundary sampler.
 #include "core/meshgen/PoissonDiskSampler.hpp"
 
 #include <gtest/gtest.h>
@@ -226,6 +226,26 @@ TEST(PoissonDiskSampler, BoundaryPointsIncludeCornersAndAreSpacedBetweenDAnd2D) 
   }
   // Deterministic.
   EXPECT_EQ(pts, sample_boundary_points(dom, d, 11));
+}
+
+// The random numbers are drawn in one sequence and the arrivals resolve to a unique set, so the
+// samples are the same to the bit on any number of threads (with and without fixed points).
+TEST(PoissonDisk, ThreadsDoNotChangeTheSamples) {
+  const Rectangle dom(0.0, -0.5, 4.0, 0.5);
+  for (const double d : {0.05, 0.013})
+    for (const std::uint64_t seed : {3u, 17u})
+      for (const bool fixed : {false, true}) {
+        PoissonDiskOptions o;
+        o.min_distance = d;
+        o.seed = seed;
+        if (fixed) o.fixed_points = {Point(0.0, -0.5), Point(2.0, 0.0), Point(4.0, 0.5)};
+        const auto one = sample_poisson_disk(dom, o);
+        o.threads = 2;
+        const auto two = sample_poisson_disk(dom, o);
+        EXPECT_EQ(one.points, two.points) << "d " << d << " seed " << seed;
+        EXPECT_EQ(one.darts_thrown, two.darts_thrown);
+        EXPECT_EQ(one.refinement_passes, two.refinement_passes);
+      }
 }
 
 }  // namespace

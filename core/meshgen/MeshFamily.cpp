@@ -145,6 +145,7 @@ GeneratedMesh generate_rcp(const MeshSpec& spec) {
   PoissonDiskOptions options;
   options.min_distance = spec.size;
   options.seed = spec.seed;
+  options.threads = spec.threads;
   std::vector<Point> seeds = sample_poisson_disk(spec.domain, options).points;
   std::optional<NotchLine> notch;
   if (spec.symmetric && spec.notch_only) {
@@ -220,6 +221,7 @@ GeneratedMesh generate_tri(const MeshSpec& spec) {
   PoissonDiskOptions options;
   options.min_distance = spec.size;
   options.seed = spec.seed;
+  options.threads = spec.threads;
   options.fixed_points = sample_boundary_points(spec.domain, spec.size, derive_seed(spec.seed, 1));
   auto sample = sample_poisson_disk(spec.domain, options);
   // An interior seed close to a side, between two side seeds up to 2d apart, would make a

@@ -49,6 +49,8 @@ struct MeshSpec {
   /// file: path of a .vtu mesh; its domain is `domain` if given, else its bounding box.
   std::string path;
   bool domain_given = true;
+  /// Threads of the generators that use them (rcp and tri seeding); the mesh does not depend on it.
+  int threads = 1;
 };
 
 /// What a generator measured on the way; written by `vorodg mesh --stats`.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -121,35 +122,45 @@ bool arrives_before(const Dart& a, std::size_t ia, const Dart& b, std::size_t ib
 /// decided (accepted once all earlier conflicting darts are rejected, rejected once one of them
 /// is accepted) — the same answer as processing arrivals one by one, with memory access in grid
 /// order instead of random order.
-std::vector<char> resolve_arrivals(const std::vector<Dart>& darts, const SampleGrid& grid,
-                                   std::vector<int>& first_dart, double d2) {
-  enum : char { undecided, accepted, rejected };
-  std::vector<char> status(darts.size(), undecided);
+enum : char { undecided, accepted, rejected };
+
+std::vector<std::atomic<char>> resolve_arrivals(const std::vector<Dart>& darts,
+                                                const SampleGrid& grid,
+                                                std::vector<int>& first_dart, double d2,
+                                                int threads) {
+  // Darts decided in the same sweep by other threads may or may not be seen: every decision is
+  // still right (accepted once all earlier conflicting darts are rejected, rejected once one is
+  // accepted), and the set they converge to is unique, so the answer does not depend on threads.
+  std::vector<std::atomic<char>> status(darts.size());
+  for (auto& s : status) s.store(undecided, std::memory_order_relaxed);
   for (std::size_t i = darts.size(); i-- > 0;) first_dart[darts[i].cell] = static_cast<int>(i);
-  std::size_t open = darts.size();
+  const long n = static_cast<long>(darts.size());
+  long open = n;
   while (open > 0) {
-    for (std::size_t i = 0; i < darts.size(); ++i) {
-      if (status[i] != undecided) continue;
+    long decided = 0;
+#pragma omp parallel for schedule(static, 4096) reduction(+ : decided) num_threads(threads)
+    for (long i = 0; i < n; ++i) {
+      if (status[i].load(std::memory_order_relaxed) != undecided) continue;
       bool blocked = false, beaten = false;
       grid.for_each_neighbor_cell(darts[i].cell, [&](int cell) {
-        for (int j = first_dart[cell];
-             j >= 0 && j < static_cast<int>(darts.size()) && darts[j].cell == cell && !beaten;
-             ++j) {
-          if (static_cast<std::size_t>(j) == i || status[j] == rejected) continue;
+        for (long j = first_dart[cell]; j >= 0 && j < n && darts[j].cell == cell && !beaten; ++j) {
+          const char sj = status[j].load(std::memory_order_relaxed);
+          if (j == i || sj == rejected) continue;
           if (!arrives_before(darts[j], j, darts[i], i)) continue;
           if ((darts[j].p - darts[i].p).squaredNorm() >= d2) continue;
-          if (status[j] == accepted)
+          if (sj == accepted)
             beaten = true;
           else
             blocked = true;
         }
         return beaten;
       });
-      if (beaten)
-        status[i] = rejected, --open;
-      else if (!blocked)
-        status[i] = accepted, --open;
+      if (beaten || !blocked) {
+        status[i].store(beaten ? rejected : accepted, std::memory_order_relaxed);
+        ++decided;
+      }
     }
+    open -= decided;
   }
   for (const Dart& dart : darts) first_dart[dart.cell] = -1;
   return status;
@@ -161,24 +172,77 @@ std::vector<char> resolve_arrivals(const std::vector<Dart>& darts, const SampleG
 /// addition. Darts are generated square by square (the squares are in grid order).
 void throw_darts(SampleGrid& grid, const std::vector<ActiveSquare>& active, double sub_side,
                  const Rectangle& domain, double darts_per_square, Random& rng,
-                 std::vector<int>& first_dart, PoissonDiskResult& result) {
+                 std::vector<int>& first_dart, int threads, PoissonDiskResult& result) {
   std::vector<Dart> darts;
   darts.reserve(active.size());
   const double exp_minus_mean = std::exp(-darts_per_square);
-  for (const ActiveSquare& sq : active) {
+  const bool test_at_once = threads <= 1;  // one thread: test each dart while it is in cache
+  for (const ActiveSquare& sq : active) {  // the random numbers, in one sequence
     const int n = rng.poisson(exp_minus_mean);
     const Point origin = grid.cell_origin(sq.cell) + sub_side * Point(sq.a, sq.b);
     for (int k = 0; k < n; ++k) {
       const Point p = origin + sub_side * Point(rng.uniform(), rng.uniform());
       const std::uint64_t arrival = rng.bits();
       ++result.darts_thrown;
-      if (!domain.contains(p, 0.0) || grid.occupied(sq.cell) || grid.conflicts(p)) continue;
+      if (!domain.contains(p, 0.0) || grid.occupied(sq.cell)) continue;
+      if (test_at_once && grid.conflicts(p)) continue;
       darts.push_back({sq.cell, p, arrival});
     }
   }
-  const auto status = resolve_arrivals(darts, grid, first_dart, grid.d2());
+  if (!test_at_once) {
+    // The grid does not change while the darts are tested against it: in parallel, then the
+    // darts that conflict with a sample are dropped in place, the others kept in order.
+    std::vector<char> conflicting(darts.size());
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+    for (long i = 0; i < static_cast<long>(darts.size()); ++i)
+      conflicting[i] = grid.conflicts(darts[i].p);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < darts.size(); ++i)
+      if (!conflicting[i]) darts[kept++] = darts[i];
+    darts.resize(kept);
+  }
+  const auto status = resolve_arrivals(darts, grid, first_dart, grid.d2(), threads);
   for (std::size_t i = 0; i < darts.size(); ++i)
-    if (status[i] == 1) grid.place(darts[i].p);
+    if (status[i].load(std::memory_order_relaxed) == accepted) grid.place(darts[i].p);
+}
+
+/// The children of one square that still have an uncovered part inside the domain.
+void add_uncovered_children(const SampleGrid& grid, const ActiveSquare& sq, double side,
+                            const Rectangle& domain, std::vector<ActiveSquare>& children) {
+  if (grid.occupied(sq.cell)) return;
+  std::array<Point, 21> near;
+  const int n_near = grid.gather_neighbors(sq.cell, near);
+  const Point origin = grid.cell_origin(sq.cell) + side * Point(sq.a, sq.b);
+  const double half = 0.5 * side;
+  for (std::uint32_t q = 0; q < 4; ++q) {
+    const std::uint32_t qa = q & 1u, qb = q >> 1;
+    Point lo = origin + half * Point(qa, qb);
+    Point hi = lo + Point(half, half);
+    lo = lo.cwiseMax(domain.lo());
+    hi = hi.cwiseMin(domain.hi());
+    if (!(lo.x() < hi.x() && lo.y() < hi.y())) continue;
+    if (box_covered(lo, hi, near.data(), n_near, grid.d2())) continue;
+    children.push_back({sq.cell, 2 * sq.a + qa, 2 * sq.b + qb});
+  }
+}
+
+/// Refinement: each remaining square split in four, the children kept in the squares' order
+/// (chunks of squares refined in parallel, then joined in order).
+std::vector<ActiveSquare> refine(const SampleGrid& grid, const std::vector<ActiveSquare>& active,
+                                 double side, const Rectangle& domain, int threads) {
+  const long n = static_cast<long>(active.size());
+  const long chunk = threads > 1 ? 16384 : std::max(n, 1L);  // one thread: one part, no joining
+  std::vector<std::vector<ActiveSquare>> parts((n + chunk - 1) / chunk);
+  if (parts.size() == 1) parts[0].reserve(active.size() * 2);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (long part = 0; part < static_cast<long>(parts.size()); ++part)
+    for (long i = part * chunk; i < std::min(n, (part + 1) * chunk); ++i)
+      add_uncovered_children(grid, active[i], side, domain, parts[part]);
+  if (parts.size() == 1) return std::move(parts[0]);
+  std::vector<ActiveSquare> children;
+  children.reserve(active.size() * 2);
+  for (const auto& part : parts) children.insert(children.end(), part.begin(), part.end());
+  return children;
 }
 
 void check_options(const Rectangle& domain, double d) {
@@ -225,30 +289,10 @@ PoissonDiskResult sample_poisson_disk(const Rectangle& domain, const PoissonDisk
   double sub_side = grid.side();
   constexpr int kMaxLevel = 40;  // sub-squares of side d * 2^-40: below any useful resolution
   for (int level = 0; level <= kMaxLevel && !active.empty(); ++level) {
-    throw_darts(grid, active, sub_side, domain, options.darts_per_cell, rng, first_dart, result);
-    // Refinement: split each remaining square in four and keep the children that still have an
-    // uncovered part inside the domain.
-    std::vector<ActiveSquare> children;
-    children.reserve(active.size() * 2);
-    const double half = 0.5 * sub_side;
-    std::array<Point, 21> near;
-    for (const ActiveSquare& sq : active) {
-      if (grid.occupied(sq.cell)) continue;
-      const int n_near = grid.gather_neighbors(sq.cell, near);
-      const Point origin = grid.cell_origin(sq.cell) + sub_side * Point(sq.a, sq.b);
-      for (std::uint32_t q = 0; q < 4; ++q) {
-        const std::uint32_t qa = q & 1u, qb = q >> 1;
-        Point lo = origin + half * Point(qa, qb);
-        Point hi = lo + Point(half, half);
-        lo = lo.cwiseMax(domain.lo());
-        hi = hi.cwiseMin(domain.hi());
-        if (!(lo.x() < hi.x() && lo.y() < hi.y())) continue;
-        if (box_covered(lo, hi, near.data(), n_near, d * d)) continue;
-        children.push_back({sq.cell, 2 * sq.a + qa, 2 * sq.b + qb});
-      }
-    }
-    active.swap(children);
-    sub_side = half;
+    throw_darts(grid, active, sub_side, domain, options.darts_per_cell, rng, first_dart,
+                options.threads, result);
+    active = refine(grid, active, sub_side, domain, options.threads);
+    sub_side *= 0.5;
     result.refinement_passes = level + 1;
   }
 

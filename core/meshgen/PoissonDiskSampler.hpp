@@ -20,6 +20,9 @@ struct PoissonDiskOptions {
   /// Points fixed before sampling starts (e.g. seeds on the boundary); they must already be at
   /// least d apart and inside the domain.
   std::vector<Point> fixed_points;
+  /// Threads for the tests against the grid, the resolution of arrivals and the refinement; the
+  /// random numbers are drawn in one sequence, so the samples do not depend on it.
+  int threads = 1;
 };
 
 struct PoissonDiskResult {

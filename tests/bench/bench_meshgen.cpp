@@ -4,7 +4,8 @@
 //   BM_VoronoiTessellation  seeds -> clipped Voronoi mesh
 //   BM_Regularization       short-edge collapse on the raw Voronoi mesh
 //   BM_RcpGeneration        the whole rcp family through generate_mesh (the headline number;
-//                           target >= 300k cells/s at 1e6 cells)
+//                           target >= 300k cells/s at 1e6 cells); BM_RcpGenerationTwoThreads
+//                           the same with the seeding on two threads (the same meshes)
 //   BM_MeshTopology         PolygonMesh construction (edges, vertex-cell map, boundary tags)
 //   BM_HexGeneration        the hex family through generate_mesh
 // The argument is the target number of cells; the counters report the cells actually made.
@@ -128,8 +129,9 @@ void BM_Regularization(benchmark::State& state) {
   state.counters["collapsed_edges"] = collapsed;
 }
 
-void BM_RcpGeneration(benchmark::State& state) {
+void rcp_generation(benchmark::State& state, int threads) {
   MeshSpec spec;
+  spec.threads = threads;
   spec.family = MeshFamily::rcp;
   spec.domain = bench_domain();
   spec.size = spacing_for_cells(static_cast<double>(state.range(0)));
@@ -143,6 +145,14 @@ void BM_RcpGeneration(benchmark::State& state) {
     ++spec.seed;
   }
   set_cells(state, cells);
+}
+
+void BM_RcpGeneration(benchmark::State& state) {
+  rcp_generation(state, 1);
+}
+
+void BM_RcpGenerationTwoThreads(benchmark::State& state) {
+  rcp_generation(state, 2);
 }
 
 void BM_MeshTopology(benchmark::State& state) {
@@ -198,6 +208,7 @@ BENCHMARK(BM_VoronoiTessellation)->Apply(cell_counts);
 BENCHMARK(BM_VoronoiTessellation)->Apply(large_case);
 BENCHMARK(BM_Regularization)->Apply(cell_counts);
 BENCHMARK(BM_Regularization)->Apply(large_case);
+BENCHMARK(BM_RcpGenerationTwoThreads)->Apply(large_case);
 BENCHMARK(BM_RcpGeneration)->Apply(cell_counts);
 BENCHMARK(BM_RcpGeneration)->Apply(large_case);
 BENCHMARK(BM_MeshTopology)->Apply(cell_counts);

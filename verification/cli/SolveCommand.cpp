@@ -72,7 +72,8 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   check_output_folder(o.output.path, "--output");
   check_output_folder(o.metrics, "--metrics");
   Stopwatch clock;
-  const MeshSpec spec = mesh_spec(o.mesh, command.count("--domain") > 0);
+  MeshSpec spec = mesh_spec(o.mesh, command.count("--domain") > 0);
+  spec.threads = settings.element.threads;
   echo_options("vorodg solve", command, resolved_defaults(settings));
   const GeneratedMesh generated = generate_mesh(spec);
   const PolygonMesh& mesh = generated.mesh;

@@ -1,7 +1,7 @@
 // `vorodg solve` end to end: runs the built program.
 // - A successful run writes a metrics JSON with the documented keys (dofs, cells, h_avg,
-//   l2_error, energy_error, rcond, seconds{element, assembly, factorization, solve, error, mesh},
-//   blas), all finite, consistent with the mesh; and a .vtu with displacement,
+//   l2_error, energy_error, rcond, seconds{element, assembly, factorization, solve, error (unless
+//   --no-errors), mesh}, blas), all finite, consistent with the mesh; and a .vtu with displacement,
 //   exact_displacement, mean_stress and von_mises and no NaN or infinity.
 // - The patch tests pass through the command line (generated and imported meshes).
 // - Bad input (singular problem, nu = 0.5, nu = -1, E = 0, an invalid mesh file, the beam on a
@@ -90,7 +90,8 @@ class SolveCommand : public ::testing::Test {
     std::string vtu;
   };
 
-  Success expect_success(std::vector<std::string> args) {
+  // `errors`: the run measures errors (no --no-errors): the metrics carry them.
+  Success expect_success(std::vector<std::string> args, bool errors = true) {
     const fs::path out = dir_ / "result.vtu";
     const fs::path metrics = dir_ / "metrics.json";
     // ASCII, so the text checks below can read the values (the default binary output is read
@@ -109,15 +110,17 @@ class SolveCommand : public ::testing::Test {
       ADD_FAILURE() << "metrics are not JSON: " << e.what();
     }
     s.vtu = slurp(out);
-    expect_metrics(s.metrics);
+    expect_metrics(s.metrics, errors);
     expect_clean_vtu(s.vtu);
     fs::remove(out);
     fs::remove(metrics);
     return s;
   }
 
-  static void expect_metrics(const json& m) {
-    for (const char* key : {"dofs", "cells", "h_avg", "l2_error", "energy_error", "rcond"}) {
+  static void expect_metrics(const json& m, bool errors) {
+    for (const char* key : {"l2_error", "energy_error"})
+      EXPECT_EQ(m.contains(key), errors) << key << " in " << m.dump(2);
+    for (const char* key : {"dofs", "cells", "h_avg", "rcond"}) {
       ASSERT_TRUE(m.contains(key)) << "missing key " << key << " in " << m.dump(2);
       ASSERT_TRUE(m[key].is_number()) << key << " is not a number in " << m.dump(2);
       EXPECT_TRUE(std::isfinite(m[key].get<double>())) << key;
@@ -130,7 +133,8 @@ class SolveCommand : public ::testing::Test {
     EXPECT_LE(m["rcond"].get<double>(), 1.0);
     ASSERT_TRUE(m.contains("seconds")) << m.dump(2);
     ASSERT_TRUE(m["seconds"].is_object()) << m.dump(2);
-    for (const char* stage : {"element", "assembly", "factorization", "solve", "error", "mesh"}) {
+    EXPECT_EQ(m["seconds"].contains("error"), errors) << m.dump(2);
+    for (const char* stage : {"element", "assembly", "factorization", "solve", "mesh"}) {
       ASSERT_TRUE(m["seconds"].contains(stage))
           << "missing seconds." << stage << " in " << m.dump(2);
       ASSERT_TRUE(m["seconds"][stage].is_number()) << stage;
@@ -237,6 +241,15 @@ TEST_F(SolveCommand, PatchTestOnImportedMesh) {
   EXPECT_EQ(s.metrics.value("cells", -1), 4);
   EXPECT_LT(s.metrics["l2_error"].get<double>(), 1e-10);
   EXPECT_LT(s.metrics["energy_error"].get<double>(), 1e-10);
+}
+
+TEST_F(SolveCommand, NoErrorsSkipsTheErrorIntegration) {
+  const Success s = expect_success(
+      {"solve", "--family", "rcp", "--d", "0.2", "--problem", "beam", "--no-errors"}, false);
+  if (s.metrics.is_null()) return;
+  EXPECT_FALSE(s.metrics["seconds"].contains("error_weights"));
+  EXPECT_EQ(s.vtu.find("error_density"), std::string::npos);
+  EXPECT_NE(s.vtu.find("Name=\"mean_stress\""), std::string::npos);
 }
 
 TEST_F(SolveCommand, ManufacturedSolution) {

@@ -113,7 +113,7 @@ void record_element_quality(const ElementTable& table, SolveResult& result) {
 
 /// CG: assemble, keep the cell mean strain operators, then (with a table of its own) release the
 /// table's point values and weight functions before the factorization, the largest memory peak
-/// of a solve; the weights come back for the errors.
+/// of a solve; the weights come back only for the errors.
 ElasticityIntegrator::MeanStrainOperators solve_cg(const ElasticityIntegrator& integrator,
                                                    const ExactSolution& problem,
                                                    const SolveSettings& settings,
@@ -137,7 +137,7 @@ ElasticityIntegrator::MeanStrainOperators solve_cg(const ElasticityIntegrator& i
   result.solver = formulation.solver();
   result.amg = formulation.amg_report();
   result.edge_gaps.assign(table.mesh().num_edges(), 0.0);
-  if (own_table) {
+  if (own_table && settings.errors) {
     clock.restart();
     own_table->restore_weights();
     result.seconds["error_weights"] = clock.seconds();
@@ -164,31 +164,43 @@ ElasticityIntegrator::MeanStrainOperators solve_dg(const ElasticityIntegrator& i
   return mean_strain;
 }
 
-/// The errors against the exact solution and the cell mean stresses.
+/// A cell's own displacement DOFs of a solve.
+Eigen::VectorXd cell_dofs(const PolygonMesh& mesh, const SolveResult& result, int c) {
+  return result.cell_dof_values.segment(result.cell_offsets[c], 2 * mesh.cell_size(c));
+}
+
+/// The cell mean stresses, D times the mean strain operator times the cell's DOFs.
+void measure_mean_stresses(const PolygonMesh& mesh, const ExactSolution& problem,
+                           const ElasticityIntegrator::MeanStrainOperators& mean_strain,
+                           SolveResult& result) {
+  result.cell_mean_stress.resize(mesh.num_cells());
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    result.cell_mean_stress[c] =
+        problem.material().D() * (mean_strain.block(c) * cell_dofs(mesh, result, c));
+}
+
+/// The errors against the exact solution, on the error rule's own points.
 void measure_errors(const ElementTable& table, const ExactSolution& problem,
                     const SolveSettings& settings,
                     const ElasticityIntegrator::MeanStrainOperators& mean_strain,
                     SolveResult& result) {
   Stopwatch clock;
   const PolygonMesh& mesh = table.mesh();
-  const auto cell_dofs = [&](int c) -> Eigen::VectorXd {
-    return result.cell_dof_values.segment(result.cell_offsets[c], 2 * mesh.cell_size(c));
-  };
   CellDilatationMean dilatation_mean;
   if (settings.mean_dilation)
     dilatation_mean = [&](int c, const Eigen::VectorXd& u) {
       const auto op = mean_strain.block(c);
       return op.row(0).dot(u) + op.row(1).dot(u);
     };
-  const ErrorReport errors = compute_errors(table, problem, cell_dofs, settings.energy_error,
-                                            settings.element.threads, dilatation_mean);
+  const ErrorReport errors = compute_errors(
+      table, problem, [&](int c) { return cell_dofs(mesh, result, c); }, settings.energy_error,
+      settings.element.threads, dilatation_mean);
+  result.errors_measured = true;
   result.l2_error = errors.l2_error;
   result.energy_error = errors.energy_error;
   result.cell_l2_density = errors.cell_l2_density;
   result.cell_energy_density = errors.cell_energy_density;
-  result.cell_mean_stress.resize(mesh.num_cells());
-  for (int c = 0; c < mesh.num_cells(); ++c)
-    result.cell_mean_stress[c] = problem.material().D() * (mean_strain.block(c) * cell_dofs(c));
+  measure_mean_stresses(mesh, problem, mean_strain, result);  // timed with the errors as before
   result.seconds["error"] = clock.seconds();
 }
 
@@ -210,7 +222,10 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
   const auto mean_strain =
       cg ? solve_cg(integrator, *problem, settings, analyses, own_table.get(), result)
          : solve_dg(integrator, *problem, settings, analyses, result);
-  measure_errors(table, *problem, settings, mean_strain, result);
+  if (settings.errors)
+    measure_errors(table, *problem, settings, mean_strain, result);
+  else
+    measure_mean_stresses(mesh, *problem, mean_strain, result);
   return result;
 }
 

@@ -30,6 +30,7 @@ struct SolveSettings {
   bool mean_dilation = false;
   ElementOptions element;      // rule, correction, weight refinement/degree, threads
   LinearSolverOptions solver;  // CG: cholmod (its ordering; DG too) or amg-cg (its tolerance)
+  bool errors = true;          // integrate the error against the exact solution on its own points
   bool energy_error = true;
   DgOptions dg;  // penalty scaling and k_p, tolerance, iterations, variants
 };
@@ -40,6 +41,7 @@ DgOptions dg_options(const SolveSettings& settings);
 
 struct SolveResult {
   int dofs = 0, free_dofs = 0;
+  bool errors_measured = false;               // settings.errors: the two errors below
   double l2_error = 0.0, energy_error = 0.0;  // relative
   double rcond = 0.0;                         // CHOLMOD's reciprocal condition estimate
   long factor_nonzeros = 0;  // entries of the Cholesky factor (its memory: 8 bytes each)
@@ -55,7 +57,7 @@ struct SolveResult {
   std::vector<double> edge_gaps;           // DG: largest |[u]| on each edge (0 for CG)
   std::optional<DgReport> dg;              // DG only: iterations, stop reason, gap
   std::vector<Eigen::Vector3d> cell_mean_stress;
-  std::vector<double> cell_l2_density, cell_energy_density;
+  std::vector<double> cell_l2_density, cell_energy_density;  // empty without errors
 };
 
 /// The exact solution a problem name stands for, on `domain` (the beam needs [0,L]x[-D/2,D/2]).
@@ -66,7 +68,8 @@ std::unique_ptr<ExactSolution> make_problem(const SolveSettings& settings, const
 /// to round-off, which a factor gives and a tolerance does not, so there `auto` means cholmod.
 LinearSolverOptions cg_solver(const SolveSettings& settings);
 
-/// Builds the element table, assembles, solves and measures the errors. With `shared`, the
+/// Builds the element table, assembles, solves and (with settings.errors) measures the errors;
+/// the cell mean stresses come either way. With `shared`, the
 /// element table and the factorization's symbolic analysis come from (or go to) the work shared
 /// by the runs on `mesh`; the results are the same either way.
 SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,

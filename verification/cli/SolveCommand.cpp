@@ -28,8 +28,11 @@ void check_converged(const SolveResult& r, const SolveSettings& settings) {
 
 void print_summary(const SolveSettings& settings, const MeshSpec& spec, const RunMetrics& m) {
   std::cout << settings.problem << " on " << family_name(spec.family) << ": " << m.cells
-            << " cells, " << m.dofs << " dofs, h_avg " << m.h_avg << ", L2 error " << m.l2_error
-            << ", energy error " << m.energy_error << "\n";
+            << " cells, " << m.dofs << " dofs, h_avg " << m.h_avg;
+  if (m.errors_measured)
+    std::cout << ", L2 error " << m.l2_error << ", energy error " << m.energy_error << "\n";
+  else
+    std::cout << ", errors not measured (--no-errors)\n";
   if (m.solver == "amg-cg")
     std::cout << "solver amg-cg: " << m.solver_iterations << " iterations, relative residual "
               << m.solver_residual << "\n";

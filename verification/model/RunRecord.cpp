@@ -34,6 +34,7 @@ RunMetrics run_metrics(const PolygonMesh& mesh, const SolveResult& r) {
           .l2_error = r.l2_error,
           .energy_error = r.energy_error,
           .rcond = r.rcond,
+          .errors_measured = r.errors_measured,
           .factor_nonzeros = r.factor_nonzeros,
           .solver = solver_name(r.solver),
           .solver_iterations = r.amg.iterations,
@@ -52,8 +53,6 @@ json to_json(const RunMetrics& m) {
             {"dofs", m.dofs},
             {"free_dofs", m.free_dofs},
             {"h_avg", m.h_avg},
-            {"l2_error", m.l2_error},
-            {"energy_error", m.energy_error},
             {"rcond", m.rcond},
             {"factor_nonzeros", m.factor_nonzeros},
             {"solver", m.solver},
@@ -67,6 +66,10 @@ json to_json(const RunMetrics& m) {
             {"seconds", json(m.seconds)},
             {"shared_stages", m.shared_stages},
             {"peak_memory_mb", m.peak_memory_mb}};
+  if (m.errors_measured) {  // absent, not null: null stands for a non-finite error
+    j["l2_error"] = m.l2_error;
+    j["energy_error"] = m.energy_error;
+  }
   if (m.dg) {  // DG only: the presence of "penalty" says a record is DG
     j["penalty"] = m.dg->penalty;
     j["last_change"] = m.dg->last_change;
@@ -83,8 +86,11 @@ RunMetrics metrics_from_json(const json& j) {
   m.dofs = j.at("dofs").get<int>();
   m.free_dofs = j.at("free_dofs").get<int>();
   m.h_avg = number(j, "h_avg");
-  m.l2_error = number(j, "l2_error");
-  m.energy_error = number(j, "energy_error");
+  m.errors_measured = j.contains("l2_error");
+  if (m.errors_measured) {
+    m.l2_error = number(j, "l2_error");
+    m.energy_error = number(j, "energy_error");
+  }
   m.rcond = number(j, "rcond");
   m.factor_nonzeros = j.at("factor_nonzeros").get<long>();
   m.solver = j.value("solver", "cholmod");  // records from before amg-cg existed

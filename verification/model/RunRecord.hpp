@@ -34,6 +34,7 @@ struct StudyRun {
 struct RunMetrics {
   int cells = 0, vertices = 0, dofs = 0, free_dofs = 0;
   double h_avg = 0.0, l2_error = 0.0, energy_error = 0.0, rcond = 0.0;
+  bool errors_measured = true;  // false: `solve --no-errors`; the record has no error keys
   long factor_nonzeros = 0;
   std::string solver = "cholmod";  // the one the run used: cholmod or amg-cg
   int solver_iterations = 0;       // amg-cg: CG iterations (cholmod: 0)

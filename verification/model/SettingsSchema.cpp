@@ -155,6 +155,11 @@ std::vector<SettingSpec> make_specs() {
       traction_choice(),
       integer("sipg_sign", "--sipg-sign", "sipg_sign", "dg-sipg: -1 symmetric, +1 non-symmetric",
               Scope::formulation, one_of({-1, 1}), [](S& s) -> int& { return s.dg.sipg_sign; }),
+      flag(
+          "errors", "--no-errors",
+          "integrate the error against the exact solution (the flag skips it: no error points, "
+          "no weight functions rebuilt after the factorization; a study always measures errors)",
+          Scope::command_line, [](S& s) -> bool& { return s.errors; }, true),
       flag("energy_error", "", "compute the energy norm of the error too", Scope::outputs,
            [](S& s) -> bool& { return s.energy_error; }),
       integer("threads", "--threads", "threads", "threads for setup, assembly and errors",

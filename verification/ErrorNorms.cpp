@@ -19,10 +19,10 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
   const PolygonMesh& mesh = table.mesh();
   const auto loop = mesh.cell_vertices(c);
   const int n = static_cast<int>(loop.size());
-  const int m = table.weights().lattice_size();
+  const int m = table.lattice_size();
   const TriangleRule& rule = triangle_rule(7);
   const Eigen::Matrix3d& D = exact.material().D();
-  const Point& C = table.weights().centroids()[c];
+  const Point& C = table.centroid(c);
   double psi[64];
   Eigen::Vector2d grad[64];
   CellSums sums;

@@ -137,7 +137,7 @@ ElasticityIntegrator::MeanStrainOperators solve_cg(const ElasticityIntegrator& i
   result.solver = formulation.solver();
   result.amg = formulation.amg_report();
   result.edge_gaps.assign(table.mesh().num_edges(), 0.0);
-  if (own_table && settings.errors) {
+  if (own_table && settings.errors && own_table->weights_released()) {
     clock.restart();
     own_table->restore_weights();
     result.seconds["error_weights"] = clock.seconds();

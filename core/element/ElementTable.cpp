@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "core/element/BarycentricCoordinates.hpp"
 #include "core/element/RkShapeFunctions.hpp"
 #include "core/geometry/Polygon.hpp"
 #include "core/quadrature/TriangleRule.hpp"
@@ -40,8 +41,30 @@ void check_star_shaped(const PolygonMesh& mesh) {
   }
 }
 
-RkCellFrame cell_frame(const PolygonMesh& mesh, int c, const Point& centroid) {
-  return {centroid, std::sqrt(mesh.cell_area(c))};
+/// Wachspress coordinates need every corner to turn counter-clockwise.
+void check_convex(const PolygonMesh& mesh) {
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const auto pts = mesh.cell_points(c);
+    const int k = first_non_convex_corner(pts);
+    if (k >= 0)
+      throw InputError("cell " + std::to_string(c) + " is not strictly convex at its vertex " +
+                       std::to_string(mesh.cell_vertices(c)[k]) +
+                       " (element wachspress needs convex cells; mean-value takes any "
+                       "star-shaped cell)");
+  }
+}
+
+BarycentricKind barycentric_kind(ElementFamily family) {
+  return family == ElementFamily::wachspress ? BarycentricKind::wachspress
+                                             : BarycentricKind::mean_value;
+}
+
+/// The cell's vertices, in loop order, into `nodes` (kMaxNodes long).
+std::span<const Eigen::Vector2d> cell_nodes(const PolygonMesh& mesh, int c,
+                                            Eigen::Vector2d* nodes) {
+  const auto loop = mesh.cell_vertices(c);
+  for (std::size_t k = 0; k < loop.size(); ++k) nodes[k] = mesh.vertex(loop[k]);
+  return {nodes, loop.size()};
 }
 
 }  // namespace
@@ -50,9 +73,13 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
     : mesh_(mesh), options_(options) {
   check_options(options);
   check_star_shaped(mesh);
-  weights_ = std::make_unique<WeightFunctions>(mesh, options.weights, options.threads);
+  if (options.family == ElementFamily::wachspress) check_convex(mesh);
+  if (options.family == ElementFamily::rk)
+    weights_ = std::make_unique<WeightFunctions>(mesh, options.weights, options.threads);
   const int q_per_fan = triangle_rule(options.rule_points).size();
   const int nc = mesh.num_cells();
+  centroids_.resize(nc);
+  for (int c = 0; c < nc; ++c) centroids_[c] = mesh.cell_centroid(c);
   point_offsets_.assign(nc + 1, 0);
   value_offsets_.assign(nc + 1, 0);
   for (int c = 0; c < nc; ++c) {
@@ -85,6 +112,10 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
     // A weight function must be positive wherever the cell's shape functions are evaluated:
     // every vertex's patch contains the cell. A zero or negative one makes the moment matrix
     // indefinite or leaves a node without influence.
+    if (options.family != ElementFamily::rk)
+      throw NumericalError("cell " + std::to_string(c) +
+                           ": its barycentric coordinates are not finite at a quadrature point "
+                           "(a degenerate cell)");
     if (!(min_weight_[c] > 0.0))
       throw NumericalError("cell " + std::to_string(c) + ": a vertex weight function is " +
                            fmt(min_weight_[c]) +
@@ -98,15 +129,12 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
 }
 
 void ElementTable::build_cell(int c) {
-  const auto loop = mesh_.cell_vertices(c);
-  const int n = static_cast<int>(loop.size());
-  const Point& C = weights().centroids()[c];
-  const RkCellFrame frame = cell_frame(mesh_, c, C);
-  Eigen::Vector2d nodes[kMaxNodes], grad_w[kMaxNodes];
-  double w[kMaxNodes];
-  for (int k = 0; k < n; ++k) nodes[k] = mesh_.vertex(loop[k]);
+  const int n = mesh_.cell_size(c);
+  const Point& C = centroids_[c];
+  Eigen::Vector2d node_storage[kMaxNodes];
+  const auto nodes = cell_nodes(mesh_, c, node_storage);
   Eigen::Vector3d node_basis[kMaxNodes];
-  rk_node_basis(frame, {nodes, static_cast<std::size_t>(n)}, node_basis);
+  if (options_.family == ElementFamily::rk) rk_node_basis(cell_frame(c), nodes, node_basis);
   const TriangleRule& rule = triangle_rule(options_.rule_points);
   double min_rcond = std::numeric_limits<double>::infinity();
   double min_weight = std::numeric_limits<double>::infinity();
@@ -120,16 +148,15 @@ void ElementTable::build_cell(int c) {
       fan_points_[at] = {k, rule.bary[r]};
       points_[at] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
       weights_q_[at] = rule.weights[r] * fan_area;
-      weights().evaluate(c, k, rule.bary[r], w, grad_w);
-      for (int j = 0; j < n; ++j) min_weight = std::min(min_weight, std::isnan(w[j]) ? -1.0 : w[j]);
       const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
-      const double rc = rk_shape_functions(frame, {node_basis, static_cast<std::size_t>(n)},
-                                           points_[at], w, grad_w, &shape_[v], &grad_[v]);
+      const double rc =
+          shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, fan_points_[at],
+                          points_[at], &shape_[v], &grad_[v], &min_weight);
       min_rcond = std::min(min_rcond, std::isfinite(rc) ? rc : 0.0);
     }
   }
   rcond_[c] = min_rcond;
-  min_weight_[c] = min_weight;
+  min_weight_[c] = options_.family == ElementFamily::rk ? min_weight : 1.0;
 
   // Discrete divergence identity (Eq. 16): sum_q w_q dpsi_k/dx_i must equal the boundary
   // integral of psi_k n_i, which for edge-linear psi_k is half the sum of (length x normal) of
@@ -154,30 +181,52 @@ void ElementTable::build_cell(int c) {
   defect_[c] = defect;
 }
 
+RkCellFrame ElementTable::cell_frame(int c) const {
+  return {centroids_[c], std::sqrt(mesh_.cell_area(c))};
+}
+
+double ElementTable::shape_functions(int c, std::span<const Eigen::Vector2d> nodes,
+                                     std::span<const Eigen::Vector3d> node_basis,
+                                     const FanPoint& at, const Point& x, double* psi,
+                                     Eigen::Vector2d* grad, double* min_weight) const {
+  const int n = static_cast<int>(nodes.size());
+  if (options_.family != ElementFamily::rk) {
+    barycentric_coordinates(barycentric_kind(options_.family), nodes, x, psi, grad);
+    for (int k = 0; k < n; ++k)
+      if (!std::isfinite(psi[k]) || !grad[k].allFinite()) return 0.0;
+    return 1.0;
+  }
+  Eigen::Vector2d grad_w[kMaxNodes];
+  double w[kMaxNodes];
+  weights().evaluate(c, at.fan, at.bary, w, grad_w);
+  for (int j = 0; j < n; ++j) *min_weight = std::min(*min_weight, std::isnan(w[j]) ? -1.0 : w[j]);
+  return rk_shape_functions(cell_frame(c), node_basis, x, w, grad_w, psi, grad);
+}
+
 Point ElementTable::position(int c, const FanPoint& at) const {
   const auto loop = mesh_.cell_vertices(c);
   const int n = static_cast<int>(loop.size());
-  return at.bary[0] * weights().centroids()[c] + at.bary[1] * mesh_.vertex(loop[at.fan]) +
+  return at.bary[0] * centroids_[c] + at.bary[1] * mesh_.vertex(loop[at.fan]) +
          at.bary[2] * mesh_.vertex(loop[(at.fan + 1) % n]);
 }
 
 void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vector2d* grad) const {
-  const auto loop = mesh_.cell_vertices(c);
-  const int n = static_cast<int>(loop.size());
-  Eigen::Vector2d nodes[kMaxNodes], grad_w[kMaxNodes];
-  double w[kMaxNodes];
-  for (int k = 0; k < n; ++k) nodes[k] = mesh_.vertex(loop[k]);
-  // On the cell's edge M is singular; the gradient is the one-sided limit from just inside.
+  const int n = mesh_.cell_size(c);
+  Eigen::Vector2d node_storage[kMaxNodes];
+  const auto nodes = cell_nodes(mesh_, c, node_storage);
+  Eigen::Vector3d node_basis[kMaxNodes];
+  if (options_.family == ElementFamily::rk) rk_node_basis(cell_frame(c), nodes, node_basis);
+  // On the cell's edge the RK moment matrix is singular and Wachspress's weights vanish; the
+  // gradient is the one-sided limit from just inside.
   constexpr double kInside = 1e-9;
   const bool on_edge = at.bary[0] < kInside;
   Eigen::Vector3d bary = at.bary;
   if (on_edge)
     bary = Eigen::Vector3d(kInside, at.bary[1] * (1 - kInside), at.bary[2] * (1 - kInside));
-  weights().evaluate(c, at.fan, bary, w, grad_w);
   const FanPoint inside{at.fan, bary};
-  rk_shape_functions(cell_frame(mesh_, c, weights().centroids()[c]),
-                     {nodes, static_cast<std::size_t>(n)}, position(c, inside), w, grad_w, psi,
-                     grad);
+  double min_weight = 1.0;
+  shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, inside, position(c, inside),
+                  psi, grad, &min_weight);
   if (on_edge) {  // exact edge limit: linear between the edge's end points
     const double s = at.bary[1] + at.bary[2];
     for (int k = 0; k < n; ++k) psi[k] = 0.0;
@@ -196,7 +245,7 @@ void ElementTable::release_weights() {
 }
 
 void ElementTable::restore_weights() {
-  if (!weights_)
+  if (!weights_ && options_.family == ElementFamily::rk)
     weights_ = std::make_unique<WeightFunctions>(mesh_, options_.weights, options_.threads);
 }
 

@@ -1,19 +1,25 @@
 #pragma once
 // The element table: the one thing CG and DG both consume. Per cell: quadrature points and
-// weights on the fan from the centroid, and the values and gradients of the cell's nodal RK
-// shape functions there (gradients divergence-corrected if asked, report Eqs. 15-16).
+// weights on the fan from the centroid, and the values and gradients of the cell's nodal shape
+// functions there (gradients divergence-corrected if asked, report Eqs. 15-16). The shape
+// functions are those of the element family: RK (the report's) or generalized barycentric
+// coordinates (Wachspress, mean value).
 #include <Eigen/Core>
 #include <memory>
+#include <span>
 #include <vector>
 
+#include "core/element/ElementFamily.hpp"
+#include "core/element/RkShapeFunctions.hpp"
 #include "core/element/WeightFunctions.hpp"
 #include "core/mesh/PolygonMesh.hpp"
 
 namespace vorodg {
 
 struct ElementOptions {
-  int rule_points = 3;                // per fan triangle: 1, 3 or 6
-  bool divergence_correction = true;  // enforce the discrete divergence identity (Eq. 16)
+  ElementFamily family = ElementFamily::rk;  // the shape functions (rk: the weights below)
+  int rule_points = 3;                       // per fan triangle: 1, 3 or 6
+  bool divergence_correction = true;         // enforce the discrete divergence identity (Eq. 16)
   WeightFunctionOptions weights;
   int threads = 1;  // setup threads; results do not depend on it
   bool operator==(const ElementOptions&) const = default;
@@ -33,9 +39,15 @@ class ElementTable {
   ElementTable(const PolygonMesh& mesh, const ElementOptions& options);
 
   const PolygonMesh& mesh() const { return mesh_; }
+  /// The cell's centroid: the apex of its quadrature fan.
+  const Point& centroid(int c) const { return centroids_[c]; }
   const ElementOptions& options() const { return options_; }
-  /// The weight functions (not between release_weights() and restore_weights()).
+  /// The RK weight functions (not between release_weights() and restore_weights(); none for
+  /// the other families).
   const WeightFunctions& weights() const;
+  /// Sub-triangles per fan-triangle edge of the weight functions' lattice, 2^refinement, which
+  /// the error quadrature uses for every family so that errors compare across families.
+  int lattice_size() const { return 1 << options_.weights.refinement; }
 
   int num_points(int c) const { return point_offsets_[c + 1] - point_offsets_[c]; }
   int num_nodes(int c) const { return mesh_.cell_size(c); }
@@ -53,9 +65,11 @@ class ElementTable {
   /// Largest |sum_q w_q dpsi_k/dx_i - (boundary integral)| over the cell's nodes and directions
   /// before any correction: the discrete divergence defect (Eq. 16), absolute.
   double divergence_defect(int c) const { return defect_[c]; }
-  /// Smallest reciprocal condition estimate of the moment matrix over the cell's points.
+  /// Smallest reciprocal condition estimate of the RK moment matrix over the cell's points (1
+  /// for the families without one).
   double min_moment_rcond(int c) const { return rcond_[c]; }
-  /// Smallest value of the cell's vertex weight functions over its quadrature points (> 0).
+  /// Smallest value of the cell's RK vertex weight functions over its quadrature points (> 0;
+  /// 1 for the families without them).
   double min_weight(int c) const { return min_weight_[c]; }
   /// Below this reciprocal condition estimate a moment matrix counts as singular.
   static constexpr double kMinMomentRcond = 1e-14;
@@ -77,13 +91,24 @@ class ElementTable {
   /// to the bit.
   void release_weights();
   void restore_weights();
+  /// Whether restore_weights() has anything to compute (RK weights released).
+  bool weights_released() const { return !weights_ && options_.family == ElementFamily::rk; }
 
  private:
   void build_cell(int c);
+  RkCellFrame cell_frame(int c) const;
+  /// psi_k and grad psi_k of the family at a point strictly inside cell c (fan point `at`, or
+  /// quadrature point q with its weight-function values); the RK moment matrix's reciprocal
+  /// condition estimate, or 1.
+  double shape_functions(int c, std::span<const Eigen::Vector2d> nodes,
+                         std::span<const Eigen::Vector3d> node_basis, const FanPoint& at,
+                         const Point& x, double* psi, Eigen::Vector2d* grad,
+                         double* min_weight) const;
 
   const PolygonMesh& mesh_;
   ElementOptions options_;
   std::unique_ptr<WeightFunctions> weights_;
+  std::vector<Point> centroids_;
   std::vector<int> point_offsets_;
   std::vector<std::size_t> value_offsets_;
   std::vector<Point> points_;

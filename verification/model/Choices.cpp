@@ -85,6 +85,15 @@ amg-cg   conjugate gradients preconditioned by hypre's BoomerAMG
   return choices;
 }
 
+const Choices& element_choices() {
+  static const Choices choices = table(R"(
+rk          reproducing kernel shape functions on vertex-patch weight functions
+wachspress  Wachspress's rational barycentric coordinates (strictly convex cells only)
+mean-value  Floater's mean value barycentric coordinates (any star-shaped cell)
+)");
+  return choices;
+}
+
 const Choices& plane_choices() {
   static const Choices choices = table(R"(
 stress  plane stress
@@ -172,6 +181,8 @@ constexpr FillOrdering kOrderings[] = {FillOrdering::node_metis, FillOrdering::n
                                        FillOrdering::amd, FillOrdering::cholmod_default};
 constexpr LinearSolverKind kSolvers[] = {LinearSolverKind::automatic, LinearSolverKind::cholmod,
                                          LinearSolverKind::amg_cg};
+constexpr ElementFamily kElements[] = {ElementFamily::rk, ElementFamily::wachspress,
+                                       ElementFamily::mean_value};
 constexpr PlaneModel kPlanes[] = {PlaneModel::stress, PlaneModel::strain};
 constexpr PenaltyScaling kPenalties[] = {PenaltyScaling::h_avg, PenaltyScaling::local_h,
                                          PenaltyScaling::fixed_h, PenaltyScaling::coercive};
@@ -205,6 +216,12 @@ LinearSolverKind parse_solver(const std::string& name) {
 }
 std::string solver_name(LinearSolverKind kind) {
   return enum_name(solver_choices(), kSolvers, kind);
+}
+ElementFamily parse_element(const std::string& name) {
+  return parse_enum(element_choices(), kElements, name);
+}
+std::string element_name(ElementFamily family) {
+  return enum_name(element_choices(), kElements, family);
 }
 PlaneModel parse_plane(const std::string& name) {
   return parse_enum(plane_choices(), kPlanes, name);

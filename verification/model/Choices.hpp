@@ -1,10 +1,12 @@
 #pragma once
-// The names vorodg knows — problems, formulations, mesh families, orderings, solvers, plane models
-// and study kinds — each with a one-line doc. The command line, the scene reader, their messages,
+// The names vorodg knows — problems, formulations, mesh families, element families, orderings,
+// solvers, plane models and study kinds — each with a one-line doc. The command line, the scene
+// reader, their messages,
 // `--help` and docs/scenes.md all take the names from here.
 #include <string>
 #include <vector>
 
+#include "core/element/ElementFamily.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/solve/LinearSolverChoice.hpp"
 #include "dg/InterfacePenalty.hpp"
@@ -22,6 +24,7 @@ const Choices& formulation_choices();
 const Choices& generated_family_choices();  // the families a scene or `--family` can generate
 const Choices& ordering_choices();
 const Choices& solver_choices();
+const Choices& element_choices();  // the element families
 const Choices& plane_choices();
 const Choices& penalty_choices();   // how the DG penalty is scaled
 const Choices& traction_choices();  // which stress of a cell the DG interface terms take
@@ -39,6 +42,8 @@ FillOrdering parse_ordering(const std::string& name);
 std::string ordering_name(FillOrdering ordering);
 LinearSolverKind parse_solver(const std::string& name);
 std::string solver_name(LinearSolverKind kind);
+ElementFamily parse_element(const std::string& name);
+std::string element_name(ElementFamily family);
 PlaneModel parse_plane(const std::string& name);
 std::string plane_name(PlaneModel plane);
 PenaltyScaling parse_penalty(const std::string& name);

@@ -128,6 +128,10 @@ std::vector<SettingSpec> make_specs() {
              [](S& s) -> double& { return s.load; }),
       flag("mean_dilation", "--mean-dilation", "mean-dilation (B-bar) strain operator",
            Scope::formulation, [](S& s) -> bool& { return s.mean_dilation; }),
+      choice(
+          "element", "--element", "the element: its shape functions", Scope::formulation,
+          element_choices(), [](const S& s) { return element_name(s.element.family); },
+          [](S& s, const std::string& v) { s.element.family = parse_element(v); }),
       flag(
           "correction", "--no-correction", "divergence-consistency correction (the flag skips it)",
           Scope::formulation, [](S& s) -> bool& { return s.element.divergence_correction; }, true),

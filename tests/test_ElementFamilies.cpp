@@ -4,7 +4,9 @@
 //    the raw Voronoi mesh (regularization 0), whose cells are convex.
 // 2. Wachspress refuses a regularized rcp mesh's non-convex cell with one message naming the
 //    cell and the vertex; mean value takes the same mesh and passes the patch test.
-// 3. The families give different solutions (the knob is live) but all within a few percent on
+// 3. A scene's formulations take the element key, and the element names the formulation's
+//    default label (two cg formulations of different elements are two runs).
+// 4. The families give different solutions (the knob is live) but all within a few percent on
 //    the beam, and the table of a barycentric family has no weight functions to release.
 #include <gtest/gtest.h>
 
@@ -13,6 +15,7 @@
 #include "core/util/Errors.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "verification/SolveRun.hpp"
+#include "verification/study/Scene.hpp"
 
 namespace vorodg {
 namespace {
@@ -86,6 +89,26 @@ TEST(ElementFamilies, WachspressRefusesANonConvexCellMeanValueTakesIt) {
   s.element.family = ElementFamily::mean_value;
   const SolveResult r = run_solve(mesh, s);
   EXPECT_LT(r.l2_error, 1e-10);
+}
+
+TEST(ElementFamilies, SceneFormulationsTakeTheElement) {
+  const Scene scene = parse_scene(R"({"name": "e", "study": "convergence", "problems": ["beam"],
+    "domain": [0, -0.5, 4, 0.5],
+    "meshes": [{"family": "hex", "sizes": [0.2]}],
+    "formulations": [{"name": "cg"}, {"name": "cg", "element": "mean-value"},
+                     {"name": "dg-nitsche", "element": "wachspress"}]})",
+                                  "inline");
+  ASSERT_EQ(scene.formulations.size(), 3u);
+  EXPECT_EQ(scene.formulations[0].label, "cg");
+  EXPECT_EQ(scene.formulations[0].settings.element.family, ElementFamily::rk);
+  EXPECT_EQ(scene.formulations[1].label, "cg mean-value");
+  EXPECT_EQ(scene.formulations[1].settings.element.family, ElementFamily::mean_value);
+  EXPECT_EQ(scene.formulations[2].label, "dg-nitsche wachspress");
+  EXPECT_THROW(parse_scene(R"({"name": "e", "study": "convergence", "problems": ["beam"],
+    "domain": [0, -0.5, 4, 0.5], "meshes": [{"family": "hex", "sizes": [0.2]}],
+    "formulations": [{"name": "cg", "element": "vem2"}]})",
+                           "inline"),
+               InputError);
 }
 
 TEST(ElementFamilies, DifferentButCloseOnTheBeam) {

@@ -176,6 +176,8 @@ void read_scope(SceneObject& object, SettingScope scope, SolveSettings& s) {
 
 std::string default_label(const SolveSettings& s) {
   std::string label = s.formulation;
+  if (s.element.family != SolveSettings{}.element.family)
+    label.append(" ").append(element_name(s.element.family));
   if (!s.element.divergence_correction) label += " no-correction";
   if (s.mean_dilation) label += " mean-dilation";
   if (s.element.rule_points != SolveSettings{}.element.rule_points)

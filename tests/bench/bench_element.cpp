@@ -4,6 +4,9 @@
 //   BM_ElementTable/N/refinement/degree      weights + quadrature + shape functions + correction
 //   BM_ElementTableThreads/N/threads         the default setting on 1 and 2 threads
 //   BM_CellStiffness/N                       the shared cell-stiffness kernel over all cells
+//   BM_ElementFamily/N/family                the element table of each element family
+//                                            (0 rk, 1 wachspress, 2 mean-value) on the raw
+//                                            Voronoi mesh (regularization 0: convex cells)
 // Target at the default setting: >= 100k cells/s on one core. One thread unless stated.
 #include <benchmark/benchmark.h>
 
@@ -26,6 +29,18 @@ const PolygonMesh& rcp_mesh(int n) {
   auto& slot = cache[n];
   if (!slot) {
     slot = std::make_unique<PolygonMesh>(generate_mesh(bench::rcp_spec(n)).mesh);
+  }
+  return *slot;
+}
+
+/// The same, unregularized: every cell convex, as Wachspress coordinates need.
+const PolygonMesh& raw_rcp_mesh(int n) {
+  static std::map<int, std::unique_ptr<PolygonMesh>> cache;
+  auto& slot = cache[n];
+  if (!slot) {
+    MeshSpec spec = bench::rcp_spec(n);
+    spec.regularization = 0.0;
+    slot = std::make_unique<PolygonMesh>(generate_mesh(spec).mesh);
   }
   return *slot;
 }
@@ -65,6 +80,19 @@ void BM_ElementTableThreads(benchmark::State& state) {
   const ElementOptions defaults;
   auto o = options_for(defaults.weights.refinement, defaults.weights.degree,
                        static_cast<int>(state.range(1)));
+  for (auto _ : state) {
+    ElementTable table(mesh, o);
+    benchmark::DoNotOptimize(table.shape(0, 0, 0));
+  }
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+}
+
+void BM_ElementFamily(benchmark::State& state) {
+  const PolygonMesh& mesh = raw_rcp_mesh(static_cast<int>(state.range(0)));
+  ElementOptions o;
+  constexpr ElementFamily kFamilies[] = {ElementFamily::rk, ElementFamily::wachspress,
+                                         ElementFamily::mean_value};
+  o.family = kFamilies[state.range(1)];
   for (auto _ : state) {
     ElementTable table(mesh, o);
     benchmark::DoNotOptimize(table.shape(0, 0, 0));
@@ -115,6 +143,11 @@ BENCHMARK(BM_ElementTable)
 BENCHMARK(BM_ElementTableThreads)
     ->Args({100000, 1})
     ->Args({100000, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ElementFamily)
+    ->ArgNames({"cells", "family"})
+    ->ArgsProduct({{100000}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_CellStiffness)->Args({100000, 0})->Args({100000, 1})->Unit(benchmark::kMillisecond);

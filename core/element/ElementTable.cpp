@@ -47,7 +47,7 @@ void check_convex(const PolygonMesh& mesh) {
     const auto pts = mesh.cell_points(c);
     const int k = first_non_convex_corner(pts);
     if (k >= 0)
-      throw InputError("cell " + std::to_string(c) + " is not strictly convex at its vertex " +
+      throw InputError("cell " + std::to_string(c) + " " + kNotConvexCell + " " +
                        std::to_string(mesh.cell_vertices(c)[k]) +
                        " (element wachspress needs convex cells; mean-value takes any "
                        "star-shaped cell)");

@@ -16,6 +16,10 @@
 
 namespace vorodg {
 
+/// The words of the one-line refusal of a non-convex cell by the Wachspress element, which a
+/// report can look for to tell a refusal from a breakdown.
+inline constexpr const char* kNotConvexCell = "is not strictly convex at its vertex";
+
 struct ElementOptions {
   ElementFamily family = ElementFamily::rk;  // the shape functions (rk: the weights below)
   int rule_points = 3;                       // per fan triangle: 1, 3 or 6

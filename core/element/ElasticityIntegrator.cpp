@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/element/VirtualElement.hpp"
+
 namespace vorodg {
 
 ElasticityIntegrator::ElasticityIntegrator(const ElementTable& table,
@@ -45,6 +47,24 @@ void ElasticityIntegrator::cell_matrix(int c, Eigen::MatrixXd& K) const {
     strain_operator(c, q, B);
     K.noalias() += table_.weight(c, q) * (B.transpose() * D * B);
   }
+  if (table_.options().family == ElementFamily::vem) add_vem_stabilization(c, K);
+}
+
+/// The virtual element's stabilization, tau trace(K) / (2n) (I - P)^T (I - P) on each
+/// displacement component: the usual dofi-dofi form, scaled by the consistency part so that it
+/// has the stiffness's units and size whatever the material and the cell.
+void ElasticityIntegrator::add_vem_stabilization(int c, Eigen::MatrixXd& K) const {
+  const PolygonMesh& mesh = table_.mesh();
+  const auto loop = mesh.cell_vertices(c);
+  const int n = static_cast<int>(loop.size());
+  Eigen::Vector2d nodes[64];
+  for (int k = 0; k < n; ++k) nodes[k] = mesh.vertex(loop[k]);
+  const Eigen::MatrixXd pattern =
+      vem_stabilization_pattern({nodes, static_cast<std::size_t>(n)}, mesh.cell_area(c));
+  const double scale = table_.options().vem_stabilization * K.trace() / (2.0 * n);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k)
+      for (int d = 0; d < 2; ++d) K(2 * j + d, 2 * k + d) += scale * pattern(j, k);
 }
 
 ElasticityIntegrator::CellMatrices ElasticityIntegrator::cell_matrices(int first, int last,

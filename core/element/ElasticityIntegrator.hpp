@@ -1,7 +1,8 @@
 #pragma once
 // The cell-stiffness kernel CG and DG share: K_c = sum_q w_q B_q^T D B_q over the element
 // table's quadrature points, with the standard strain operator or the mean-dilation (B-bar) one
-// whose volumetric part is the cell mean (report section 3, Figure 8).
+// whose volumetric part is the cell mean (report section 3, Figure 8); for the virtual element,
+// plus its stabilization.
 // Cell DOFs are ordered (u_x, u_y) per cell vertex, in the cell's loop order.
 #include <Eigen/Core>
 #include <vector>
@@ -60,6 +61,8 @@ class ElasticityIntegrator {
   MeanStrainOperators all_mean_strain_operators(int threads) const;
 
  private:
+  void add_vem_stabilization(int c, Eigen::MatrixXd& K) const;
+
   const ElementTable& table_;
   IsotropicElasticity material_;
   bool mean_dilation_;

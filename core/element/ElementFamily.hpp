@@ -8,6 +8,7 @@ enum class ElementFamily {
   rk,          // reproducing kernel with vertex-patch weight functions (the default)
   wachspress,  // Wachspress's rational coordinates: strictly convex cells only
   mean_value,  // Floater's mean value coordinates: any star-shaped cell
+  vem,         // lowest-order virtual element: the projection onto linears plus a stabilization
 };
 
 }  // namespace vorodg

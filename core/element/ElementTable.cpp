@@ -4,10 +4,12 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/element/BarycentricCoordinates.hpp"
 #include "core/element/RkShapeFunctions.hpp"
+#include "core/element/VirtualElement.hpp"
 #include "core/geometry/Polygon.hpp"
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
@@ -135,6 +137,8 @@ void ElementTable::build_cell(int c) {
   const auto nodes = cell_nodes(mesh_, c, node_storage);
   Eigen::Vector3d node_basis[kMaxNodes];
   if (options_.family == ElementFamily::rk) rk_node_basis(cell_frame(c), nodes, node_basis);
+  std::optional<VemProjection> vem;
+  if (options_.family == ElementFamily::vem) vem.emplace(nodes, mesh_.cell_area(c));
   const TriangleRule& rule = triangle_rule(options_.rule_points);
   double min_rcond = std::numeric_limits<double>::infinity();
   double min_weight = std::numeric_limits<double>::infinity();
@@ -149,13 +153,17 @@ void ElementTable::build_cell(int c) {
       points_[at] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
       weights_q_[at] = rule.weights[r] * fan_area;
       const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
+      if (vem) {  // one projection per cell, not per point
+        vem->basis(points_[at], &shape_[v], &grad_[v]);
+        continue;
+      }
       const double rc =
           shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, fan_points_[at],
                           points_[at], &shape_[v], &grad_[v], &min_weight);
       min_rcond = std::min(min_rcond, std::isfinite(rc) ? rc : 0.0);
     }
   }
-  rcond_[c] = min_rcond;
+  rcond_[c] = std::min(min_rcond, 1.0);  // 1 for the families without a moment matrix
   min_weight_[c] = options_.family == ElementFamily::rk ? min_weight : 1.0;
 
   // Discrete divergence identity (Eq. 16): sum_q w_q dpsi_k/dx_i must equal the boundary
@@ -190,6 +198,10 @@ double ElementTable::shape_functions(int c, std::span<const Eigen::Vector2d> nod
                                      const FanPoint& at, const Point& x, double* psi,
                                      Eigen::Vector2d* grad, double* min_weight) const {
   const int n = static_cast<int>(nodes.size());
+  if (options_.family == ElementFamily::vem) {  // the projection: what a virtual element knows
+    VemProjection(nodes, mesh_.cell_area(c)).basis(x, psi, grad);
+    return 1.0;
+  }
   if (options_.family != ElementFamily::rk) {
     barycentric_coordinates(barycentric_kind(options_.family), nodes, x, psi, grad);
     for (int k = 0; k < n; ++k)

@@ -22,8 +22,10 @@ inline constexpr const char* kNotConvexCell = "is not strictly convex at its ver
 
 struct ElementOptions {
   ElementFamily family = ElementFamily::rk;  // the shape functions (rk: the weights below)
-  int rule_points = 3;                       // per fan triangle: 1, 3 or 6
-  bool divergence_correction = true;         // enforce the discrete divergence identity (Eq. 16)
+  /// vem: the stabilization's scale tau, times trace(K_consistency) / (2n) (VirtualElement.hpp)
+  double vem_stabilization = 1.0;
+  int rule_points = 3;                // per fan triangle: 1, 3 or 6
+  bool divergence_correction = true;  // enforce the discrete divergence identity (Eq. 16)
   WeightFunctionOptions weights;
   int threads = 1;  // setup threads; results do not depend on it
   bool operator==(const ElementOptions&) const = default;

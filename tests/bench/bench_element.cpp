@@ -5,7 +5,7 @@
 //   BM_ElementTableThreads/N/threads         the default setting on 1 and 2 threads
 //   BM_CellStiffness/N                       the shared cell-stiffness kernel over all cells
 //   BM_ElementFamily/N/family                the element table of each element family
-//                                            (0 rk, 1 wachspress, 2 mean-value) on the raw
+//                                            (0 rk, 1 wachspress, 2 mean-value, 3 vem) on the raw
 //                                            Voronoi mesh (regularization 0: convex cells)
 // Target at the default setting: >= 100k cells/s on one core. One thread unless stated.
 #include <benchmark/benchmark.h>
@@ -91,7 +91,7 @@ void BM_ElementFamily(benchmark::State& state) {
   const PolygonMesh& mesh = raw_rcp_mesh(static_cast<int>(state.range(0)));
   ElementOptions o;
   constexpr ElementFamily kFamilies[] = {ElementFamily::rk, ElementFamily::wachspress,
-                                         ElementFamily::mean_value};
+                                         ElementFamily::mean_value, ElementFamily::vem};
   o.family = kFamilies[state.range(1)];
   for (auto _ : state) {
     ElementTable table(mesh, o);
@@ -147,7 +147,7 @@ BENCHMARK(BM_ElementTableThreads)
     ->UseRealTime();
 BENCHMARK(BM_ElementFamily)
     ->ArgNames({"cells", "family"})
-    ->ArgsProduct({{100000}, {0, 1, 2}})
+    ->ArgsProduct({{100000}, {0, 1, 2, 3}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_CellStiffness)->Args({100000, 0})->Args({100000, 1})->Unit(benchmark::kMillisecond);

@@ -90,6 +90,7 @@ const Choices& element_choices() {
 rk          reproducing kernel shape functions on vertex-patch weight functions
 wachspress  Wachspress's rational barycentric coordinates (strictly convex cells only)
 mean-value  Floater's mean value barycentric coordinates (any star-shaped cell)
+vem         first-order virtual element: projection onto linears plus a scaled stabilization
 )");
   return choices;
 }
@@ -182,7 +183,7 @@ constexpr FillOrdering kOrderings[] = {FillOrdering::node_metis, FillOrdering::n
 constexpr LinearSolverKind kSolvers[] = {LinearSolverKind::automatic, LinearSolverKind::cholmod,
                                          LinearSolverKind::amg_cg};
 constexpr ElementFamily kElements[] = {ElementFamily::rk, ElementFamily::wachspress,
-                                       ElementFamily::mean_value};
+                                       ElementFamily::mean_value, ElementFamily::vem};
 constexpr PlaneModel kPlanes[] = {PlaneModel::stress, PlaneModel::strain};
 constexpr PenaltyScaling kPenalties[] = {PenaltyScaling::h_avg, PenaltyScaling::local_h,
                                          PenaltyScaling::fixed_h, PenaltyScaling::coercive};

@@ -132,6 +132,10 @@ std::vector<SettingSpec> make_specs() {
           "element", "--element", "the element: its shape functions", Scope::formulation,
           element_choices(), [](const S& s) { return element_name(s.element.family); },
           [](S& s, const std::string& v) { s.element.family = parse_element(v); }),
+      number("vem_stabilization", "--vem-stabilization", "vem_stabilization",
+             "vem: the stabilization's scale tau, times trace(K_consistency) / (2n)",
+             Scope::formulation, above(0),
+             [](S& s) -> double& { return s.element.vem_stabilization; }),
       flag(
           "correction", "--no-correction", "divergence-consistency correction (the flag skips it)",
           Scope::formulation, [](S& s) -> bool& { return s.element.divergence_correction; }, true),

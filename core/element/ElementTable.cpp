@@ -86,8 +86,9 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
   value_offsets_.assign(nc + 1, 0);
   for (int c = 0; c < nc; ++c) {
     const int n = mesh.cell_size(c);
-    point_offsets_[c + 1] = point_offsets_[c] + n * q_per_fan;
-    value_offsets_[c + 1] = value_offsets_[c] + static_cast<std::size_t>(n) * n * q_per_fan;
+    const int points = points_per_cell(n, q_per_fan);
+    point_offsets_[c + 1] = point_offsets_[c] + points;
+    value_offsets_[c + 1] = value_offsets_[c] + static_cast<std::size_t>(n) * points;
   }
   points_.resize(point_offsets_.back());
   weights_q_.resize(point_offsets_.back());
@@ -137,8 +138,10 @@ void ElementTable::build_cell(int c) {
   const auto nodes = cell_nodes(mesh_, c, node_storage);
   Eigen::Vector3d node_basis[kMaxNodes];
   if (options_.family == ElementFamily::rk) rk_node_basis(cell_frame(c), nodes, node_basis);
-  std::optional<VemProjection> vem;
-  if (options_.family == ElementFamily::vem) vem.emplace(nodes, mesh_.cell_area(c));
+  if (options_.family == ElementFamily::vem) {
+    build_virtual_element_cell(c, nodes);
+    return;
+  }
   const TriangleRule& rule = triangle_rule(options_.rule_points);
   double min_rcond = std::numeric_limits<double>::infinity();
   double min_weight = std::numeric_limits<double>::infinity();
@@ -153,10 +156,6 @@ void ElementTable::build_cell(int c) {
       points_[at] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
       weights_q_[at] = rule.weights[r] * fan_area;
       const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
-      if (vem) {  // one projection per cell, not per point
-        vem->basis(points_[at], &shape_[v], &grad_[v]);
-        continue;
-      }
       const double rc =
           shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, fan_points_[at],
                           points_[at], &shape_[v], &grad_[v], &min_weight);
@@ -165,7 +164,26 @@ void ElementTable::build_cell(int c) {
   }
   rcond_[c] = std::min(min_rcond, 1.0);  // 1 for the families without a moment matrix
   min_weight_[c] = options_.family == ElementFamily::rk ? min_weight : 1.0;
+  close_divergence_gap(c, nodes);
+}
 
+/// The virtual element's one point, the centroid with the cell's area: its projected strain is
+/// constant, so one point integrates the consistency stiffness exactly, and its load is the
+/// usual first-order one (the projected basis times the load at the centroid).
+void ElementTable::build_virtual_element_cell(int c, std::span<const Eigen::Vector2d> nodes) {
+  const std::size_t at = point_offsets_[c];
+  fan_points_[at] = {0, Eigen::Vector3d(1.0, 0.0, 0.0)};
+  points_[at] = centroids_[c];
+  weights_q_[at] = mesh_.cell_area(c);
+  VemProjection(nodes, mesh_.cell_area(c))
+      .basis(points_[at], &shape_[value_offsets_[c]], &grad_[value_offsets_[c]]);
+  rcond_[c] = 1.0;
+  min_weight_[c] = 1.0;
+  close_divergence_gap(c, nodes);
+}
+
+void ElementTable::close_divergence_gap(int c, std::span<const Eigen::Vector2d> nodes) {
+  const int n = static_cast<int>(nodes.size());
   // Discrete divergence identity (Eq. 16): sum_q w_q dpsi_k/dx_i must equal the boundary
   // integral of psi_k n_i, which for edge-linear psi_k is half the sum of (length x normal) of
   // the two cell edges at vertex k: 0.5 (y_k+1 - y_k-1, x_k-1 - x_k+1).
@@ -187,6 +205,10 @@ void ElementTable::build_cell(int c) {
       grad_[value_offsets_[c] + static_cast<std::size_t>(j) * n + k] += weight(c, j) * gap / sum_w2;
   }
   defect_[c] = defect;
+}
+
+int ElementTable::points_per_cell(int n, int per_fan) const {
+  return options_.family == ElementFamily::vem ? 1 : n * per_fan;
 }
 
 RkCellFrame ElementTable::cell_frame(int c) const {

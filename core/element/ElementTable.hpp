@@ -24,7 +24,7 @@ struct ElementOptions {
   ElementFamily family = ElementFamily::rk;  // the shape functions (rk: the weights below)
   /// vem: the stabilization's scale tau, times trace(K_consistency) / (2n) (VirtualElement.hpp)
   double vem_stabilization = 1.0;
-  int rule_points = 3;                // per fan triangle: 1, 3 or 6
+  int rule_points = 3;  // per fan triangle: 1, 3 or 6 (vem: one point per cell, see there)
   bool divergence_correction = true;  // enforce the discrete divergence identity (Eq. 16)
   WeightFunctionOptions weights;
   int threads = 1;  // setup threads; results do not depend on it
@@ -102,6 +102,11 @@ class ElementTable {
 
  private:
   void build_cell(int c);
+  void build_virtual_element_cell(int c, std::span<const Eigen::Vector2d> nodes);
+  /// Eq. 16's gap for each node of cell c, recorded, and closed if the correction is on.
+  void close_divergence_gap(int c, std::span<const Eigen::Vector2d> nodes);
+  /// Quadrature points of an n-gon: the fan rule's per fan triangle, or one (vem).
+  int points_per_cell(int n, int per_fan) const;
   RkCellFrame cell_frame(int c) const;
   /// psi_k and grad psi_k of the family at a point strictly inside cell c (fan point `at`, or
   /// quadrature point q with its weight-function values); the RK moment matrix's reciprocal

@@ -5,7 +5,8 @@
 // 2. Wachspress refuses a regularized rcp mesh's non-convex cell with one message naming the
 //    cell and the vertex; mean value takes the same mesh and passes the patch test.
 // 3. A scene's formulations take the element key, and the element names the formulation's
-//    default label (two cg formulations of different elements are two runs).
+//    default label (two cg formulations of different elements are two runs); a fracture scene
+//    takes `element` and `vem_stabilization` at the top and in its variants.
 // 4. The families give different solutions (the knob is live) but of the same accuracy on the
 //    beam, and the table of a barycentric family has no weight functions to release.
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include "core/util/Errors.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "verification/SolveRun.hpp"
+#include "verification/fracture/FractureScene.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
@@ -111,6 +113,30 @@ TEST(ElementFamilies, SceneFormulationsTakeTheElement) {
     "formulations": [{"name": "cg", "element": "vem2"}]})",
                            "inline"),
                InputError);
+}
+
+TEST(ElementFamilies, FractureScenesTakeTheElement) {
+  const FractureScene scene = parse_fracture_scene(R"({"name": "f", "study": "fracture",
+    "element": "vem", "vem_stabilization": 0.5,
+    "meshes": [{"family": "hex", "sizes": [0.05]}],
+    "variants": [{"label": "a"}, {"label": "b", "element": "mean-value"}]})",
+                                                   "inline");
+  EXPECT_EQ(scene.element.family, ElementFamily::vem);
+  EXPECT_EQ(scene.element.vem_stabilization, 0.5);
+  ASSERT_EQ(scene.variants.size(), 2u);
+  EXPECT_EQ(scene.variants[0].element.family, ElementFamily::vem);
+  EXPECT_EQ(scene.variants[1].element.family, ElementFamily::mean_value);
+  for (const char* bad : {R"("element": "fem")", R"("vem_stabilization": 0)"}) {
+    try {
+      parse_fracture_scene(std::string(R"({"name": "f", "study": "fracture", )") + bad +
+                               R"(, "meshes": [{"family": "hex", "sizes": [0.05]}]})",
+                           "inline");
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InputError& e) {
+      const std::string key = std::string(bad).substr(1, std::string(bad).find('"', 1) - 1);
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(ElementFamilies, DifferentButCloseOnTheBeam) {

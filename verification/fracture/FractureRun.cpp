@@ -127,7 +127,7 @@ FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run
   r.cells = mesh.num_cells();
   r.full_dg_dofs = 2 * mesh.offsets().back();
   r.h_avg = mesh.h_avg();
-  const ElementTable table(mesh, ElementOptions{});
+  const ElementTable table(mesh, scene.element);
   const IsotropicElasticity material(scene.E, scene.nu, scene.plane);
   const ElasticityIntegrator integrator(table, material, false);
   FractureSetup setup = fracture_setup(mesh, scene.geometry, scene.mode, scene.thickness);

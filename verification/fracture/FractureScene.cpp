@@ -1,10 +1,12 @@
 #include "verification/fracture/FractureScene.hpp"
 
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "verification/model/Choices.hpp"
 #include "verification/study/SceneObject.hpp"
 
 namespace vorodg {
@@ -102,6 +104,19 @@ void read_cracking_and_loading(SceneObject& top, FractureScene& s) {
   l.finish();
 }
 
+/// The element family of every run (RK unless `element` names another), as in a study scene's
+/// formulations.
+void read_element(SceneObject& top, FractureScene& s) {
+  const std::string name = top.text("element", element_name(s.element.family));
+  try {
+    s.element.family = parse_element(name);
+  } catch (const std::invalid_argument& e) {  // the choices' own "'x': expected ..." message
+    top.fail_value("element", e.what());
+  }
+  s.element.vem_stabilization = top.number("vem_stabilization", s.element.vem_stabilization);
+  if (!(s.element.vem_stabilization > 0.0)) top.fail_value("vem_stabilization", "expected > 0");
+}
+
 FractureScene parse_one(const json& root, const std::string& source) {
   SceneObject top(root, "", source);
   FractureScene s;
@@ -122,6 +137,7 @@ FractureScene parse_one(const json& root, const std::string& source) {
     top.fail_value("domain", e.what());
   }
   s.geometry.notch_depth = top.number("notch_depth", 0.0);
+  read_element(top, s);
   read_material(top, s);
   read_cohesive(top, s);
   read_cracking_and_loading(top, s);

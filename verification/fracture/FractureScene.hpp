@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/element/ElementTable.hpp"
 #include "core/material/CohesiveLaw.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/material/MohrCoulomb.hpp"
@@ -26,6 +27,7 @@ struct FractureScene {
   CohesiveParameters law;           // initial_stiffness set per mesh for pre-inserted faces
   MohrCoulombParameters criterion;  // cohesion, friction, tensile cutoff (default: strength)
   double initial_stiffness = 1e3;   // pre-inserted: K0 = this x E / h_avg
+  ElementOptions element;           // `element`, `vem_stabilization`: the element family
   CrackingMode mode = CrackingMode::restricted;
   bool split_all = false;  // cracking.split_all: the full DG space whatever the mode
   PathOptions loading;

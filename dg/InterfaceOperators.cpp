@@ -78,6 +78,12 @@ std::vector<StressOperator> InterfaceOperators::fan_stresses(int c, int only) co
   std::vector<StressOperator> out;
   StrainOperator B;
   for (int k = first; k < last; ++k) {
+    if (areas[k] == 0.0) {  // no point in this fan (the virtual element's one point per cell):
+      for (int q = 0; q < table_.num_points(c); ++q) {  // its strain is the cell's, constant
+        for (int j = 0; j < n; ++j) mean[k * n + j] += table_.weight(c, q) * table_.grad(c, q, j);
+        areas[k] += table_.weight(c, q);
+      }
+    }
     for (int j = 0; j < n; ++j) mean[k * n + j] /= areas[k];
     integrator_.strain_operator_of(c, &mean[k * n], B);
     out.push_back(integrator_.material().D() * B);

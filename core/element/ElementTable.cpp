@@ -174,8 +174,9 @@ void ElementTable::build_virtual_element_cell(int c, std::span<const Eigen::Vect
   const std::size_t at = point_offsets_[c];
   fan_points_[at] = {0, Eigen::Vector3d(1.0, 0.0, 0.0)};
   points_[at] = centroids_[c];
-  weights_q_[at] = mesh_.cell_area(c);
-  VemProjection(nodes, mesh_.cell_area(c))
+  const double area = mesh_.cell_area(c);
+  weights_q_[at] = area;
+  VemProjection(nodes, area)
       .basis(points_[at], &shape_[value_offsets_[c]], &grad_[value_offsets_[c]]);
   rcond_[c] = 1.0;
   min_weight_[c] = 1.0;
@@ -192,9 +193,8 @@ void ElementTable::close_divergence_gap(int c, std::span<const Eigen::Vector2d> 
   for (int j = 0; j < nq; ++j) sum_w2 += weight(c, j) * weight(c, j);
   double defect = 0.0;
   for (int k = 0; k < n; ++k) {
-    const Point& prev = nodes[(k + n - 1) % n];
-    const Point& next = nodes[(k + 1) % n];
-    const Eigen::Vector2d boundary(0.5 * (next.y() - prev.y()), 0.5 * (prev.x() - next.x()));
+    const Eigen::Vector2d boundary =
+        polygon::vertex_hat_flux(nodes[(k + n - 1) % n], nodes[(k + 1) % n]);
     Eigen::Vector2d volume = Eigen::Vector2d::Zero();
     for (int j = 0; j < nq; ++j) volume += weight(c, j) * grad(c, j, k);
     const Eigen::Vector2d gap = boundary - volume;

@@ -1,18 +1,15 @@
 #include "core/element/VirtualElement.hpp"
 
+#include "core/geometry/Polygon.hpp"
+
 namespace vorodg {
+
 VemProjection::VemProjection(std::span<const Eigen::Vector2d> nodes, double area)
     : n_(static_cast<int>(nodes.size())), mean_(Eigen::Vector2d::Zero()) {
   for (const auto& v : nodes) mean_ += v;
   mean_ /= static_cast<double>(n_);
-  for (int k = 0; k < n_; ++k) {
-    // psi_k is the hat of vertex k on its two edges: each contributes half its length times
-    // its outward normal, (dy, -dx) / 2 of the edge vector.
-    const Eigen::Vector2d& prev = nodes[(k + n_ - 1) % n_];
-    const Eigen::Vector2d& next = nodes[(k + 1) % n_];
-    gradients_[k] =
-        Eigen::Vector2d(0.5 * (next.y() - prev.y()), 0.5 * (prev.x() - next.x())) / area;
-  }
+  for (int k = 0; k < n_; ++k)  // the boundary integral of the hat of vertex k, over the area
+    gradients_[k] = polygon::vertex_hat_flux(nodes[(k + n_ - 1) % n_], nodes[(k + 1) % n_]) / area;
 }
 
 void VemProjection::basis(const Eigen::Vector2d& x, double* psi, Eigen::Vector2d* grad) const {

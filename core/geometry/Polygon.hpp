@@ -16,6 +16,13 @@ inline double orient2(const Point& a, const Point& b, const Point& c) {
 
 /// Signed area (shoelace), positive for counter-clockwise loops. Coordinates are shifted by the
 /// first vertex to keep the sum accurate far from the origin.
+/// int psi_k n ds over a polygon's boundary for the hat function psi_k of a vertex (linear on its
+/// two edges, zero on the others), from its neighbours `prev` and `next` in counter-clockwise
+/// order: half the sum of (length x outward normal) of the two edges.
+inline Eigen::Vector2d vertex_hat_flux(const Point& prev, const Point& next) {
+  return {0.5 * (next.y() - prev.y()), 0.5 * (prev.x() - next.x())};
+}
+
 double signed_area(std::span<const Point> loop);
 /// Area centroid; `area` must be signed_area(loop) and nonzero.
 Point centroid(std::span<const Point> loop, double area);

@@ -13,10 +13,13 @@ def plot_penalty_edges(outdir, dpi):
         return False
     rows = {}
     with open(path, newline="") as f:
-        for r in csv.DictReader(f):
-            key = (r["traction"], f"{r['mesh']} level {r['level']}")
-            rows.setdefault(key, []).append((float(r["edge_length_over_h_avg"]),
-                                             float(r["eps_over_E_per_h_avg"])))
+        records = list(csv.DictReader(f))
+    several = len({r["element"] for r in records}) > 1  # name the element only if it varies
+    for r in records:
+        element = f" {r['element']}" if several else ""
+        key = (r["traction"], f"{r['mesh']}{element} level {r['level']}")
+        rows.setdefault(key, []).append((float(r["edge_length_over_h_avg"]),
+                                         float(r["eps_over_E_per_h_avg"])))
     tractions = sorted({t for t, _ in rows})
     fig, axes = plt.subplots(1, len(tractions), figsize=(5.5 * len(tractions), 4.6),
                              squeeze=False, sharex=True)

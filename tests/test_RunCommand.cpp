@@ -154,6 +154,31 @@ TEST_F(RunCommand, TradeOffStudyWritesItsParetoFront) {
   EXPECT_EQ(slurp(dir_ / "t" / "summary.json").find("seconds"), std::string::npos);
 }
 
+TEST_F(RunCommand, PenaltyAnalysisCoversEveryElementOfTheScene) {
+  std::ofstream(dir_ / "penalty.json") << R"({
+    "study": "penalty-sweep",
+    "meshes": [{"family": "rcp", "sizes": [0.4], "seed": 3}],
+    "formulations": [{"name": "dg-sipg", "kp": [1]},
+                     {"name": "dg-sipg", "kp": [1], "element": "vem", "label": "sipg vem"}]
+  })";
+  const RunResult r = run({"run", (dir_ / "penalty.json").string(), "-o", (dir_ / "p").string(),
+                           "--quiet", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(dir_ / "p" / "penalty_thresholds.csv");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "mesh,level,cells,h_avg,element,traction,auto_median,auto_max,"
+            "smallest_definite_kp");
+  int rk = 0, vem = 0;
+  while (std::getline(in, line)) {
+    rk += line.find(",rk,") != std::string::npos;
+    vem += line.find(",vem,") != std::string::npos;
+  }
+  EXPECT_EQ(rk, 3);  // one row per traction kind
+  EXPECT_EQ(vem, 3);
+}
+
 TEST_F(RunCommand, ListsTheShippedScenes) {
   const RunResult r = run({"run", "--list"});
   ASSERT_EQ(r.exit_code, 0) << r.err;

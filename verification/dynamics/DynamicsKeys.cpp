@@ -3,7 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/element/ElementTable.hpp"
 #include "core/util/Format.hpp"
+#include "verification/model/Choices.hpp"
+#include "verification/model/SettingsSchema.hpp"
 
 namespace vorodg {
 namespace {
@@ -107,6 +110,11 @@ std::vector<DynamicsKey> make_keys() {
               "the seed of the per-cell factors (each cell its own stream)", 0.0, false),
       bounded("damping", "number", "0", ">= 0",
               "mass-proportional damping c, 1/s (the force -c M v)", 0.0, false),
+      key("element", "string", element_name(ElementOptions{}.family),
+          choice_list(element_choices()),
+          "the element: its shape functions (docs/element.md, \"Which element for what\")"),
+      bounded("vem_stabilization", "number", exact_text(ElementOptions{}.vem_stabilization), "> 0",
+              "vem: the stabilization's scale tau, times trace(K_consistency) / (2n)", 0.0, true),
       key("kinematics", "string", "small", "small or corotational",
           "small: linear small strain (a cell turned by theta is drawn and meets contact stretched "
           "by about theta^2 / 2); corotational: small strain in a frame that turns with each "

@@ -185,7 +185,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
   const PolygonMesh& mesh = bodies.mesh;
   r.cells = mesh.num_cells();
   r.h_avg = bodies.h_avg;
-  const ElementTable table(mesh, ElementOptions{});
+  const ElementTable table(mesh, scene.element);
   const LumpedMass mass(table, scene.density);
   const ElasticityIntegrator integrator(table, IsotropicElasticity(scene.E, scene.nu, scene.plane),
                                         scene.mean_dilation);

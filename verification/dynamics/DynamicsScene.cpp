@@ -11,6 +11,7 @@
 #include "core/util/Format.hpp"
 #include "verification/dynamics/DynamicsKeys.hpp"
 #include "verification/dynamics/DynamicsSceneReader.hpp"
+#include "verification/model/Choices.hpp"
 #include "verification/model/SettingsSchema.hpp"
 #include "verification/study/SceneObject.hpp"
 
@@ -89,8 +90,16 @@ void DynamicsSceneReader::read_material() {
   s_.variation = number(m, "material.variation");
   s_.variation_seed = static_cast<std::uint64_t>(integer(m, "material.variation_seed"));
   m.finish();
+  read_element();
   s_.damping = number(top_, "damping");
   s_.corotational = word(top_, "kinematics", " small corotational ") == "corotational";
+}
+
+void DynamicsSceneReader::read_element() {
+  std::string allowed = " ";
+  for (const NamedChoice& c : element_choices()) allowed += c.name + " ";
+  s_.element.family = parse_element(word(top_, "element", allowed));
+  s_.element.vem_stabilization = number(top_, "vem_stabilization");
 }
 
 void DynamicsSceneReader::read_wave_bar() {

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/element/ElementTable.hpp"
 #include "core/geometry/Rectangle.hpp"
 #include "core/material/CohesiveLaw.hpp"
 #include "core/material/IsotropicElasticity.hpp"
@@ -72,6 +73,7 @@ struct DynamicsScene {
   double E = 0.0, nu = 0.0, density = 0.0;
   PlaneModel plane = PlaneModel::stress;
   bool mean_dilation = false;
+  ElementOptions element;            // `element`, `vem_stabilization`: the element family
   bool corotational = false;         // kinematics: small strain in turning cell frames
   double variation = 0.0;            // per-cell factors on E and strength in [1 - x, 1 + x]
   std::uint64_t variation_seed = 1;  // their stream (MaterialVariation)

@@ -48,6 +48,8 @@ class DynamicsSceneReader {
 
   void read_bodies();
   void read_material();
+  /// `element` and `vem_stabilization`: the element family of every run.
+  void read_element();
   void read_wave_bar();
   void read_wall();
   void read_contact();

@@ -14,6 +14,7 @@
 #include "verification/SolveRun.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/report/ConvergenceTable.hpp"
+#include "verification/report/SampleStatistics.hpp"
 
 namespace vorodg {
 namespace {
@@ -64,9 +65,13 @@ double smallest_definite_kp(const ElementTable& table, const ElasticityIntegrato
   return std::pow(10.0, hi);
 }
 
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
+/// The distinct elements of the scene's formulations, in formulation order: each is analysed.
+std::vector<ElementOptions> scene_elements(const Scene& scene) {
+  std::vector<ElementOptions> elements;
+  for (const SceneFormulation& f : scene.formulations)
+    if (std::find(elements.begin(), elements.end(), f.settings.element) == elements.end())
+      elements.push_back(f.settings.element);
+  return elements;
 }
 
 }  // namespace
@@ -74,8 +79,9 @@ double median(std::vector<double> v) {
 void write_penalty_analysis(const Scene& scene, const std::filesystem::path& out,
                             std::ostringstream& md) {
   std::ostringstream edges, thresholds;
-  edges << "mesh,level,h_avg,traction,edge_length_over_h_avg,eps_over_E_per_h_avg\n";
-  thresholds << "mesh,level,cells,h_avg,traction,auto_median,auto_max,smallest_definite_kp\n";
+  edges << "mesh,level,h_avg,element,traction,edge_length_over_h_avg,eps_over_E_per_h_avg\n";
+  thresholds
+      << "mesh,level,cells,h_avg,element,traction,auto_median,auto_max,smallest_definite_kp\n";
   ConvergenceTable table;
   const ConvergenceTable::Style sci{3, true}, count{6, false};
   SolveSettings settings;
@@ -89,37 +95,41 @@ void write_penalty_analysis(const Scene& scene, const std::filesystem::path& out
       const std::uint64_t seed = derive_seed(derive_seed(sm.seed, level), 0);
       const GeneratedMesh mesh = generate_mesh(sm.spec(scene.domain, level, seed));
       const auto problem = make_problem(settings, mesh.mesh.domain());
-      const ElementTable element(mesh.mesh, ElementOptions{});
-      const ElasticityIntegrator integrator(element, problem->material(), false);
       const DgSpace space(mesh.mesh);
-      const InterfaceOperators ops(space, integrator, element);
-      const auto stiffness = integrator.all_cell_matrices(1);
       const double h = mesh.mesh.h_avg();
-      for (TractionKind kind : kKinds) {
-        const InterfacePenalty penalty(ops, integrator, stiffness, PenaltyScaling::coercive, 1.0,
-                                       false, kind, 1);
-        const std::vector<double> eps = penalty.relative_to_h_avg();
-        if (kind != TractionKind::mean)
-          for (std::size_t i = 0; i < eps.size(); ++i)
-            edges << sm.label << ',' << level << ',' << fmt(h, 6) << ',' << traction_name(kind)
-                  << ',' << fmt(space.interfaces()[i].length / h, 6) << ',' << fmt(eps[i], 6)
-                  << '\n';
-        const double threshold = smallest_definite_kp(element, integrator, *problem, kind);
-        const double largest = *std::max_element(eps.begin(), eps.end());
-        thresholds << sm.label << ',' << level << ',' << mesh.mesh.num_cells() << ',' << fmt(h, 6)
-                   << ',' << traction_name(kind) << ',' << fmt(median(eps), 6) << ','
-                   << fmt(largest, 6) << ',' << fmt(threshold, 6) << '\n';
-        table.start_row();
-        table.add_text("mesh", sm.label);
-        table.add_value("level", level, std::nullopt, count);
-        table.add_value("cells", mesh.mesh.num_cells(), std::nullopt, count);
-        table.add_text("traction", traction_name(kind));
-        table.add_value("auto eps h/E median", median(eps), std::nullopt, sci);
-        table.add_value("auto eps h/E max", largest, std::nullopt, sci);
-        if (std::isfinite(threshold))
-          table.add_value("smallest definite k_p", threshold, std::nullopt, sci);
-        else
-          table.add_text("smallest definite k_p", "> " + fmt(kMaxKp));
+      for (const ElementOptions& options : scene_elements(scene)) {
+        const ElementTable element(mesh.mesh, options);
+        const std::string name = element_name(options.family);
+        const ElasticityIntegrator integrator(element, problem->material(), false);
+        const InterfaceOperators ops(space, integrator, element);
+        const auto stiffness = integrator.all_cell_matrices(1);
+        for (TractionKind kind : kKinds) {
+          const InterfacePenalty penalty(ops, integrator, stiffness, PenaltyScaling::coercive, 1.0,
+                                         false, kind, 1);
+          const std::vector<double> eps = penalty.relative_to_h_avg();
+          if (kind != TractionKind::mean)
+            for (std::size_t i = 0; i < eps.size(); ++i)
+              edges << sm.label << ',' << level << ',' << fmt(h, 6) << ',' << name << ','
+                    << traction_name(kind) << ',' << fmt(space.interfaces()[i].length / h, 6) << ','
+                    << fmt(eps[i], 6) << '\n';
+          const double threshold = smallest_definite_kp(element, integrator, *problem, kind);
+          const SampleStatistics spread = sample_statistics(eps);
+          thresholds << sm.label << ',' << level << ',' << mesh.mesh.num_cells() << ',' << fmt(h, 6)
+                     << ',' << name << ',' << traction_name(kind) << ',' << fmt(spread.median, 6)
+                     << ',' << fmt(spread.max, 6) << ',' << fmt(threshold, 6) << '\n';
+          table.start_row();
+          table.add_text("mesh", sm.label);
+          table.add_value("level", level, std::nullopt, count);
+          table.add_value("cells", mesh.mesh.num_cells(), std::nullopt, count);
+          table.add_text("element", name);
+          table.add_text("traction", traction_name(kind));
+          table.add_value("auto eps h/E median", spread.median, std::nullopt, sci);
+          table.add_value("auto eps h/E max", spread.max, std::nullopt, sci);
+          if (std::isfinite(threshold))
+            table.add_value("smallest definite k_p", threshold, std::nullopt, sci);
+          else
+            table.add_text("smallest definite k_p", "> " + fmt(kMaxKp));
+        }
       }
     }
   write_file_atomically(out / "penalty_edges.csv", edges.str());

@@ -291,6 +291,25 @@ TEST_F(RawVoronoi, ZeroRegularizationKeepsTheRawMeshAndEveryCellValid) {
   EXPECT_GE(hist.begin()->first, 3) << histogram_text(hist);
 }
 
+TEST(RawVoronoiDegenerate, NearlyCoCircularSeedsGiveOneVertexNotTwo) {
+  // A realization of the element-families scene's finest level: four nearly co-circular seeds
+  // put two Voronoi vertices 1e-11 to 4e-8 apart, beyond the tessellator's merge (1e-9 of the
+  // spacing) but within the validator's duplicate tolerance (1e-8 of the domain). Without
+  // regularization nothing collapsed them and the mesh was refused.
+  MeshSpec s;
+  s.family = MeshFamily::rcp;
+  s.domain = Rectangle(0, -0.5, 4, 0.5);
+  s.size = 0.00884;
+  s.seed = 13862979639231256105ull;
+  s.regularization = 0.0;
+  const GeneratedMesh g = generate_mesh(s);
+  EXPECT_GE(g.report.merged_vertices, 1);
+  EXPECT_EQ(g.mesh.num_cells(), g.report.seeds);
+  const auto report = validate_mesh(g.mesh);
+  EXPECT_TRUE(report.ok()) << first_defects(report);
+  EXPECT_LT(std::abs(g.mesh.total_area() - 4.0) / 4.0, 1e-12);
+}
+
 TEST(RcpSpec, RejectsBadDistance) {
   MeshSpec s = rcp_spec();
   for (double d : {0.0, -0.01, 5.0, std::numeric_limits<double>::quiet_NaN()}) {

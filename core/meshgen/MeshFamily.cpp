@@ -5,6 +5,8 @@
 
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshStatistics.hpp"
+#include "core/mesh/MeshValidator.hpp"
+#include "core/meshgen/MeshCompaction.hpp"
 #include "core/meshgen/MeshRegularizer.hpp"
 #include "core/meshgen/PoissonDiskSampler.hpp"
 #include "core/meshgen/StructuredMeshes.hpp"
@@ -164,6 +166,10 @@ GeneratedMesh generate_rcp(const MeshSpec& spec) {
 
   clock.restart();
   auto regular = regularize_mesh(raw, spec.regularization * spec.size);
+  if (spec.regularization == 0.0)  // no collapses: merge what the validator calls one vertex
+    regular.mesh = merge_coincident_vertices(
+        regular.mesh, MeshValidationOptions{}.relative_tolerance * spec.domain.scale(),
+        out.report.merged_vertices);
   out.report.seconds["regularization"] = clock.seconds();
   out.report.collapsed_edges = regular.collapsed_edges;
   out.report.refused_collapses = regular.refused_collapses;

@@ -61,6 +61,7 @@ struct MeshGenReport {
   int collapsed_edges = 0;
   int refused_collapses = 0;
   int merged_cells = 0;
+  int merged_vertices = 0;  // rcp without regularization: coincident vertices merged
   int seeds = 0;
   StageTimes seconds;  // per stage
 };

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "core/geometry/Polygon.hpp"
+#include "core/meshgen/MeshCompaction.hpp"
 
 namespace vorodg {
 namespace {
@@ -15,29 +16,6 @@ namespace {
 // A corner counts as reflex when it bends the wrong way by more than this (relative).
 constexpr double kConvexTolerance = 1e-9;
 constexpr unsigned kLeft = 1u, kRight = 2u, kBottom = 4u, kTop = 8u;
-
-/// The mesh of `loops` (cells in this order) over `positions`, like `like` in domain and tagging,
-/// without the vertices no loop uses. Vertices keep their relative input order, which keeps
-/// generation deterministic.
-PolygonMesh compact_mesh(const PolygonMesh& like, std::span<const Point> positions,
-                         const std::vector<std::span<const int>>& loops) {
-  std::vector<int> new_id(positions.size(), -1);
-  for (auto loop : loops)
-    for (int v : loop) new_id[v] = 0;
-  std::vector<Point> vertices;
-  for (std::size_t v = 0; v < positions.size(); ++v)
-    if (new_id[v] == 0) {
-      new_id[v] = static_cast<int>(vertices.size());
-      vertices.push_back(positions[v]);
-    }
-  std::vector<int> offsets{0}, cells;
-  for (auto loop : loops) {
-    for (int v : loop) cells.push_back(new_id[v]);
-    offsets.push_back(static_cast<int>(cells.size()));
-  }
-  return PolygonMesh(like.domain(), std::move(vertices), std::move(offsets), std::move(cells),
-                     like.tag_tolerance());
-}
 
 // Mutable copy of a mesh in which edges collapse: cells keep their CSR slots and shrink in place,
 // merged vertices form union-find classes whose cells are the union of their members' cells.

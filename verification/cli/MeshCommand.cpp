@@ -94,6 +94,7 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
     json["collapsed_edges"] = r.collapsed_edges;
     json["refused_collapses"] = r.refused_collapses;
     json["merged_cells"] = r.merged_cells;
+    json["merged_vertices"] = r.merged_vertices;
   }
   json["seconds"] = nlohmann::json(r.seconds);  // stage -> seconds
   json["seconds"]["total"] = total.seconds();

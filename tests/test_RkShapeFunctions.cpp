@@ -146,7 +146,7 @@ TEST(RkKernel, TheNodeBasisOnceGivesTheSameBits) {
   const RkCellFrame frame{{0.7, 0.8}, 1.3};
   std::vector<Eigen::Vector3d> basis(n);
   rk_node_basis(frame, nodes, basis.data());
-  for (const Eigen::Vector2d x : {Eigen::Vector2d(0.6, 0.7), Eigen::Vector2d(0.31, 0.55)}) {
+  for (const Eigen::Vector2d& x : {Eigen::Vector2d(0.6, 0.7), Eigen::Vector2d(0.31, 0.55)}) {
     std::vector<double> w(n), a(n), b(n);
     std::vector<Eigen::Vector2d> gw(n), ga(n), gb(n);
     weights(x, w.data(), gw.data());

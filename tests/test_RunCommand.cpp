@@ -130,28 +130,51 @@ TEST_F(RunCommand, BadScenesAreRefusedWithTheKeyNamed) {
   }
 }
 
-TEST_F(RunCommand, TradeOffStudyWritesItsParetoFront) {
+TEST_F(RunCommand, TradeOffStudyWritesItsParetoFrontAndChecksItsRecommendation) {
+  // min_seconds 0: every level is timed (these runs are far too short to time honestly; the
+  // timing rule itself is tested in test_TradeoffAnalysis).
   std::ofstream(dir_ / "tradeoff.json") << R"({
     "study": "trade-off",
-    "meshes": [{"family": "rcp", "sizes": [0.3, 0.15], "seed": 3}],
-    "formulations": [{"name": "cg"}, {"name": "cg", "rule": 1, "label": "one point"}]
+    "meshes": [{"family": "rcp", "sizes": [0.3, 0.2, 0.15], "seed": 3}],
+    "formulations": [{"name": "cg"}, {"name": "cg", "rule": 1, "label": "one point"}],
+    "tradeoff": {"min_seconds": 0, "rate_tolerance": 0.5, "targets": [1e-2, 3e-3],
+                 "verification_realizations": 2}
   })";
-  const RunResult r = run({"run", (dir_ / "tradeoff.json").string(), "-o", (dir_ / "t").string(),
-                           "--quiet", "--no-plots"});
+  const std::vector<std::string> args = {"run",     (dir_ / "tradeoff.json").string(),
+                                         "-o",      (dir_ / "t").string(),
+                                         "--quiet", "--no-plots"};
+  const RunResult r = run(args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto data = nlohmann::json::parse(slurp(dir_ / "t" / "tradeoff.json"));
-  EXPECT_EQ(data["points"].size(), 4u);  // 2 configurations x 2 levels
+  EXPECT_EQ(data["points"].size(), 6u);  // 2 configurations x 3 levels
+  ASSERT_EQ(data["configs"].size(), 2u);
   ASSERT_FALSE(data["pareto"].empty());
-  // The front is cheapest first and strictly more accurate at every step.
-  for (std::size_t i = 1; i < data["pareto"].size(); ++i) {
+  // The front is cheapest first, strictly more accurate at every step, admitted and timed.
+  for (std::size_t i = 0; i < data["pareto"].size(); ++i) {
+    EXPECT_TRUE(data["pareto"][i]["admitted"].get<bool>());
+    EXPECT_TRUE(data["pareto"][i]["timed"].get<bool>());
+    if (i == 0) continue;
     EXPECT_GE(data["pareto"][i]["seconds"].get<double>(),
               data["pareto"][i - 1]["seconds"].get<double>());
     EXPECT_LT(data["pareto"][i]["l2_error"].get<double>(),
               data["pareto"][i - 1]["l2_error"].get<double>());
   }
-  EXPECT_NE(slurp(dir_ / "t" / "report.md").find("Pareto front"), std::string::npos);
+  // The targets as given, largest first; the smallest was run again at its predicted size.
+  ASSERT_EQ(data["targets"].size(), 2u);
+  EXPECT_EQ(data["targets"][0]["error"].get<double>(), 1e-2);
+  ASSERT_TRUE(data["check"].contains("seconds")) << data["check"].dump();
+  EXPECT_EQ(data["check"]["runs"].get<int>(), 2);
+  EXPECT_EQ(data["check"]["target"].get<double>(), 3e-3);
+  const std::string report = slurp(dir_ / "t" / "report.md");
+  for (const char* section : {"Which configurations converge", "What accuracy costs",
+                              "Pareto front", "Recommendation", "Check of the recommendation"})
+    EXPECT_NE(report.find(section), std::string::npos) << section;
   // Wall times never reach the summary: it stays deterministic.
   EXPECT_EQ(slurp(dir_ / "t" / "summary.json").find("seconds"), std::string::npos);
+  // A rerun resumes: the study's and the check's runs are all found, none run again.
+  const std::string check_runs = slurp(dir_ / "t" / "verification" / "results.jsonl");
+  ASSERT_EQ(run(args).exit_code, 0);
+  EXPECT_EQ(slurp(dir_ / "t" / "verification" / "results.jsonl"), check_runs);
 }
 
 TEST_F(RunCommand, PenaltyAnalysisCoversEveryElementOfTheScene) {

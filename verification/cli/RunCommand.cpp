@@ -20,6 +20,7 @@
 #include "verification/study/Scene.hpp"
 #include "verification/study/StudyReport.hpp"
 #include "verification/study/StudyRunner.hpp"
+#include "verification/study/TradeoffVerification.hpp"
 
 namespace vorodg {
 namespace {
@@ -248,6 +249,7 @@ int run_study_scene(const RunCommandOptions& o) {
     return code;
   }
   const auto results = run_study(scene, options);
+  if (scene.study == "trade-off") run_tradeoff_check(scene, results, options);
   record_scene(o.out, scene_path);
   if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
   const StudyReport report = write_study_report(scene, results, o.out);

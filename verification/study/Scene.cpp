@@ -322,6 +322,11 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   }
   scene.patch_tolerance = top.number("patch_tolerance", scene.patch_tolerance);
   scene.reference = top.text("reference", "");
+  if (top.has("tradeoff")) {
+    if (scene.study != "trade-off") top.fail_value("tradeoff", "only a trade-off study takes it");
+    SceneObject block(top.at("tradeoff"), "tradeoff", source);
+    scene.tradeoff = read_tradeoff_settings(block);
+  }
   top.finish();
   return scene;
 }

@@ -15,6 +15,7 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "verification/SolveRun.hpp"
 #include "verification/model/Choices.hpp"
+#include "verification/study/TradeoffSettings.hpp"
 
 namespace vorodg {
 
@@ -61,6 +62,7 @@ struct Scene {
   bool energy_error = true;
   double patch_tolerance = 1e-10;  // patch-suite: errors at most this pass
   std::string reference;           // key into data/reference/published.json (optional)
+  TradeoffSettings tradeoff;       // trade-off: admission, timing and the recommendation
 
   // extremes: the sweeps, each a scene of its own (the top-level keys with the sweep's keys
   // merged over them), run into a subfolder named after it.

@@ -168,7 +168,7 @@ StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>&
     write_penalty_analysis(scene, out, md);
     write_penalty_comparison(scene, records, md);
   }
-  if (scene.study == "trade-off") write_tradeoff(records, out, md);
+  if (scene.study == "trade-off") write_tradeoff(scene, summary, records, out, md);
   if (published.is_object() && published.contains("trend"))
     md << "Published trend (" << published.value("source", "")
        << "): " << published["trend"].get<std::string>() << "\n\n";

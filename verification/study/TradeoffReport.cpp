@@ -1,23 +1,16 @@
 #include "verification/study/TradeoffReport.hpp"
 
-#include <algorithm>
 #include <iomanip>
 #include <iostream>
-#include <map>
 
 #include "core/util/Format.hpp"
 #include "verification/cli/JsonOutput.hpp"
+#include "verification/study/TradeoffVerification.hpp"
 
 namespace vorodg {
 namespace {
 
 using nlohmann::json;
-
-struct CostPoint {
-  std::string variant;
-  int level;
-  double h, error, seconds;
-};
 
 std::string scientific(double x) {
   std::ostringstream os;
@@ -25,96 +18,238 @@ std::string scientific(double x) {
   return os.str();
 }
 
-/// Per (variant, level): mean h_avg and L2 error, median total seconds.
-std::vector<CostPoint> cost_points(const std::vector<RunRecord>& records,
-                                   std::vector<std::string>& variants) {
-  std::map<std::pair<std::string, int>, std::vector<const RunMetrics*>> groups;
-  for (const RunRecord& r : records) {
-    if (!r.ok()) continue;
-    if (std::find(variants.begin(), variants.end(), r.run.variant) == variants.end())
-      variants.push_back(r.run.variant);
-    groups[{r.run.variant, r.run.level}].push_back(&*r.metrics);
-  }
-  std::vector<CostPoint> points;
-  for (const auto& [key, runs] : groups) {
-    std::vector<double> t;
-    double mean_e = 0, mean_h = 0;
-    for (const RunMetrics* m : runs) {
-      t.push_back(m->total_seconds());
-      mean_e += m->l2_error / runs.size(), mean_h += m->h_avg / runs.size();
-    }
-    std::sort(t.begin(), t.end());
-    points.push_back({key.first, key.second, mean_h, mean_e, t[t.size() / 2]});
-  }
-  std::sort(points.begin(), points.end(),
-            [](const CostPoint& a, const CostPoint& b) { return a.seconds < b.seconds; });
-  return points;
+std::string rate_text(const std::optional<RateSummary>& r) {
+  return r ? fmt(r->fit.rate, 3) : "-";
 }
 
-void write_knob_table(const std::vector<CostPoint>& points,
-                      const std::vector<std::string>& variants, std::ostringstream& md) {
+std::string time_range(const TradeoffLevel& lv) {
+  return fmt(lv.seconds_min, 3) + "-" + fmt(lv.seconds_max, 3);
+}
+
+/// Which configurations converge, and why the others may not stand on the front.
+void write_admission(const TradeoffAnalysis& a, const TradeoffSettings& s, std::ostringstream& md) {
+  md << "## Which configurations converge\n\nA configuration stands on the front only if its "
+        "least-squares L2 and energy rates are within "
+     << fmt(100 * s.rate_tolerance) << "% of " << fmt(kExpectedL2Rate) << " and "
+     << fmt(kExpectedEnergyRate)
+     << ", every realization's rate between consecutive levels is positive, its mean L2 error "
+        "falls at every level, no run failed, and at least two levels take "
+     << fmt(s.min_seconds) << " s or more (the error-cost line).\n\n"
+     << "| configuration | L2 rate | energy rate | lowest L2 pair rate | verdict |\n"
+        "|---|---|---|---|---|\n";
+  for (const TradeoffConfig& c : a.configs) {
+    const auto& pair = c.group->rate_l2;
+    md << "| " << c.variant << " | " << rate_text(c.group->rate_l2) << " | "
+       << rate_text(c.group->rate_energy) << " | "
+       << (pair && pair->pair_min ? fmt(*pair->pair_min, 3) : "-") << " | "
+       << (c.admitted() ? "admitted" : "**excluded**") << " |\n";
+  }
+  bool any = false;
+  for (const TradeoffConfig& c : a.configs) {
+    if (c.admitted()) continue;
+    if (!any) md << "\nExcluded, with every reason:\n\n";
+    any = true;
+    md << "- **" << c.variant << "**: ";
+    for (std::size_t i = 0; i < c.exclusions.size(); ++i) md << (i ? "; " : "") << c.exclusions[i];
+    md << ".\n";
+  }
+  md << "\n";
+}
+
+/// The error-cost slope and the seconds per DOF of every configuration with a cost line.
+void write_costs(const TradeoffAnalysis& a, const TradeoffSettings& s, std::ostringstream& md) {
+  md << "## What accuracy costs\n\nOnly levels whose median run takes at least "
+     << fmt(s.min_seconds)
+     << " s are timed. Seconds are the median of the realizations, with their range; the "
+        "slope s is that of L2 error ~ time^-s over the timed levels: the larger, the faster "
+        "the error falls as the problem grows.\n\n"
+        "| configuration | timed levels | error-cost slope s | microseconds per DOF | finest: "
+        "median s | range s | spread |\n|---|---|---|---|---|---|---|\n";
+  for (const TradeoffConfig& c : a.configs) {
+    if (!c.cost_fit) continue;
+    int timed = 0;
+    const TradeoffLevel* finest = nullptr;
+    for (const TradeoffLevel& lv : c.levels)
+      if (lv.timed) ++timed, finest = &lv;
+    md << "| " << c.variant << (c.admitted() ? "" : " (excluded)") << " | " << timed << " | "
+       << fmt(c.slope(), 3) << " | " << fmt(1e6 * *c.seconds_per_dof, 3) << " | "
+       << fmt(finest->seconds, 3) << " | " << time_range(*finest) << " | "
+       << fmt(100 * (finest->seconds_max - finest->seconds_min) / finest->seconds, 2) << "% |\n";
+  }
+  md << "\n";
+}
+
+void write_front(const TradeoffAnalysis& a, std::ostringstream& md) {
+  md << "## Pareto front\n\nAdmitted configurations at their timed levels; no other point is "
+        "both cheaper and more accurate.\n\n"
+        "| L2 error | median s | range s | configuration | level | h_avg | DOFs |\n"
+        "|---|---|---|---|---|---|---|\n";
+  std::cout << "\nPareto front (admitted configurations, timed levels):\n";
+  for (const TradeoffPoint& p : a.front) {
+    const TradeoffLevel& lv = *p.level;
+    md << "| " << scientific(lv.l2_error) << " | " << fmt(lv.seconds, 3) << " | " << time_range(lv)
+       << " | " << p.config->variant << " | " << lv.level << " | " << fmt(lv.h_avg, 4) << " | "
+       << fmt(lv.dofs, 6) << " |\n";
+    std::cout << "  " << scientific(lv.l2_error) << "  " << std::setw(9) << fmt(lv.seconds, 3)
+              << " s  " << p.config->variant << ", level " << lv.level << "\n";
+  }
+  if (a.front.empty()) md << "(empty: no admitted configuration has a timed level)\n";
+  md << "\n";
+}
+
+void write_recommendation(const TradeoffAnalysis& a, const TradeoffSettings& s,
+                          std::ostringstream& md) {
+  md << "## Recommendation\n\n";
+  for (const TradeoffTarget& t : a.targets) {
+    md << "- To reach an L2 error of " << scientific(t.error) << " on this problem, ";
+    if (!t.config) {
+      md << "no admitted configuration has an error-cost line.\n";
+      continue;
+    }
+    md << "use **" << t.config->variant << "** (predicted " << fmt(t.seconds, 3)
+       << " s per run from its error-cost line, mesh size " << fmt(t.size, 4) << ")";
+    if (t.seconds < s.min_seconds)
+      md << "; a run this short is under the " << fmt(s.min_seconds)
+         << " s that can be timed, so the time is the line's extrapolation only";
+    else if (t.extrapolated)
+      md << "; extrapolated beyond its timed levels";
+    md << ".\n";
+  }
+  md << "\n";
+}
+
+void write_check(const std::optional<TradeoffCheck>& check, const std::string& why_not,
+                 std::ostringstream& md) {
+  md << "## Check of the recommendation\n\n";
+  if (!check) {
+    md << "Not run: " << why_not << ".\n\n";
+    return;
+  }
+  const TradeoffTarget& t = check->target;
+  md << "The recommendation for " << scientific(t.error) << " (" << t.config->variant
+     << ") ran again at the predicted mesh size " << fmt(t.size, 4) << " on " << check->runs
+     << " fresh meshes (" << check->failed << " failed), in `" << kTradeoffCheckFolder << "/`.\n\n";
+  if (!check->seconds) {
+    md << "Every check run failed.\n\n";
+    return;
+  }
+  md << "| | predicted | measured |\n|---|---|---|\n"
+     << "| seconds per run (median) | " << fmt(t.seconds, 3) << " | " << fmt(*check->seconds, 3)
+     << " (range " << fmt(*check->seconds_min, 3) << "-" << fmt(*check->seconds_max, 3)
+     << ") |\n| L2 error (mean) | " << scientific(t.error) << " | " << scientific(*check->l2_error)
+     << " |\n\nMeasured time / predicted - 1: " << fmt(100 * *check->time_deviation(), 3)
+     << "%.\n\n";
+}
+
+/// Per knob, its error and time at fixed level against the first configuration (times only
+/// where both levels are timed: shorter runs say nothing reliable about their ratio).
+void write_knob_table(const TradeoffAnalysis& a, std::ostringstream& md) {
   int levels = 0;
-  for (const CostPoint& p : points) levels = std::max(levels, p.level + 1);
-  md << "\nWhat each knob adds at fixed h, against `" << variants.front()
-     << "` (ratios of mean L2 error and of median seconds, per level):\n\n| configuration |";
+  for (const TradeoffConfig& c : a.configs)
+    for (const TradeoffLevel& lv : c.levels) levels = std::max(levels, lv.level + 1);
+  const TradeoffConfig& base = a.configs.front();
+  md << "What each knob adds at fixed level, against `" << base.variant
+     << "` (ratios of mean L2 error and of median seconds; '-' where a level is missing or too "
+        "short to time):\n\n| configuration |";
   for (int l = 0; l < levels; ++l) md << " level " << l << " error | level " << l << " time |";
   md << "\n|---|";
   for (int l = 0; l < levels; ++l) md << "---|---|";
   md << "\n";
-  auto find = [&](const std::string& v, int l) -> const CostPoint* {
-    for (const CostPoint& p : points)
-      if (p.variant == v && p.level == l) return &p;
+  auto find = [](const TradeoffConfig& c, int l) -> const TradeoffLevel* {
+    for (const TradeoffLevel& lv : c.levels)
+      if (lv.level == l) return &lv;
     return nullptr;
   };
-  for (const std::string& v : variants) {
-    md << "| " << v << " |";
+  for (const TradeoffConfig& c : a.configs) {
+    md << "| " << c.variant << " |";
     for (int l = 0; l < levels; ++l) {
-      const CostPoint *p = find(v, l), *base = find(variants.front(), l);
-      if (p && base)
-        md << " " << fmt(p->error / base->error, 3) << " | " << fmt(p->seconds / base->seconds, 3)
-           << " |";
-      else
-        md << " - | - |";
+      const TradeoffLevel *p = find(c, l), *b = find(base, l);
+      md << " " << (p && b ? fmt(p->l2_error / b->l2_error, 3) : "-") << " | "
+         << (p && b && p->timed && b->timed ? fmt(p->seconds / b->seconds, 3) : "-") << " |";
     }
     md << "\n";
   }
   md << "\n";
 }
 
+json level_json(const TradeoffConfig& c, const TradeoffLevel& lv) {
+  return {{"variant", c.variant},
+          {"level", lv.level},
+          {"size", lv.size},
+          {"h_avg", lv.h_avg},
+          {"dofs", lv.dofs},
+          {"l2_error", lv.l2_error},
+          {"seconds", lv.seconds},
+          {"seconds_min", lv.seconds_min},
+          {"seconds_max", lv.seconds_max},
+          {"runs", lv.runs},
+          {"timed", lv.timed},
+          {"admitted", c.admitted()}};
+}
+
+json tradeoff_json(const TradeoffAnalysis& a, const std::optional<TradeoffCheck>& check,
+                   const std::string& why_not) {
+  json data = {{"points", json::array()},
+               {"configs", json::array()},
+               {"pareto", json::array()},
+               {"targets", json::array()}};
+  for (const TradeoffConfig& c : a.configs) {
+    json j = {{"variant", c.variant}, {"admitted", c.admitted()}, {"exclusions", c.exclusions}};
+    if (c.cost_fit)
+      j["cost_line"] = {{"slope", c.slope()},
+                        {"intercept", c.cost_fit->intercept},
+                        {"seconds_per_dof", *c.seconds_per_dof}};
+    data["configs"].push_back(j);
+    for (const TradeoffLevel& lv : c.levels) data["points"].push_back(level_json(c, lv));
+  }
+  for (const TradeoffPoint& p : a.front) data["pareto"].push_back(level_json(*p.config, *p.level));
+  for (const TradeoffTarget& t : a.targets) {
+    json j = {{"error", t.error}};
+    if (t.config)
+      j.update({{"variant", t.config->variant},
+                {"seconds", t.seconds},
+                {"size", t.size},
+                {"extrapolated", t.extrapolated}});
+    data["targets"].push_back(j);
+  }
+  if (check && check->seconds)
+    data["check"] = {{"variant", check->target.config->variant},
+                     {"target", check->target.error},
+                     {"predicted_seconds", check->target.seconds},
+                     {"size", check->target.size},
+                     {"seconds", *check->seconds},
+                     {"seconds_min", *check->seconds_min},
+                     {"seconds_max", *check->seconds_max},
+                     {"l2_error", *check->l2_error},
+                     {"runs", check->runs},
+                     {"failed", check->failed}};
+  else
+    data["check"] = {{"not_run", check ? "every check run failed" : why_not}};
+  return data;
+}
+
 }  // namespace
 
-void write_tradeoff(const std::vector<RunRecord>& records, const std::filesystem::path& out,
+void write_tradeoff(const Scene& scene, const StudySummary& summary,
+                    const std::vector<RunRecord>& records, const std::filesystem::path& out,
                     std::ostringstream& md) {
-  std::vector<std::string> variants;
-  const std::vector<CostPoint> points = cost_points(records, variants);
-  if (points.empty()) return;
-  std::vector<const CostPoint*> front;  // by increasing time, strictly decreasing error
-  for (const CostPoint& p : points)
-    if (front.empty() || p.error < front.back()->error) front.push_back(&p);
-  json data = {{"points", json::array()}, {"pareto", json::array()}};
-  for (const CostPoint& p : points)
-    data["points"].push_back({{"variant", p.variant},
-                              {"level", p.level},
-                              {"h_avg", p.h},
-                              {"l2_error", p.error},
-                              {"seconds", p.seconds}});
-  md << "## Error against wall time\n\nPareto front (median total seconds per run over the "
-        "realizations; no other configuration is both cheaper and more accurate). For a target "
-        "error e, the cheapest configuration is the first row whose error is at most e:\n\n"
-        "| L2 error | seconds | configuration | level | h_avg |\n|---|---|---|---|---|\n";
-  std::cout << "\nPareto front (error against median wall time per run):\n";
-  for (const CostPoint* p : front) {
-    data["pareto"].push_back({{"variant", p->variant},
-                              {"level", p->level},
-                              {"l2_error", p->error},
-                              {"seconds", p->seconds}});
-    md << "| " << scientific(p->error) << " | " << fmt(p->seconds, 3) << " | " << p->variant
-       << " | " << p->level << " | " << fmt(p->h, 4) << " |\n";
-    std::cout << "  " << scientific(p->error) << "  " << std::setw(9) << fmt(p->seconds, 3)
-              << " s  " << p->variant << ", level " << p->level << "\n";
+  const TradeoffAnalysis a = analyse_tradeoff(scene, summary, records);
+  if (a.configs.empty()) return;
+  std::string why_not;
+  std::optional<TradeoffCheck> check;
+  if (tradeoff_check_scene(scene, a, why_not)) {
+    check = read_tradeoff_check(scene, a, out);
+    if (!check)
+      why_not = "its runs are not in " + std::string(kTradeoffCheckFolder) +
+                "/ (a study split over MPI ranks or shards runs no check)";
   }
-  write_knob_table(points, variants, md);
-  write_json(out / "tradeoff.json", data);
+  write_admission(a, scene.tradeoff, md);
+  write_costs(a, scene.tradeoff, md);
+  write_front(a, md);
+  write_recommendation(a, scene.tradeoff, md);
+  write_check(check, why_not, md);
+  write_knob_table(a, md);
+  write_json(out / "tradeoff.json", tradeoff_json(a, check, why_not));
 }
 
 }  // namespace vorodg

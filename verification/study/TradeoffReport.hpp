@@ -1,18 +1,20 @@
 #pragma once
-// Error against wall time over a scene's knobs: per (variant, level) the mean L2 error and the
-// median total seconds over the realizations; the Pareto front (no other configuration is both
-// cheaper and more accurate); per knob, its cost and accuracy against the first formulation at
-// the same level. Wall times are not deterministic, so all of this goes to tradeoff.json and
-// report.md, never to summary.json.
+// The trade-off study's report (TradeoffAnalysis): which configurations converge and why the
+// others are excluded, what accuracy costs (error-cost slopes, seconds per DOF, the spread of
+// the timings), the Pareto front of the admitted ones, the recommendation for three target
+// errors and the check of the smallest (TradeoffVerification). Wall times are not
+// deterministic, so all of this goes to tradeoff.json and report.md, never to summary.json.
 #include <filesystem>
 #include <sstream>
 #include <vector>
 
 #include "verification/model/RunRecord.hpp"
+#include "verification/study/StudySummary.hpp"
 
 namespace vorodg {
 
-void write_tradeoff(const std::vector<RunRecord>& records, const std::filesystem::path& out,
+void write_tradeoff(const Scene& scene, const StudySummary& summary,
+                    const std::vector<RunRecord>& records, const std::filesystem::path& out,
                     std::ostringstream& md);
 
 }  // namespace vorodg

@@ -10,7 +10,7 @@
 // intercept log(0.5e-3) to round-off; the default targets are three decades down to the power of
 // ten at or below the best finest error, and their predicted times and sizes follow the closed
 // forms. The check's scene is the recommended configuration alone at the predicted size, and a
-// check far beyond the study (over 10 times the finest level's time) is refused with the reason.
+// check far beyond the study (over 10 times the finest level's cells) is refused with the reason.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -113,8 +113,8 @@ TEST(TradeoffAnalysis, OnlyConvergingTimedConfigurationsStandOnTheFront) {
 }
 
 TEST(TradeoffAnalysis, TheCheckRunsTheSmallestTargetWithinReachOnly) {
-  // The check of 1e-4 (clean: 10 s at size sqrt(2e-4)) runs; one of 1e-6 (1000 s, 300 times
-  // the finest level's 3.2 s) is refused with the reason.
+  // The check of 1e-4 (clean: size sqrt(2e-4), 3.1 times the finest level's cells) runs; one of
+  // 1e-6 (size sqrt(2e-6), 312 times the cells) is refused with the reason.
   for (const auto& [targets, runs] : {std::pair{"[1e-3, 1e-4]", true}, {"[1e-3, 1e-6]", false}}) {
     std::string text = kScene;
     text.replace(text.find("\"min_seconds\": 0.5"), 18,
@@ -128,7 +128,7 @@ TEST(TradeoffAnalysis, TheCheckRunsTheSmallestTargetWithinReachOnly) {
     const std::optional<Scene> check = tradeoff_check_scene(scene, a, why_not);
     EXPECT_EQ(check.has_value(), runs) << targets << ": " << why_not;
     if (!runs) {
-      EXPECT_NE(why_not.find("more than 10 times"), std::string::npos) << why_not;
+      EXPECT_NE(why_not.find("times the cells of the finest level"), std::string::npos) << why_not;
       continue;
     }
     ASSERT_EQ(check->meshes.size(), 1u);

@@ -32,8 +32,8 @@ struct TradeoffCheck {
 };
 
 /// The scene of the check, or none with the reason in `why_not`: verify is off, no configuration
-/// has a cost line, the predicted run would take more than 10 times the configuration's finest
-/// level, or the meshes are read from files (no size to ask for).
+/// has a cost line, the predicted size needs more than 10 times the cells of the configuration's
+/// finest level, or the meshes are read from files (no size to ask for).
 std::optional<Scene> tradeoff_check_scene(const Scene& scene, const TradeoffAnalysis& analysis,
                                           std::string& why_not);
 

@@ -1,16 +1,8 @@
 #include "core/meshgen/MeshCompaction.hpp"
 
-#include <numeric>
+#include "core/util/UnionFind.hpp"
 
 namespace vorodg {
-namespace {
-
-int root_of(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
-}  // namespace
 
 PolygonMesh compact_mesh(const PolygonMesh& like, std::span<const Point> positions,
                          const std::vector<std::span<const int>>& loops) {
@@ -33,21 +25,19 @@ PolygonMesh compact_mesh(const PolygonMesh& like, std::span<const Point> positio
 }
 
 PolygonMesh merge_coincident_vertices(const PolygonMesh& mesh, double tol, int& merged) {
-  std::vector<int> parent(mesh.num_vertices());
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind vertices(mesh.num_vertices());  // a class's root is its smallest id
   merged = 0;
   for (int e = 0; e < mesh.num_edges(); ++e) {
-    if (!(mesh.edge_length(e) <= tol)) continue;
-    const int a = root_of(parent, mesh.edge(e).v0), b = root_of(parent, mesh.edge(e).v1);
-    if (a == b) continue;
-    parent[std::max(a, b)] = std::min(a, b);
+    const int a = mesh.edge(e).v0, b = mesh.edge(e).v1;
+    if (!(mesh.edge_length(e) <= tol) || vertices.root(a) == vertices.root(b)) continue;
+    vertices.join(a, b);
     ++merged;
   }
   if (merged == 0) return mesh;
   std::vector<std::vector<int>> loops(mesh.num_cells());
   for (int c = 0; c < mesh.num_cells(); ++c) {
     for (int v : mesh.cell_vertices(c)) {
-      const int root = root_of(parent, v);
+      const int root = vertices.root(v);
       if (loops[c].empty() || loops[c].back() != root) loops[c].push_back(root);
     }
     while (loops[c].size() > 1 && loops[c].back() == loops[c].front()) loops[c].pop_back();

@@ -237,8 +237,8 @@ void write_tradeoff(const Scene& scene, const StudySummary& summary,
   if (a.configs.empty()) return;
   std::string why_not;
   std::optional<TradeoffCheck> check;
-  if (tradeoff_check_scene(scene, a, why_not)) {
-    check = read_tradeoff_check(scene, a, out);
+  if (const auto check_scene = tradeoff_check_scene(scene, a, why_not)) {
+    check = read_tradeoff_check(*check_scene, a.targets.back(), out);
     if (!check)
       why_not = "its runs are not in " + std::string(kTradeoffCheckFolder) +
                 "/ (a study split over MPI ranks or shards runs no check)";

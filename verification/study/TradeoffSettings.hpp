@@ -1,8 +1,8 @@
 #pragma once
 // The `tradeoff` block of a trade-off scene (docs/scenes.md): when a configuration may stand on
 // the front, which levels are timed, which errors the recommendation is given for and how the
-// recommendation is checked. The defaults are the ones the issue of misleading fronts asked for:
-// a rate within 12.5% of the expected one and runs of at least half a second.
+// recommendation is checked. The defaults, a rate within 12.5% of the expected one and runs of
+// at least half a second, are argued in docs/tradeoff.md.
 #include <vector>
 
 namespace vorodg {

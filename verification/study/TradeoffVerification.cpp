@@ -89,17 +89,13 @@ void run_tradeoff_check(const Scene& scene, const std::vector<RunRecord>& record
   run_study(*check, sub);
 }
 
-std::optional<TradeoffCheck> read_tradeoff_check(const Scene& scene,
-                                                 const TradeoffAnalysis& analysis,
+std::optional<TradeoffCheck> read_tradeoff_check(const Scene& check, const TradeoffTarget& target,
                                                  const std::filesystem::path& out) {
-  std::string why_not;
-  const std::optional<Scene> check = tradeoff_check_scene(scene, analysis, why_not);
-  if (!check) return std::nullopt;
   const auto lines = read_finished_runs(out / kTradeoffCheckFolder / "results.jsonl");
   TradeoffCheck c;
-  c.target = analysis.targets.back();
+  c.target = target;
   std::vector<double> seconds, errors, dofs;
-  for (const StudyRun& run : expand_runs(*check)) {
+  for (const StudyRun& run : expand_runs(check)) {
     const auto line = lines.find(run.id);
     if (line == lines.end()) continue;
     const RunRecord r = record_from_json(run, line->second);

@@ -42,9 +42,9 @@ std::optional<Scene> tradeoff_check_scene(const Scene& scene, const TradeoffAnal
 void run_tradeoff_check(const Scene& scene, const std::vector<RunRecord>& records,
                         const StudyOptions& options);
 
-/// The check's outcome from the records in `out`/verification, or none if it has not run.
-std::optional<TradeoffCheck> read_tradeoff_check(const Scene& scene,
-                                                 const TradeoffAnalysis& analysis,
+/// The outcome of the check `check` (made by tradeoff_check_scene for `target`) from the
+/// records in `out`/verification, or none if it has not run.
+std::optional<TradeoffCheck> read_tradeoff_check(const Scene& check, const TradeoffTarget& target,
                                                  const std::filesystem::path& out);
 
 }  // namespace vorodg

@@ -17,11 +17,6 @@
 
 namespace vorodg {
 
-// Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) {
-  *os << side_name(s);
-}
-
 namespace {
 
 // 2 x 2 unit quads on [0,2]^2; vertex (i, j) has index 3 j + i, cells numbered row by row.

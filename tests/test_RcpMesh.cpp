@@ -22,11 +22,6 @@
 
 namespace vorodg {
 
-// Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) {
-  *os << side_name(s);
-}
-
 namespace {
 
 constexpr double kD = 0.015;  // ~1.2e4 seeds on [0,4] x [0,1]

@@ -13,11 +13,6 @@
 
 namespace vorodg {
 
-// Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) {
-  *os << side_name(s);
-}
-
 namespace {
 
 TEST(Rectangle, ParseAcceptsFourCommaSeparatedNumbers) {

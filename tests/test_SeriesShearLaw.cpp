@@ -38,7 +38,7 @@ TEST(SeriesShearLaw, PureOpeningIsTheLaw) {
 
 TEST(SeriesShearLaw, TangentIsTheDerivative) {
   const double dc = law().critical_opening();
-  for (const Eigen::Vector2d d :
+  for (const Eigen::Vector2d& d :
        {Eigen::Vector2d(0.2 * dc, 0.1 * dc), Eigen::Vector2d(0.05 * dc, -0.3 * dc),
         Eigen::Vector2d(-0.1 * dc, 0.2 * dc)}) {
     for (bool unloading : {false, true}) {

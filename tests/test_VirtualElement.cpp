@@ -36,7 +36,7 @@ TEST(VirtualElement, ProjectionReproducesLinearFields) {
   for (const Polygon& p : polygons()) {
     const int n = static_cast<int>(p.size());
     const VemProjection projection(p, area(p));
-    for (const Eigen::Vector2d x : {Eigen::Vector2d(0.4, 0.2), Eigen::Vector2d(-3.0, 7.0)}) {
+    for (const Eigen::Vector2d& x : {Eigen::Vector2d(0.4, 0.2), Eigen::Vector2d(-3.0, 7.0)}) {
       std::vector<double> psi(n);
       std::vector<Eigen::Vector2d> grad(n);
       projection.basis(x, psi.data(), grad.data());

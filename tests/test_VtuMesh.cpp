@@ -26,11 +26,6 @@
 
 namespace vorodg {
 
-// Readable gtest output for side tags.
-void PrintTo(Side s, std::ostream* os) {
-  *os << side_name(s);
-}
-
 namespace {
 
 namespace fs = std::filesystem;

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <ostream>
 #include <sstream>
 #include <vector>
 
@@ -17,6 +18,10 @@ std::string_view side_name(Side s) {
     case Side::top: return "top";
     default: return "none";
   }
+}
+
+std::ostream& operator<<(std::ostream& os, Side s) {
+  return os << side_name(s);
 }
 
 Rectangle::Rectangle(double x0, double y0, double x1, double y1) : lo_(x0, y0), hi_(x1, y1) {

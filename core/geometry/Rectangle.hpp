@@ -3,6 +3,7 @@
 // geometric tagging of its four sides.
 #include <Eigen/Core>
 #include <array>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,6 +17,8 @@ using Point = Eigen::Vector2d;
 enum class Side : int { none = -1, left = 0, right = 1, bottom = 2, top = 3 };
 
 std::string_view side_name(Side s);
+/// Writes the side's name (readable test and log output).
+std::ostream& operator<<(std::ostream& os, Side s);
 
 class Rectangle {
  public:

@@ -1,0 +1,2 @@
+// The target that owns the test programs' precompiled headers (tests/CMakeLists.txt) needs one
+// source of its own.

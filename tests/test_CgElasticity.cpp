@@ -353,7 +353,7 @@ struct BeamSeries {
 };
 
 // One mesh family's levels, with the divergence correction on or off, printed with its rates.
-BeamSeries beam_series(MeshFamily family, const std::string& name, bool correction) {
+BeamSeries beam_series(MeshFamily family, bool correction) {
   const Rectangle domain(0.0, -0.5, kBeamL, 0.5);
   SolveSettings settings;
   settings.problem = "beam";
@@ -371,7 +371,7 @@ BeamSeries beam_series(MeshFamily family, const std::string& name, bool correcti
     s.energy.push_back(r.energy_error);
     s.cells.push_back(mesh.num_cells());
   }
-  std::cout << "beam, L/D = 8/sqrt(3), plane stress, nu = 0.3, " << name
+  std::cout << "beam, L/D = 8/sqrt(3), plane stress, nu = 0.3, " << family_name(family)
             << (correction ? ", corrected" : ", UNCORRECTED") << ": L2 rate "
             << least_squares_slope(s.h, s.l2) << ", energy rate "
             << least_squares_slope(s.h, s.energy) << "\n";
@@ -388,7 +388,8 @@ BeamSeries beam_series(MeshFamily family, const std::string& name, bool correcti
 }
 
 // The corrected element converges at rates 2 and 1 on the family's levels.
-void expect_corrected_rates(const BeamSeries& s, const std::string& name) {
+void expect_corrected_rates(const BeamSeries& s, MeshFamily family) {
+  const std::string_view name = family_name(family);
   EXPECT_GE(least_squares_slope(s.h, s.l2), 1.8) << name << " corrected L2 rate";
   EXPECT_GE(least_squares_slope(s.h, s.energy), 0.9) << name << " corrected energy rate";
 }
@@ -397,13 +398,13 @@ void expect_corrected_rates(const BeamSeries& s, const std::string& name) {
 // tests, not parameterized ones: ctest records the cost of a test only under a name without
 // spaces, and orders the next run by it.
 TEST(CgElasticity, BeamConvergenceOnHex) {
-  expect_corrected_rates(beam_series(MeshFamily::hex, "hex", true), "hex");
+  expect_corrected_rates(beam_series(MeshFamily::hex, true), MeshFamily::hex);
 }
 
 TEST(CgElasticity, BeamConvergenceOnPerturbedHexAndTheCorrectionsGain) {
-  const BeamSeries corrected = beam_series(MeshFamily::perturbed_hex, "perturbed-hex", true);
-  expect_corrected_rates(corrected, "perturbed-hex");
-  const BeamSeries uncorrected = beam_series(MeshFamily::perturbed_hex, "perturbed-hex", false);
+  const BeamSeries corrected = beam_series(MeshFamily::perturbed_hex, true);
+  expect_corrected_rates(corrected, MeshFamily::perturbed_hex);
+  const BeamSeries uncorrected = beam_series(MeshFamily::perturbed_hex, false);
   EXPECT_GT(uncorrected.energy.back(), corrected.energy.back())
       << "perturbed-hex: the uncorrected energy error at the finest level should exceed the "
          "corrected one";

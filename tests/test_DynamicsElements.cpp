@@ -41,7 +41,7 @@ DynamicsRecord run_first(const std::string& text, const std::string& tag) {
   const fs::path out = fs::temp_directory_path() /
                        ("vorodg_test_DynamicsElements_" + tag + "_" + std::to_string(::getpid()));
   fs::remove_all(out);
-  DynamicsRecord r = run_dynamics(scene, dynamics_runs(scene).front(), out);
+  DynamicsRecord r = run_dynamics(scene, ensemble_runs(scene.meshes).front(), out);
   fs::remove_all(out);
   return r;
 }

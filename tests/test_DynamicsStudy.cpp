@@ -49,7 +49,7 @@ class DynamicsStudy : public ::testing::Test {
   /// Runs the first run of a scene given as JSON text.
   DynamicsRecord run_first(const std::string& text) {
     const DynamicsScene scene = parse_dynamics_scene(text, "test scene");
-    return run_dynamics(scene, dynamics_runs(scene).front(), scratch_ / "run");
+    return run_dynamics(scene, ensemble_runs(scene.meshes).front(), scratch_ / "run");
   }
 
   fs::path scratch_;
@@ -127,10 +127,10 @@ TEST_F(DynamicsStudy, WaveBarArrivesAtTheBarSpeed) {
 }
 
 TEST_F(DynamicsStudy, EveryKeyIsDocumentedAndForceLetsSafetyThrough) {
-  std::ifstream in(kData / ".." / ".." / "docs" / "dynamics.md");
+  std::ifstream in(kData / ".." / ".." / "docs" / "scenes.md");
   const std::string docs((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_FALSE(docs.empty());
-  for (const DynamicsKey& k : dynamics_scene_keys())
+  for (const SceneKey& k : dynamics_scene_keys().keys)
     EXPECT_NE(docs.find("`" + k.name + "`"), std::string::npos) << k.name << " is not documented";
   const std::string text = R"({"study": "dynamics", "problem": "free-body",
     "time": {"safety": 1.2}, "meshes": [{"family": "rcp", "sizes": [0.1]}]})";

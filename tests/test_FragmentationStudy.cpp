@@ -46,7 +46,7 @@ TEST(FragmentationStudy, RefusesWhatItCannotRun) {
   const DynamicsScene soft =
       parse_dynamics_scene(scene(R"("cohesive": {"initial_stiffness": 1e-6})"), "test");
   const fs::path out = fs::temp_directory_path() / ("vorodg_frag_soft_" + std::to_string(getpid()));
-  EXPECT_THROW(run_dynamics(soft, dynamics_runs(soft).front(), out), InputError);
+  EXPECT_THROW(run_dynamics(soft, ensemble_runs(soft.meshes).front(), out), InputError);
   fs::remove_all(out);
 }
 
@@ -55,7 +55,7 @@ TEST(FragmentationStudy, StretchedStripRun) {
   const fs::path out =
       fs::temp_directory_path() / ("vorodg_frag_strip_" + std::to_string(getpid()));
   fs::remove_all(out);
-  const DynamicsRunId id = dynamics_runs(s).front();
+  const EnsembleRunId id = ensemble_runs(s.meshes).front();
   const DynamicsRecord r = run_dynamics(s, id, out);
   const DynamicsMeasures& m = r.measures;
   std::printf(

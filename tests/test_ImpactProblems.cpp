@@ -103,7 +103,7 @@ TEST(ImpactProblems, ProjectileDrivesTheNodesUnderItsNose) {
                "time": {"end": 2e-4}, "outputs": {"vtu": false, "snapshots": [0, 1e-4]})"),
       "test");
   const Scratch out("projectile");
-  const DynamicsRunId id = dynamics_runs(s).front();
+  const EnsembleRunId id = ensemble_runs(s.meshes).front();
   const DynamicsRecord r = run_dynamics(s, id, out.dir);
   ASSERT_TRUE(r.complete) << r.failure;
   EXPECT_LT(r.measures.max_energy_balance_error, 1e-10);
@@ -133,7 +133,7 @@ TEST(ImpactProblems, GravityChangesMomentumByMgt) {
                            "time": {"steps": 50})"),
       "test");
   const Scratch out("gravity");
-  const DynamicsRunId id = dynamics_runs(s).front();
+  const EnsembleRunId id = ensemble_runs(s.meshes).front();
   const DynamicsRecord r = run_dynamics(s, id, out.dir);
   ASSERT_TRUE(r.complete) << r.failure;
   EXPECT_LT(r.measures.max_energy_balance_error, 1e-10);

@@ -40,7 +40,7 @@ TEST_P(NotchedBeam, FollowsItsPathWithTheEnergyBalanced) {
   fs::remove_all(out);
   const double ligament = scene.geometry.domain.height() - scene.geometry.notch_depth;
   const double whole_ligament = scene.law.fracture_energy * ligament * scene.thickness;
-  for (const FractureRunId& id : fracture_runs(scene)) {
+  for (const EnsembleRunId& id : ensemble_runs(scene.meshes)) {
     const FractureRecord r = run_fracture(scene, id, out);
     ASSERT_TRUE(r.complete) << id.id() << ": " << r.failure;
     EXPECT_FALSE(r.ended.empty()) << id.id() << " should end where its load vanishes";

@@ -89,7 +89,7 @@ TEST(PerturbationStudy, IdenticalInputsGiveIdenticalCracks) {
   const fs::path out = fs::temp_directory_path() / ("vorodg_perturb_" + std::to_string(getpid()));
   fs::remove_all(out);
   for (const DynamicsScene& v : s.variants) {
-    const DynamicsRecord r = run_dynamics(v, dynamics_runs(v).front(), out / v.label);
+    const DynamicsRecord r = run_dynamics(v, ensemble_runs(v.meshes).front(), out / v.label);
     ASSERT_TRUE(r.complete) << r.failure;
   }
   write_perturbation_report(s, out);

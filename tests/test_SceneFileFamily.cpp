@@ -166,7 +166,7 @@ TEST_F(SceneFolder, FractureRunReadsTheFile) {
   const FractureScene scene = read_fracture_scene(file);
   ASSERT_EQ(scene.meshes.size(), 1u);
   ASSERT_EQ(scene.meshes[0].sizes.size(), 1u);
-  const FractureRunId run{0, 0, 0, "imported", 1};
+  const EnsembleRunId run{0, 0, 0, "imported", 1};
   ASSERT_NO_THROW(check_fracture_meshes(scene, {run}));
   const FractureRecord r = run_fracture(scene, run, dir_ / "out");
   EXPECT_TRUE(r.complete) << r.failure;

@@ -31,7 +31,7 @@ void BM_FractureStep(benchmark::State& state) {
   scene.loading.steps = static_cast<int>(kSteps);
   scene.loading.tail_steps = 0;
   scene.vtu_every = 0;
-  FractureRunId id;
+  EnsembleRunId id;
   id.label = "bench";
   id.seed = 5;
   const fs::path out = fs::temp_directory_path() / "vorodg_bench_fracture";

@@ -1,6 +1,7 @@
 #pragma once
 // `vorodg run SCENE.json -o DIR`: runs a study scene (resuming what DIR already holds) and
-// writes its report; `vorodg run --list` lists the shipped scenes.
+// writes its report; `vorodg run --list` lists the shipped scenes, `vorodg run --keys KIND` the
+// keys of a study kind.
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -11,6 +12,7 @@ struct RunCommandOptions {
   std::string out;
   int threads = 2;
   bool list = false;
+  std::string keys;  // a study kind: print its keys and stop
   bool no_plots = false;
   bool quiet = false;
   bool force = false;  // dynamics: allow time.safety >= 1

@@ -12,7 +12,7 @@
 namespace vorodg {
 namespace {
 
-PolygonMesh body_mesh(const DynamicsScene& scene, const DynamicsRunId& run, int body) {
+PolygonMesh body_mesh(const DynamicsScene& scene, const EnsembleRunId& run, int body) {
   const SceneMesh& block = scene.meshes[run.mesh];
   const Rectangle& domain = scene.bodies[body].domain;
   MeshSpec spec = block.spec(scene.bodies[0].domain, run.level, run.seed);
@@ -46,7 +46,7 @@ int BodiesMesh::body_of_cell(int c) const {
   return static_cast<int>(it - first_cell.begin()) - 1;
 }
 
-BodiesMesh bodies_mesh(const DynamicsScene& scene, const DynamicsRunId& run) {
+BodiesMesh bodies_mesh(const DynamicsScene& scene, const EnsembleRunId& run) {
   std::vector<Point> vertices;
   std::vector<int> offsets{0}, loops;
   BodiesMesh out;

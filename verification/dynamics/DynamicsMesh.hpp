@@ -10,17 +10,9 @@
 
 #include "core/mesh/PolygonMesh.hpp"
 #include "verification/dynamics/DynamicsScene.hpp"
+#include "verification/harness/EnsembleRun.hpp"
 
 namespace vorodg {
-
-struct DynamicsRunId {
-  int mesh = 0, level = 0, realization = 0;
-  std::string label;  // the mesh block's label
-  std::uint64_t seed = 0;
-  std::string id() const {
-    return label + "-L" + std::to_string(level) + "-R" + std::to_string(realization);
-  }
-};
 
 struct BodiesMesh {
   PolygonMesh mesh;  // its domain is the bounding box of the bodies
@@ -34,6 +26,6 @@ struct BodiesMesh {
 /// Builds and validates the bodies' mesh of one run. Body 0 is meshed with the run's seed; body
 /// 1 (two-blocks) with a seed derived from it, or, for family file, as body 0's mesh moved.
 /// Throws InputError for a bad mesh spec, NumericalError for an invalid mesh.
-BodiesMesh bodies_mesh(const DynamicsScene& scene, const DynamicsRunId& run);
+BodiesMesh bodies_mesh(const DynamicsScene& scene, const EnsembleRunId& run);
 
 }  // namespace vorodg

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <set>
 #include <sstream>
 
 #include "core/element/ElasticityIntegrator.hpp"
@@ -153,30 +152,13 @@ void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDif
 
 }  // namespace
 
-std::vector<DynamicsRunId> dynamics_runs(const DynamicsScene& scene) {
-  std::vector<DynamicsRunId> runs;
-  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    const SceneMesh& mesh = scene.meshes[m];
-    for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
-      for (int r = 0; r < mesh.realizations; ++r)
-        runs.push_back({static_cast<int>(m), level, r, mesh.label,
-                        derive_seed(derive_seed(mesh.seed, level), r)});
-  }
-  return runs;
+void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<EnsembleRunId>& runs) {
+  check_each_level(
+      runs, [&](const EnsembleRunId& run) { bodies_mesh(scene, run); },
+      "scene " + scene.path.string() + ": ");
 }
 
-void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<DynamicsRunId>& runs) {
-  std::set<std::pair<int, int>> seen;
-  for (const DynamicsRunId& run : runs)
-    if (seen.insert({run.mesh, run.level}).second) try {
-        bodies_mesh(scene, run);
-      } catch (const InputError& e) {  // say which mesh of the scene, at which level
-        throw InputError("scene " + scene.path.string() + ": meshes[" + std::to_string(run.mesh) +
-                         "] level " + std::to_string(run.level) + ": " + e.what());
-      }
-}
-
-DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& id,
+DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
                             const fs::path& out) {
   Stopwatch clock;
   DynamicsRecord r;

@@ -14,7 +14,7 @@
 namespace vorodg {
 
 struct DynamicsRecord {
-  DynamicsRunId run;
+  EnsembleRunId run;
   int cells = 0, dofs = 0;
   double h_avg = 0.0;
   double dt = 0.0;
@@ -29,18 +29,14 @@ struct DynamicsRecord {
   double loop_seconds = 0.0;  // of which the time loop
 };
 
-/// The runs of a scene: every (mesh, level, realization), realization seeds derived as in every
-/// study.
-std::vector<DynamicsRunId> dynamics_runs(const DynamicsScene& scene);
-
 /// Builds the bodies' mesh of the first realization of every level, so that a mesh spec the
 /// bodies cannot carry is refused as bad input (naming the mesh block) before anything runs.
-void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<DynamicsRunId>& runs);
+void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<EnsembleRunId>& runs);
 
 /// Runs one realization, writing history/<id>.csv and (outputs.vtu) vtu/<id>.pvd under `out`.
 /// A run that becomes unstable or breaks down numerically stops there: it keeps its history and
 /// is recorded incomplete with the reason.
-DynamicsRecord run_dynamics(const DynamicsScene& scene, const DynamicsRunId& run,
+DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& run,
                             const std::filesystem::path& out);
 
 }  // namespace vorodg

@@ -11,6 +11,7 @@
 #include "core/util/Format.hpp"
 #include "verification/dynamics/DynamicsKeys.hpp"
 #include "verification/dynamics/DynamicsSceneReader.hpp"
+#include "verification/harness/SceneVariants.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/model/SettingsSchema.hpp"
 #include "verification/study/SceneObject.hpp"
@@ -203,7 +204,7 @@ void DynamicsSceneReader::read_time() {
   if (end) s_.end = number(t, "time.end", 0.0), note("time.steps", "none (time.end)");
   if (steps) s_.steps = integer(t, "time.steps", 1), note("time.end", "none (time.steps)");
   if (!end && !steps) default_end();
-  const DynamicsKey& safety = dynamics_key("time.safety");
+  const SceneKey& safety = table_.at("time.safety");
   s_.safety = t.number("safety", key_default(safety));
   if (const auto bad = check_key(safety, s_.safety)) t.fail_value("safety", *bad);
   if (s_.safety >= 1.0 && !force_)
@@ -268,8 +269,7 @@ DynamicsScene DynamicsSceneReader::read() {
     s_.meshes.push_back(read_mesh(m, s_.bodies[0].domain));
   }
   top_.finish();
-  for (const DynamicsKey& k : dynamics_scene_keys())
-    if (notes_.count(k.name)) s_.settings.emplace_back(k.name, notes_.at(k.name));
+  s_.settings = settings();
   return s_;
 }
 
@@ -315,28 +315,14 @@ DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& s
   if (!root.is_object()) throw InputError("scene " + source + ": expected a JSON object");
   if (root.contains("perturb")) return perturbed_scene(root, source, force);
   if (!root.contains("variants")) return DynamicsSceneReader(root, source, force).read();
-  json base = root;
-  base.erase("variants");
-  const json& list = root["variants"];
-  if (!list.is_array() || list.empty())
-    throw InputError("scene " + source + ": variants: expected a non-empty array of objects");
+  json base;
+  const std::vector<SceneVariant> variants = scene_variants(root, source, base);
   DynamicsScene top = DynamicsSceneReader(base, source, force).read();
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    if (!list[i].is_object() || !list[i].contains("label"))
-      throw InputError("scene " + source + ": variants[" + std::to_string(i) +
-                       "]: expected an object with a label");
-    json merged = base;
-    merged.merge_patch(list[i]);
-    const std::string where = source + " variants[" + std::to_string(i) + "]";
-    top.variants.push_back(DynamicsSceneReader(merged, where, force).read());
+  for (const SceneVariant& v : variants) {
+    top.variants.push_back(DynamicsSceneReader(v.root, v.source, force).read());
     top.variants.back().name = top.name;
   }
   return top;
-}
-
-bool is_dynamics_scene(const std::filesystem::path& path) {
-  const std::string kind = scene_study_kind(path);
-  return kind == "dynamics" || kind == "fragmentation";
 }
 
 DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force) {

@@ -126,8 +126,6 @@ struct DynamicsScene {
 /// time.safety >= 1 (`vorodg run --force`).
 DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source,
                                    bool force = false);
-/// True if the scene file's study is `dynamics` or `fragmentation`.
-bool is_dynamics_scene(const std::filesystem::path& path);
 DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force = false);
 
 }  // namespace vorodg

@@ -13,8 +13,8 @@
 #include "verification/dynamics/DynamicsHistory.hpp"
 #include "verification/dynamics/FragmentLevels.hpp"
 #include "verification/dynamics/FragmentationRun.hpp"
+#include "verification/harness/EnsembleStudy.hpp"
 #include "verification/study/Ensemble.hpp"
-#include "verification/study/ResumableRuns.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -59,74 +59,37 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
   return fields;
 }
 
-double number_or_nan(const json& j, const char* key) {
-  return j.contains(key) && j.at(key).is_number() ? j.at(key).get<double>() : NAN;
-}
-
-json to_json(const DynamicsRecord& r) {
-  json j = {{"id", r.run.id()},
-            {"mesh", r.run.label},
-            {"level", r.run.level},
-            {"realization", r.run.realization},
-            {"seed", r.run.seed},
-            {"cells", r.cells},
-            {"dofs", r.dofs},
-            {"h_avg", r.h_avg},
-            {"dt", r.dt},
-            {"dt_critical_lanczos", r.dt_lanczos},
-            {"dt_critical_cells", r.dt_cells},
-            {"lanczos_iterations", r.lanczos_iterations},
-            {"steps", r.steps},
-            {"end_time", r.end_time},
-            {"contact_steps", r.measures.contact_steps},
-            {"contact_ended", r.measures.contact_ended},
-            {"complete", r.complete},
-            {"failure", r.failure},
-            {"seconds", r.seconds},
-            {"loop_seconds", r.loop_seconds}};
-  for (const auto& [name, field] : measure_fields())
-    if (std::isfinite(r.measures.*field)) j[name] = r.measures.*field;  // absent: not measured
-  return j;
-}
-
-DynamicsRecord from_json(const json& j, const DynamicsRunId& id) {
-  DynamicsRecord r;
-  r.run = id;
-  r.cells = j.value("cells", 0), r.dofs = j.value("dofs", 0), r.h_avg = j.value("h_avg", 0.0);
-  r.dt = j.value("dt", 0.0), r.dt_lanczos = j.value("dt_critical_lanczos", 0.0);
-  r.dt_cells = j.value("dt_critical_cells", 0.0);
-  r.lanczos_iterations = j.value("lanczos_iterations", 0);
-  r.steps = j.value("steps", 0L), r.end_time = j.value("end_time", 0.0);
-  r.measures.contact_steps = j.value("contact_steps", 0);
-  r.measures.contact_ended = j.value("contact_ended", true);
-  r.complete = j.value("complete", false), r.failure = j.value("failure", "");
-  r.seconds = j.value("seconds", 0.0), r.loop_seconds = j.value("loop_seconds", 0.0);
-  for (const auto& [name, field] : measure_fields()) r.measures.*field = number_or_nan(j, name);
-  return r;
+/// Every field of a dynamics record, with the scene's settings that results.csv lists beside
+/// them (problem, estimate, safety: not part of the record's JSON).
+std::vector<RecordField<DynamicsRecord>> dynamics_fields(const DynamicsScene& scene) {
+  using R = DynamicsRecord;
+  const CsvFormat fine{true, 12, true};
+  std::vector<RecordField<R>> f = run_id_fields<R>();
+  f.insert(f.end(),
+           {csv_column<R>("problem", dynamics_problem_name(scene.problem)),
+            field("cells", &R::cells), field("dofs", &R::dofs), field("h_avg", &R::h_avg, fine),
+            field("dt", &R::dt, fine), field("dt_critical_lanczos", &R::dt_lanczos, fine),
+            field("dt_critical_cells", &R::dt_cells, fine),
+            field("lanczos_iterations", &R::lanczos_iterations),
+            csv_column<R>("estimate", step_estimate_name(scene.estimate)),
+            csv_column<R>("safety", scene.safety), field("steps", &R::steps),
+            field("end_time", &R::end_time, fine)});
+  for (const auto& [name, member] : measure_fields())  // absent: not measured
+    f.push_back({name, [m = member](const R& r) { return number_json(r.measures.*m); },
+                 [m = member](R& r, const json& j) { r.measures.*m = read_number(j); },
+                 CsvFormat{true, 10, true}, true, true, true});
+  f.push_back({"contact_steps", [](const R& r) { return json(r.measures.contact_steps); },
+               [](R& r, const json& j) { r.measures.contact_steps = j.get<int>(); }});
+  f.push_back({"contact_ended", [](const R& r) { return json(r.measures.contact_ended); },
+               [](R& r, const json& j) { r.measures.contact_ended = j.get<bool>(); }});
+  f.insert(f.end(), {field("complete", &R::complete), field("failure", &R::failure, kNotInCsv),
+                     field("seconds", &R::seconds, {true, 4, false}),
+                     field("loop_seconds", &R::loop_seconds, kNotInCsv)});
+  return f;
 }
 
 std::string cell(double x, int precision = 6) {
   return std::isfinite(x) ? fmt(x, precision) : "";
-}
-
-std::string results_csv(const DynamicsScene& scene, const std::vector<DynamicsRecord>& records) {
-  std::ostringstream csv;
-  csv << "id,mesh,level,realization,problem,cells,dofs,h_avg,dt,dt_critical_lanczos,"
-         "dt_critical_cells,lanczos_iterations,estimate,safety,steps,end_time";
-  for (const auto& [name, field] : measure_fields()) csv << ',' << name;
-  csv << ",contact_steps,contact_ended,complete,seconds\n";
-  for (const DynamicsRecord& r : records) {
-    csv << r.run.id() << ',' << r.run.label << ',' << r.run.level << ',' << r.run.realization << ','
-        << dynamics_problem_name(scene.problem) << ',' << r.cells << ',' << r.dofs << ','
-        << cell(r.h_avg, 12) << ',' << cell(r.dt, 12) << ',' << cell(r.dt_lanczos, 12) << ','
-        << cell(r.dt_cells, 12) << ',' << r.lanczos_iterations << ','
-        << step_estimate_name(scene.estimate) << ',' << fmt(scene.safety) << ',' << r.steps << ','
-        << cell(r.end_time, 12);
-    for (const auto& [name, field] : measure_fields()) csv << ',' << cell(r.measures.*field, 10);
-    csv << ',' << r.measures.contact_steps << ',' << (r.measures.contact_ended ? 1 : 0) << ','
-        << (r.complete ? 1 : 0) << ',' << fmt(r.seconds, 4) << '\n';
-  }
-  return csv.str();
 }
 
 /// The worst of a figure over the complete runs that measured it (NaN: none did).
@@ -216,12 +179,15 @@ std::string report_md(const DynamicsScene& scene, const DynamicsStudyResult& res
 
 void write_reports(const DynamicsScene& scene, const DynamicsStudyResult& result,
                    const fs::path& out) {
-  write_file_atomically(out / "results.csv", results_csv(scene, result.records));
+  const std::vector<RecordField<DynamicsRecord>> fields = dynamics_fields(scene);
+  std::string csv = csv_header(fields);
+  for (const DynamicsRecord& r : result.records) csv += csv_row(fields, r);
+  write_file_atomically(out / "results.csv", csv);
   json settings = json::object();
   for (const auto& [key, value] : scene.settings) settings[key] = value;
   json runs = json::array();
   for (const DynamicsRecord& r : result.records) {
-    json j = to_json(r);
+    json j = record_json(fields, r);
     for (const char* timing : {"seconds", "loop_seconds", "check_seconds", "rebuild_seconds"})
       j.erase(timing);  // the same results give the same bytes, on any number of processes
     runs.push_back(j);
@@ -251,38 +217,17 @@ void write_reports(const DynamicsScene& scene, const DynamicsStudyResult& result
 
 DynamicsStudyResult run_dynamics_study(const DynamicsScene& scene, const fs::path& out, int threads,
                                        bool progress) {
-  const std::vector<DynamicsRunId> runs = dynamics_runs(scene);
-  check_dynamics_meshes(scene, runs);
-  fs::create_directories(out);
-  std::vector<std::string> ids;
-  std::vector<double> costs;
-  for (const DynamicsRunId& id : runs) {
-    ids.push_back(id.id());
-    costs.push_back(level_cost(scene.meshes.at(id.mesh), id.level));
-  }
-  const auto done =
-      run_resumable(ids, costs, out / "results.jsonl", threads, progress, [&](std::size_t i) {
-        DynamicsRecord r;
-        try {
-          r = run_dynamics(scene, runs[i], out);
-        } catch (const std::exception& e) {
-          r.run = runs[i];
-          r.failure = e.what();
-        }
-        return RunOutcome{to_json(r), r.run.id() + ": " + std::to_string(r.cells) + " cells, " +
-                                          std::to_string(r.steps) + " steps of " + fmt(r.dt, 4) +
-                                          " s, energy balance " +
-                                          fmt(r.measures.energy_balance_error, 2) + ", " +
-                                          fmt(r.seconds, 3) + " s" +
-                                          (r.complete ? "" : " (incomplete: " + r.failure + ")")};
+  check_dynamics_meshes(scene, ensemble_runs(scene.meshes));
+  DynamicsStudyResult result = run_study_records<DynamicsRecord>(
+      scene.meshes, out, threads, progress, dynamics_fields(scene),
+      [&](const EnsembleRunId& id) { return run_dynamics(scene, id, out); },
+      [](const DynamicsRecord& r) {
+        return r.run.id() + ": " + std::to_string(r.cells) + " cells, " + std::to_string(r.steps) +
+               " steps of " + fmt(r.dt, 4) + " s, energy balance " +
+               fmt(r.measures.energy_balance_error, 2) + ", " + fmt(r.seconds, 3) + " s" +
+               (r.complete ? "" : " (incomplete: " + r.failure + ")");
       });
-  DynamicsStudyResult result;
-  if (!Ensemble::writes_reports()) return result;  // the coordinator of a whole study
-  for (const DynamicsRunId& id : runs) {
-    result.records.push_back(from_json(done.at(id.id()), id));
-    if (!result.records.back().complete) ++result.incomplete;
-  }
-  write_reports(scene, result, out);
+  if (Ensemble::writes_reports()) write_reports(scene, result, out);
   return result;
 }
 

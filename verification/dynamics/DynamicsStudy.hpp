@@ -8,13 +8,11 @@
 #include <vector>
 
 #include "verification/dynamics/DynamicsRun.hpp"
+#include "verification/harness/EnsembleStudy.hpp"
 
 namespace vorodg {
 
-struct DynamicsStudyResult {
-  std::vector<DynamicsRecord> records;
-  int incomplete = 0;
-};
+using DynamicsStudyResult = StudyRecords<DynamicsRecord>;
 
 /// Runs what results.jsonl in `out` does not hold yet; writes the reports; returns every record.
 DynamicsStudyResult run_dynamics_study(const DynamicsScene& scene, const std::filesystem::path& out,

@@ -62,7 +62,7 @@ void write_perturbation_report(const DynamicsScene& scene, const fs::path& out) 
   const fs::path reference = out / scene.variants[0].label / "cracks";
   for (std::size_t i = 1; i < scene.variants.size(); ++i) {
     const DynamicsScene& v = scene.variants[i];
-    for (const DynamicsRunId& id : dynamics_runs(v)) {
+    for (const EnsembleRunId& id : ensemble_runs(v.meshes)) {
       const std::string file = id.id() + ".csv";
       const auto ref = read_events(reference / file),
                  mine = read_events(out / v.label / "cracks" / file);

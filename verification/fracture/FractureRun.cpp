@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include "core/element/ElasticityIntegrator.hpp"
@@ -13,7 +12,6 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "core/util/Random.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/CohesiveFracture.hpp"
 #include "dg/QuasiStaticPath.hpp"
@@ -78,7 +76,7 @@ std::string crack_faces(const CohesiveFracture& model, const std::vector<Interfa
   return csv.str();
 }
 
-GeneratedMesh run_mesh(const FractureScene& scene, const FractureRunId& run) {
+GeneratedMesh run_mesh(const FractureScene& scene, const EnsembleRunId& run) {
   MeshSpec spec = scene.meshes[run.mesh].spec(scene.geometry.domain, run.level, run.seed);
   if (spec.symmetric && scene.geometry.notch_depth > 0.0)  // the notch tip must be a vertex
     spec.line_marks = {scene.geometry.domain.y0() + scene.geometry.notch_depth};
@@ -90,34 +88,16 @@ GeneratedMesh run_mesh(const FractureScene& scene, const FractureRunId& run) {
 
 }  // namespace
 
-std::vector<FractureRunId> fracture_runs(const FractureScene& scene) {
-  std::vector<FractureRunId> runs;
-  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    const SceneMesh& mesh = scene.meshes[m];
-    for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
-      for (int r = 0; r < mesh.realizations; ++r) {
-        FractureRunId id;
-        id.mesh = static_cast<int>(m), id.level = level, id.realization = r;
-        id.label = mesh.label;
-        id.seed = derive_seed(derive_seed(mesh.seed, level), r);
-        runs.push_back(id);
-      }
-  }
-  return runs;
-}
-
-void check_fracture_meshes(const FractureScene& scene, const std::vector<FractureRunId>& runs) {
-  std::set<std::pair<int, int>> seen;
-  for (const FractureRunId& run : runs)
-    if (seen.insert({run.mesh, run.level}).second) try {
+void check_fracture_meshes(const FractureScene& scene, const std::vector<EnsembleRunId>& runs) {
+  check_each_level(
+      runs,
+      [&](const EnsembleRunId& run) {
         fracture_setup(run_mesh(scene, run).mesh, scene.geometry, scene.mode, scene.thickness);
-      } catch (const InputError& e) {  // say which mesh of the scene, at which level
-        throw InputError("meshes[" + std::to_string(run.mesh) + "] level " +
-                         std::to_string(run.level) + ": " + e.what());
-      }
+      },
+      "");
 }
 
-FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run,
+FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run,
                             const fs::path& out) {
   Stopwatch clock;
   FractureRecord r;

@@ -8,20 +8,12 @@
 #include <vector>
 
 #include "verification/fracture/FractureScene.hpp"
+#include "verification/harness/EnsembleRun.hpp"
 
 namespace vorodg {
 
-struct FractureRunId {
-  int mesh = 0, level = 0, realization = 0;
-  std::string label;  // family label
-  std::uint64_t seed = 0;
-  std::string id() const {
-    return label + "-L" + std::to_string(level) + "-R" + std::to_string(realization);
-  }
-};
-
 struct FractureRecord {
-  FractureRunId run;
+  EnsembleRunId run;
   int cells = 0, dofs = 0, full_dg_dofs = 0;
   double h_avg = 0.0;
   double peak_load = 0.0, displacement_at_peak = 0.0;
@@ -36,16 +28,13 @@ struct FractureRecord {
   double path_seconds = 0.0;  // of which following the path (after mesh, element and setup)
 };
 
-/// Every run of the scene: each mesh, level and realization, with its seed.
-std::vector<FractureRunId> fracture_runs(const FractureScene& scene);
-
 /// Builds the first realization of every mesh level and its fracture setup, so that a scene
 /// whose geometry the meshes cannot carry (no vertex at the load point, no edges along the crack
 /// line) is refused as bad input before anything runs or is written.
-void check_fracture_meshes(const FractureScene& scene, const std::vector<FractureRunId>& runs);
+void check_fracture_meshes(const FractureScene& scene, const std::vector<EnsembleRunId>& runs);
 
 /// Runs one realization, writing curves/<id>.csv, cracks/<id>.csv and vtu/<id>.pvd under `out`.
-FractureRecord run_fracture(const FractureScene& scene, const FractureRunId& run,
+FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run,
                             const std::filesystem::path& out);
 
 }  // namespace vorodg

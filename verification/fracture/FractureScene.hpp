@@ -1,10 +1,12 @@
 #pragma once
-// The scene of a `fracture` study (keys in docs/scenes.md "Fracture scenes"): one problem, one
+// The scene of a `fracture` study (keys in FractureKeys.cpp, listed in docs/scenes.md "Fracture
+// studies"): one problem, one
 // material, one cohesive law and criterion, one cracking mode and loading, over mesh families with
 // levels and realizations. `variants` (a list of objects merged over the top-level keys, each
 // with a `label`) runs several such studies side by side, each into its own subfolder.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/element/ElementTable.hpp"
@@ -33,13 +35,13 @@ struct FractureScene {
   PathOptions loading;
   std::vector<SceneMesh> meshes;
   int vtu_every = 10;  // a .vtu of the deformed mesh every this many steps (0: none)
+  /// Every key and the value used, in the key table's order (the echo).
+  std::vector<std::pair<std::string, std::string>> settings;
   std::vector<FractureScene> variants;
 };
 
 /// Reads a fracture scene from its JSON text; throws InputError naming the key.
 FractureScene parse_fracture_scene(const std::string& text, const std::string& source);
-/// True if the scene file's study is `fracture`.
-bool is_fracture_scene(const std::filesystem::path& path);
 FractureScene read_fracture_scene(const std::filesystem::path& path);
 
 }  // namespace vorodg

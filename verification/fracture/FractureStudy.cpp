@@ -10,11 +10,11 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
+#include "verification/harness/EnsembleStudy.hpp"
 #include "verification/report/Extrapolation.hpp"
 #include "verification/report/KolmogorovSmirnov.hpp"
 #include "verification/report/SampleStatistics.hpp"
 #include "verification/study/Ensemble.hpp"
-#include "verification/study/ResumableRuns.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -22,46 +22,28 @@ using nlohmann::json;
 namespace vorodg {
 namespace {
 
-json to_json(const FractureRecord& r) {
-  json j = {{"id", r.run.id()},
-            {"mesh", r.run.label},
-            {"level", r.run.level},
-            {"realization", r.run.realization},
-            {"seed", r.run.seed},
-            {"cells", r.cells},
-            {"dofs", r.dofs},
-            {"full_dg_dofs", r.full_dg_dofs},
-            {"h_avg", r.h_avg},
-            {"peak_load", r.peak_load},
-            {"displacement_at_peak", r.displacement_at_peak},
-            {"dissipated_energy", r.dissipated_energy},
-            {"crack_length", r.crack_length},
-            {"energy_balance_error", r.energy_balance_error},
-            {"points", r.points},
-            {"newton_iterations", r.newton_iterations},
-            {"factorizations", r.factorizations},
-            {"complete", r.complete},
-            {"failure", r.failure},
-            {"ended", r.ended},
-            {"seconds", r.seconds}};
-  if (!std::isnan(r.closed_form_error)) j["closed_form_error"] = r.closed_form_error;
-  return j;
-}
-
-FractureRecord from_json(const json& j, const FractureRunId& id) {
-  FractureRecord r;
-  r.run = id;
-  r.cells = j.at("cells"), r.dofs = j.at("dofs"), r.full_dg_dofs = j.at("full_dg_dofs");
-  r.h_avg = j.at("h_avg"), r.peak_load = j.at("peak_load");
-  r.displacement_at_peak = j.at("displacement_at_peak");
-  r.dissipated_energy = j.at("dissipated_energy"), r.crack_length = j.at("crack_length");
-  r.energy_balance_error = j.at("energy_balance_error");
-  r.points = j.at("points"), r.newton_iterations = j.at("newton_iterations");
-  r.factorizations = j.at("factorizations");
-  r.complete = j.at("complete"), r.failure = j.at("failure"), r.seconds = j.at("seconds");
-  r.ended = j.value("ended", "");
-  if (j.contains("closed_form_error")) r.closed_form_error = j.at("closed_form_error");
-  return r;
+/// Every field of a fracture record: its JSON line and its results.csv columns.
+const std::vector<RecordField<FractureRecord>>& fracture_fields() {
+  using R = FractureRecord;
+  static const std::vector<RecordField<R>> fields = [] {
+    const CsvFormat fine{true, 12, false};
+    std::vector<RecordField<R>> f = run_id_fields<R>();
+    f.insert(f.end(), {field("cells", &R::cells), field("dofs", &R::dofs),
+                       field("full_dg_dofs", &R::full_dg_dofs), field("h_avg", &R::h_avg, fine),
+                       field("peak_load", &R::peak_load, fine),
+                       field("displacement_at_peak", &R::displacement_at_peak, fine),
+                       field("dissipated_energy", &R::dissipated_energy, fine),
+                       field("crack_length", &R::crack_length, fine),
+                       field("energy_balance_error", &R::energy_balance_error),
+                       field("closed_form_error", &R::closed_form_error, {true, 6, true}, true),
+                       field("points", &R::points, kNotInCsv),
+                       field("newton_iterations", &R::newton_iterations, kNotInCsv),
+                       field("factorizations", &R::factorizations, kNotInCsv),
+                       field("complete", &R::complete), field("failure", &R::failure, kNotInCsv),
+                       field("ended", &R::ended, kNotInCsv), field("seconds", &R::seconds)});
+    return f;
+  }();
+  return fields;
 }
 
 struct LevelStats {
@@ -119,19 +101,9 @@ std::string peak_extrapolation(const std::vector<LevelStats>& levels, json& summ
 
 void write_reports(const FractureScene& scene, const FractureStudyResult& result,
                    const fs::path& out) {
-  std::ostringstream csv;
-  csv << "id,mesh,level,realization,cells,dofs,full_dg_dofs,h_avg,peak_load,displacement_at_peak,"
-         "dissipated_energy,crack_length,energy_balance_error,closed_form_error,complete,"
-         "seconds\n";
-  for (const FractureRecord& r : result.records)
-    csv << r.run.id() << ',' << r.run.label << ',' << r.run.level << ',' << r.run.realization << ','
-        << r.cells << ',' << r.dofs << ',' << r.full_dg_dofs << ',' << fmt(r.h_avg, 12) << ','
-        << fmt(r.peak_load, 12) << ',' << fmt(r.displacement_at_peak, 12) << ','
-        << fmt(r.dissipated_energy, 12) << ',' << fmt(r.crack_length, 12) << ','
-        << fmt(r.energy_balance_error, 6) << ','
-        << (std::isnan(r.closed_form_error) ? "" : fmt(r.closed_form_error, 6)) << ','
-        << (r.complete ? 1 : 0) << ',' << fmt(r.seconds, 6) << '\n';
-  write_file_atomically(out / "results.csv", csv.str());
+  std::string csv = csv_header(fracture_fields());
+  for (const FractureRecord& r : result.records) csv += csv_row(fracture_fields(), r);
+  write_file_atomically(out / "results.csv", csv);
 
   const std::vector<LevelStats> levels = by_level(result.records);
   json summary = {{"scene", scene.name},
@@ -214,37 +186,17 @@ void write_reports(const FractureScene& scene, const FractureStudyResult& result
 
 FractureStudyResult run_fracture_study(const FractureScene& scene, const fs::path& out, int threads,
                                        bool progress) {
-  const std::vector<FractureRunId> runs = fracture_runs(scene);
-  check_fracture_meshes(scene, runs);
-  fs::create_directories(out);
-  std::vector<std::string> ids;
-  std::vector<double> costs;
-  for (const FractureRunId& id : runs) {
-    ids.push_back(id.id());
-    costs.push_back(level_cost(scene.meshes.at(id.mesh), id.level));
-  }
-  const auto done =
-      run_resumable(ids, costs, out / "results.jsonl", threads, progress, [&](std::size_t i) {
-        FractureRecord r;
-        try {
-          r = run_fracture(scene, runs[i], out);
-        } catch (const std::exception& e) {
-          r.run = runs[i];
-          r.failure = e.what();
-        }
-        return RunOutcome{to_json(r), r.run.id() + ": peak " + fmt(r.peak_load, 5) + " N, " +
-                                          std::to_string(r.points) + " points, " +
-                                          fmt(r.seconds, 3) + " s" +
-                                          (r.complete ? "" : " (incomplete: " + r.failure + ")") +
-                                          (r.ended.empty() ? "" : " (ended: " + r.ended + ")")};
+  check_fracture_meshes(scene, ensemble_runs(scene.meshes));
+  FractureStudyResult result = run_study_records<FractureRecord>(
+      scene.meshes, out, threads, progress, fracture_fields(),
+      [&](const EnsembleRunId& id) { return run_fracture(scene, id, out); },
+      [](const FractureRecord& r) {
+        return r.run.id() + ": peak " + fmt(r.peak_load, 5) + " N, " + std::to_string(r.points) +
+               " points, " + fmt(r.seconds, 3) + " s" +
+               (r.complete ? "" : " (incomplete: " + r.failure + ")") +
+               (r.ended.empty() ? "" : " (ended: " + r.ended + ")");
       });
-  FractureStudyResult result;
-  if (!Ensemble::writes_reports()) return result;  // the coordinator of a whole study
-  for (const FractureRunId& id : runs) {
-    result.records.push_back(from_json(done.at(id.id()), id));
-    if (!result.records.back().complete) ++result.incomplete;
-  }
-  write_reports(scene, result, out);
+  if (Ensemble::writes_reports()) write_reports(scene, result, out);
   return result;
 }
 

@@ -9,13 +9,11 @@
 #include <vector>
 
 #include "verification/fracture/FractureRun.hpp"
+#include "verification/harness/EnsembleStudy.hpp"
 
 namespace vorodg {
 
-struct FractureStudyResult {
-  std::vector<FractureRecord> records;
-  int incomplete = 0;
-};
+using FractureStudyResult = StudyRecords<FractureRecord>;
 
 /// Runs what results.jsonl in `out` does not hold yet; writes the reports; returns every record.
 FractureStudyResult run_fracture_study(const FractureScene& scene, const std::filesystem::path& out,

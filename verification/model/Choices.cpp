@@ -1,5 +1,7 @@
 #include "verification/model/Choices.hpp"
 
+#include "verification/harness/StudyKind.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string_view>
@@ -122,15 +124,12 @@ mean   each cell's mean stress (the report's Eq. 29)
   return choices;
 }
 
-const Choices& study_choices() {
-  static const Choices choices = table(R"(
-convergence    errors and rates over levels and realizations
-penalty-sweep  the same, over a list of k_p per DG formulation
-patch-suite    every formulation on affine fields: pass or fail against the expected
-trade-off      error against wall time over the knobs; Pareto front
-extremes       sweeps to the numerical extremes, a verdict per run
-fracture       cohesive crack growth along a load path: curves, cracks, distributions per level
-)");
+const Choices& study_choices() {  // the registry's kinds (verification/kinds/StudyKinds.cpp)
+  static const Choices choices = [] {
+    Choices c;
+    for (const StudyKind& kind : study_kinds()) c.push_back({kind.name, kind.doc});
+    return c;
+  }();
   return choices;
 }
 

@@ -60,11 +60,13 @@ SettingSpec choice(std::string key, std::string flag, std::string doc, SettingSc
   return spec;
 }
 
-SettingRange above(double lower) {
-  return {lower, std::nullopt, true, true, {}};
+// Every number has a finite upper bound too: a generous limit of what the physics allows, so
+// that a value that would overflow a run is refused as bad input (docs/robustness.md).
+SettingRange above(double lower, double upper) {
+  return {lower, upper, true, false, {}};
 }
-SettingRange at_least(double lower) {
-  return {lower, std::nullopt, false, true, {}};
+SettingRange at_least(double lower, double upper) {
+  return {lower, upper, false, false, {}};
 }
 SettingRange one_of(std::vector<int> allowed) {
   return {std::nullopt, std::nullopt, true, true, allowed};
@@ -97,7 +99,7 @@ SettingSpec kp_number() {
   SettingSpec spec = base("kp", "--kp", "k_p",
                           "DG penalty multiplier: eps = k_p E / h, or k_p times the proven "
                           "coercive bound with penalty auto",
-                          SettingKind::number, SettingScope::formulation, above(0));
+                          SettingKind::number, SettingScope::formulation, above(0, 1e16));
   spec.get = [](const S& s) { return penalty_multiplier(dg_options(s)); };
   spec.set = [](S& s, double v) { s.dg.kp = v; };
   spec.default_doc = "1 with penalty auto, else 1000";
@@ -120,12 +122,12 @@ std::vector<SettingSpec> make_specs() {
           "plane", "--plane", "plane stress or plane strain", Scope::material, plane_choices(),
           [](const S& s) { return plane_name(s.plane); },
           [](S& s, const std::string& v) { s.plane = parse_plane(v); }),
-      number("E", "--E", "E", "Young's modulus", Scope::material, above(0),
+      number("E", "--E", "E", "Young's modulus", Scope::material, above(0, 1e13),
              [](S& s) -> double& { return s.E; }),
       number("nu", "--nu", "nu", "Poisson's ratio", Scope::material, {-1.0, 0.5, true, true, {}},
              [](S& s) -> double& { return s.nu; }),
-      number("load", "--load", "P", "beam: end load P", Scope::material, {},
-             [](S& s) -> double& { return s.load; }),
+      number("load", "--load", "P", "beam: end load P", Scope::material,
+             {-1e15, 1e15, false, false, {}}, [](S& s) -> double& { return s.load; }),
       flag("mean_dilation", "--mean-dilation", "mean-dilation (B-bar) strain operator",
            Scope::formulation, [](S& s) -> bool& { return s.mean_dilation; }),
       choice(
@@ -134,7 +136,7 @@ std::vector<SettingSpec> make_specs() {
           [](S& s, const std::string& v) { s.element.family = parse_element(v); }),
       number("vem_stabilization", "--vem-stabilization", "vem_stabilization",
              "vem: the stabilization's scale tau, times trace(K_consistency) / (2n)",
-             Scope::formulation, above(0),
+             Scope::formulation, above(0, 1e6),
              [](S& s) -> double& { return s.element.vem_stabilization; }),
       flag(
           "correction", "--no-correction", "divergence-consistency correction (the flag skips it)",
@@ -154,9 +156,11 @@ std::vector<SettingSpec> make_specs() {
            "DG, penalty auto: interface average weighted by the cells' trace constants",
            Scope::formulation, [](S& s) -> bool& { return s.dg.weighted_average; }),
       number("tolerance", "--tol", "tolerance", "DG iterations: relative change to stop at",
-             Scope::formulation, above(0), [](S& s) -> double& { return s.dg.tolerance; }),
+             Scope::formulation, {0.0, 1.0, true, false, {}},
+             [](S& s) -> double& { return s.dg.tolerance; }),
       integer("max_iterations", "--max-iter", "max_iterations", "DG iterations: at most this many",
-              Scope::formulation, at_least(1), [](S& s) -> int& { return s.dg.max_iterations; }),
+              Scope::formulation, at_least(1, 1e7),
+              [](S& s) -> int& { return s.dg.max_iterations; }),
       flag("al_update_kp", "--al-update-kp",
            "dg-al: update lambda with k_p E [u] (the report's Eq. 26) instead of eps [u]",
            Scope::formulation, [](S& s) -> bool& { return s.dg.al_update_kp; }),
@@ -171,7 +175,8 @@ std::vector<SettingSpec> make_specs() {
       flag("energy_error", "", "compute the energy norm of the error too", Scope::outputs,
            [](S& s) -> bool& { return s.energy_error; }),
       integer("threads", "--threads", "threads", "threads for setup, assembly and errors",
-              Scope::command_line, at_least(1), [](S& s) -> int& { return s.element.threads; }),
+              Scope::command_line, at_least(1, 4096),
+              [](S& s) -> int& { return s.element.threads; }),
       choice(
           "ordering", "--ordering", "fill-reducing ordering of the sparse factor",
           Scope::command_line, ordering_choices(),
@@ -184,7 +189,7 @@ std::vector<SettingSpec> make_specs() {
       number("amg_tolerance", "--amg-tol", "amg_tolerance",
              "amg-cg: relative tolerance of CG in the AMG-preconditioned norm; 0 ties it to the "
              "mesh: 0.01 (h_avg/L)^2 within [1e-12, 1e-6]",
-             Scope::formulation, at_least(0),
+             Scope::formulation, {0.0, 1.0, false, true, {}},
              [](S& s) -> double& { return s.solver.amg_tolerance; }),
   };
 }

@@ -9,15 +9,6 @@
 
 namespace vorodg {
 
-std::string scene_study_kind(const std::filesystem::path& path) {
-  try {
-    const nlohmann::json root = nlohmann::json::parse(read_file(path));
-    return root.is_object() ? root.value("study", "") : "";
-  } catch (const nlohmann::json::exception&) {
-    return "";
-  }
-}
-
 using nlohmann::json;
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {

@@ -9,10 +9,6 @@
 
 namespace vorodg {
 
-/// The `study` key of the scene file at `path` ("" if it is not a JSON object or has none):
-/// which reader the file is for.
-std::string scene_study_kind(const std::filesystem::path& path);
-
 /// Levenshtein distance, for "did you mean" suggestions.
 std::size_t edit_distance(const std::string& a, const std::string& b);
 

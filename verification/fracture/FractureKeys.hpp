@@ -1,0 +1,9 @@
+#pragma once
+// The key table of a fracture scene (FractureKeys.cpp; docs/scenes.md "Fracture studies").
+#include "verification/harness/SceneKeys.hpp"
+
+namespace vorodg {
+
+const KeyTable& fracture_scene_keys();
+
+}  // namespace vorodg

@@ -1,0 +1,30 @@
+#pragma once
+// The scene keys of the physical quantities more than one kind has: the elastic material, the
+// element, the cohesive law and the Mohr-Coulomb criterion. Each is spelled, bounded and
+// documented here once; a kind's table splices them in with its own defaults, so that the same
+// quantity has the same key in every kind.
+#include <string>
+#include <vector>
+
+#include "verification/harness/SceneKeys.hpp"
+
+namespace vorodg {
+
+/// material.E, material.nu, material.plane.
+std::vector<SceneKey> elastic_keys(const std::string& E, const std::string& nu);
+
+/// element, vem_stabilization: the element family of every run.
+std::vector<SceneKey> element_keys();
+
+/// The defaults of the cohesive keys where the kinds differ.
+struct CohesiveDefaults {
+  std::string strength, fracture_energy, initial_stiffness, friction;
+  std::string initial_stiffness_use;  // when K0 applies, for its doc
+  std::string scope;                  // "fragmentation: ", or "" where every scene has them
+};
+
+/// cohesive.law, .strength, .fracture_energy, .shear_factor, .initial_stiffness, and
+/// criterion.cohesion, .friction, .tensile_cutoff.
+std::vector<SceneKey> cohesive_keys(const CohesiveDefaults& defaults);
+
+}  // namespace vorodg

@@ -1,0 +1,31 @@
+#pragma once
+// The solve ensemble behind the static study kinds (convergence, penalty-sweep, patch-suite,
+// trade-off): every run of the scene (StudyRunner), then the study report with its tables,
+// plots and summary (StudyReport). A kind may check the finished runs before the report.
+#include <functional>
+#include <vector>
+
+#include "verification/harness/StudyKind.hpp"
+#include "verification/model/RunRecord.hpp"
+#include "verification/study/Scene.hpp"
+#include "verification/study/StudyRunner.hpp"
+
+namespace vorodg {
+
+/// The harness's options of a run, in the static runner's terms.
+StudyOptions study_options(const StudyCall& call);
+
+/// Runs the scene, then `check` (if any) on its records, then writes the report and its plots.
+/// Returns 1 if the report found outcomes other than the expected ones (patch suite), else 0.
+int run_static_study(
+    const Scene& scene, const StudyCall& call,
+    const std::function<void(const std::vector<RunRecord>&, const StudyOptions&)>& check = {});
+
+/// The keys of a static scene that the settings schema holds (material, formulations[],
+/// outputs), as scene keys.
+std::vector<SceneKey> static_scene_keys();
+
+/// A static scene's reader for the registry: reads and validates, returns the description.
+std::string read_static_scene(const std::string& text, const std::string& source);
+
+}  // namespace vorodg

@@ -1,0 +1,47 @@
+#include "verification/harness/StudyKind.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "core/util/Errors.hpp"
+#include "verification/study/SceneObject.hpp"
+
+namespace vorodg {
+
+const StudyKind& study_kind(const std::string& name, const std::string& where) {
+  std::string names;
+  const std::vector<StudyKind>& kinds = study_kinds();
+  for (std::size_t i = 0; i < kinds.size(); ++i) {
+    if (kinds[i].name == name) return kinds[i];
+    names += (i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + kinds[i].name;
+  }
+  throw InputError(where + "'" + name + "': expected " + names);
+}
+
+std::string scene_study(const std::string& text, const std::string& source) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e400
+    throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+  SceneObject top(root, "", source);  // refuses anything but an object, as every reader does
+  return top.has("study") ? top.text("study", "") : "convergence";
+}
+
+const StudyKind& scene_kind(const std::string& text, const std::string& source) {
+  return study_kind(scene_study(text, source), "scene " + source + ": key 'study': ");
+}
+
+std::string key_table_markdown(const StudyKind& kind) {
+  std::string md = "| key | type | default | range | meaning |\n|---|---|---|---|---|\n";
+  for (const SceneKey& k : kind.keys())
+    md += "| `" + k.name + "` | " + k.type + " | " + k.fallback + " | " + k.range + " | " + k.doc +
+          " |\n";
+  return md;
+}
+
+std::string read_study_scene(const std::string& text, const std::string& source) {
+  return scene_kind(text, source).read(text, source);
+}
+
+}  // namespace vorodg

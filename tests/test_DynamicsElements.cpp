@@ -16,7 +16,7 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
-#include "verification/dynamics/DynamicsRun.hpp"
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
 #include "verification/model/Choices.hpp"
 
 namespace vorodg {

@@ -1,4 +1,4 @@
-// The dynamics study kind (verification/dynamics), run by run and end to end:
+// The dynamics study kind (verification/kinds/dynamics), run by run and end to end:
 //   - a block thrown at a rigid wall at normal incidence, default penalty (alpha 0.1): no
 //     penetration deeper than 1% of h_avg; the rebound speed and the contact time are printed
 //     beside the 1D elastic-bar estimates (rebound = impact speed, contact time = 2 L / c_bar) and
@@ -21,8 +21,8 @@
 
 #include "core/util/Errors.hpp"
 #include "support/RunVorodg.hpp"
-#include "verification/dynamics/DynamicsKeys.hpp"
-#include "verification/dynamics/DynamicsRun.hpp"
+#include "verification/kinds/dynamics/DynamicsKeys.hpp"
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
 
 namespace vorodg {
 namespace {

@@ -16,7 +16,7 @@
 #include "core/util/Errors.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "verification/SolveRun.hpp"
-#include "verification/fracture/FractureScene.hpp"
+#include "verification/kinds/fracture/FractureScene.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

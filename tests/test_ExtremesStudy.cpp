@@ -17,7 +17,7 @@
 
 #include "support/ExtremesRows.hpp"
 #include "support/RunVorodg.hpp"
-#include "verification/study/ExtremesReport.hpp"
+#include "verification/kinds/extremes/ExtremesReport.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

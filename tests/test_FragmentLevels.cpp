@@ -1,6 +1,6 @@
 // The fragment statistics over the levels of a fragmentation study
-// (verification/dynamics/FragmentLevels, docs/fragmentation.md "Over the levels"), on records and
-// fragment tables written here:
+// (verification/kinds/dynamics/FragmentLevels, docs/fragmentation.md "Over the levels"), on records
+// and fragment tables written here:
 //   - complete runs only, grouped by (mesh block, level), ordered coarse to fine by h_avg;
 //   - per level: the count's mean and sample standard deviation, the largest fragment's mean, the
 //     median run time, and the pooled mass fractions (each run's masses over its own total);
@@ -15,7 +15,7 @@
 #include <fstream>
 
 #include "core/util/Errors.hpp"
-#include "verification/dynamics/FragmentLevels.hpp"
+#include "verification/kinds/dynamics/FragmentLevels.hpp"
 
 namespace vorodg {
 namespace {

@@ -1,4 +1,4 @@
-// The fragmentation study kind (a dynamics scene with cracks; verification/dynamics,
+// The fragmentation study kind (a dynamics scene with cracks; verification/kinds/dynamics,
 // docs/fragmentation.md):
 //   - the reader refuses fragmentation keys in a dynamics study, strip-expansion outside a
 //     fragmentation study, the Lanczos step estimate (valid for the uncracked map only), a
@@ -17,7 +17,7 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
-#include "verification/dynamics/DynamicsRun.hpp"
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
 
 namespace vorodg {
 namespace {

@@ -1,4 +1,4 @@
-// The report's impact problems and the keys that come with them (verification/dynamics/
+// The report's impact problems and the keys that come with them (verification/kinds/dynamics/
 // ImpactKeys, docs/fragmentation.md "The impact problems"):
 //   - column-impact's defaults: the 0.3 x 1.83 m column falling at 7.6 m/s under gravity onto a
 //     plane through its bottom-left corner with normal [sin, cos] of the obliquity (45 degrees),
@@ -22,7 +22,7 @@
 #include <sstream>
 
 #include "core/util/Errors.hpp"
-#include "verification/dynamics/DynamicsRun.hpp"
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
 
 namespace vorodg {
 namespace {

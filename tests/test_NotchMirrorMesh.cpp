@@ -13,9 +13,9 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
+#include "verification/harness/SceneObject.hpp"
 #include "verification/problems/FractureProblem.hpp"
 #include "verification/study/Scene.hpp"
-#include "verification/study/SceneObject.hpp"
 
 namespace vorodg {
 namespace {

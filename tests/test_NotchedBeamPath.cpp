@@ -12,8 +12,8 @@
 #include <sstream>
 #include <string>
 
-#include "verification/fracture/FractureRun.hpp"
-#include "verification/fracture/FractureScene.hpp"
+#include "verification/kinds/fracture/FractureRun.hpp"
+#include "verification/kinds/fracture/FractureScene.hpp"
 
 namespace vorodg {
 namespace {

@@ -1,4 +1,4 @@
-// Sensitivity studies (`perturb` in a fragmentation scene; verification/dynamics/
+// Sensitivity studies (`perturb` in a fragmentation scene; verification/kinds/dynamics/
 // PerturbationReport, docs/fragmentation.md):
 //   - the reader turns perturb {key, values} into one variant per value, labelled perturb-<i>,
 //     with the key set by name or JSON pointer and nothing else changed; perturb {variation,
@@ -21,8 +21,8 @@
 
 #include "core/util/Errors.hpp"
 #include "support/RunVorodg.hpp"
-#include "verification/dynamics/DynamicsRun.hpp"
-#include "verification/dynamics/PerturbationReport.hpp"
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
+#include "verification/kinds/dynamics/PerturbationReport.hpp"
 
 namespace vorodg {
 namespace {

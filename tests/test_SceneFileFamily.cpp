@@ -17,7 +17,7 @@
 #include "core/meshgen/StructuredMeshes.hpp"
 #include "core/util/Errors.hpp"
 #include "support/RunVorodg.hpp"
-#include "verification/fracture/FractureRun.hpp"
+#include "verification/kinds/fracture/FractureRun.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

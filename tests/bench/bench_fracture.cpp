@@ -9,8 +9,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "verification/fracture/FractureRun.hpp"
-#include "verification/fracture/FractureScene.hpp"
+#include "verification/kinds/fracture/FractureRun.hpp"
+#include "verification/kinds/fracture/FractureScene.hpp"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <iostream>
 #include <string>
 
-#include "verification/study/Ensemble.hpp"
-#include "verification/study/TaskPool.hpp"
+#include "verification/harness/Ensemble.hpp"
+#include "verification/harness/TaskPool.hpp"
 
 namespace {
 

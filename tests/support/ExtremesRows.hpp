@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/study/ExtremesReport.hpp"
+#include "verification/kinds/extremes/ExtremesReport.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg::testing {

@@ -2,7 +2,7 @@
 
 #include "core/util/Errors.hpp"
 #include "verification/cli/Application.hpp"
-#include "verification/study/Ensemble.hpp"
+#include "verification/harness/Ensemble.hpp"
 
 int main(int argc, char** argv) {
   using namespace vorodg;

@@ -10,7 +10,7 @@
 #include "verification/cli/MeshCommand.hpp"
 #include "verification/cli/RunCommand.hpp"
 #include "verification/cli/SolveCommand.hpp"
-#include "verification/study/Ensemble.hpp"
+#include "verification/harness/Ensemble.hpp"
 
 namespace vorodg {
 namespace {

@@ -12,7 +12,7 @@
 #include "core/util/Errors.hpp"
 #include "verification/cli/CliSupport.hpp"
 #include "verification/cli/RunCommand.hpp"
-#include "verification/study/Ensemble.hpp"
+#include "verification/harness/Ensemble.hpp"
 
 namespace vorodg {
 namespace {

@@ -46,42 +46,29 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& o) {
   return cmd;
 }
 
-int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
-  const bool domain_given = command.count("--domain") > 0;
-  if (!o.check.empty()) return check_mesh_file(o, domain_given);
-  const MeshSpec spec = mesh_spec(o.mesh, true);
-  check_output_folder(o.output.path, "--output");
-  check_output_folder(o.stats, "--stats");
-  echo_options("vorodg mesh", command);  // after the checks: the echoed line is a valid run
+namespace {
 
-  Stopwatch total;
-  GeneratedMesh generated = generate_mesh(spec);
-  Stopwatch clock;
-  const auto validation = validate_mesh(generated.mesh);
-  generated.report.seconds["validation"] = clock.seconds();
-  if (!validation.ok())
-    throw NumericalError("generated " + std::string(family_name(spec.family)) +
-                         " mesh is invalid: " + validation.defects.front().what + " (" +
-                         std::to_string(validation.defect_count) + " defects)");
-  const MeshStatistics stats = compute_statistics(generated.mesh);
-
-  if (!o.output.path.empty()) {
-    clock.restart();
-    std::vector<double> sides, ids;
-    for (int c = 0; c < generated.mesh.num_cells(); ++c) {
-      sides.push_back(generated.mesh.cell_size(c));
-      ids.push_back(c);
-    }
-    write_vtu(o.output.path, generated.mesh, {{}, {{"cell_id", 1, ids}, {"sides", 1, sides}}},
-              o.output.encoding());
-    generated.report.seconds["write"] = clock.seconds();
+/// The mesh with its id and number of sides per cell, for ParaView.
+void write_mesh_file(const MeshCommandOptions& o, GeneratedMesh& generated) {
+  const Stopwatch clock;
+  std::vector<double> sides, ids;
+  for (int c = 0; c < generated.mesh.num_cells(); ++c) {
+    sides.push_back(generated.mesh.cell_size(c));
+    ids.push_back(c);
   }
+  write_vtu(o.output.path, generated.mesh, {{}, {{"cell_id", 1, ids}, {"sides", 1, sides}}},
+            o.output.encoding());
+  generated.report.seconds["write"] = clock.seconds();
+}
+
+/// The statistics file: the mesh's statistics, the spec, and what the generator reports.
+nlohmann::json stats_json(const MeshSpec& spec, const MeshStatistics& stats,
+                          const MeshGenReport& r) {
   nlohmann::json json = to_json(stats);
   json["family"] = family_name(spec.family);
   json["domain"] = {spec.domain.x0(), spec.domain.y0(), spec.domain.x1(), spec.domain.y1()};
   json["size"] = spec.size;
   json["seed"] = spec.seed;
-  const MeshGenReport& r = generated.report;
   if (spec.family == MeshFamily::perturbed_hex) json["perturbation"] = spec.perturbation;
   if (spec.family == MeshFamily::rcp || spec.family == MeshFamily::tri) json["seeds"] = r.seeds;
   if (spec.family == MeshFamily::rcp) {
@@ -97,6 +84,32 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
     json["merged_vertices"] = r.merged_vertices;
   }
   json["seconds"] = nlohmann::json(r.seconds);  // stage -> seconds
+  return json;
+}
+
+}  // namespace
+
+int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
+  const bool domain_given = command.count("--domain") > 0;
+  if (!o.check.empty()) return check_mesh_file(o, domain_given);
+  const MeshSpec spec = mesh_spec(o.mesh, true);
+  check_output_folder(o.output.path, "--output");
+  check_output_folder(o.stats, "--stats");
+  echo_options("vorodg mesh", command);  // after the checks: the echoed line is a valid run
+
+  const Stopwatch total;
+  GeneratedMesh generated = generate_mesh(spec);
+  const Stopwatch clock;
+  const auto validation = validate_mesh(generated.mesh);
+  generated.report.seconds["validation"] = clock.seconds();
+  if (!validation.ok())
+    throw NumericalError("generated " + std::string(family_name(spec.family)) +
+                         " mesh is invalid: " + validation.defects.front().what + " (" +
+                         std::to_string(validation.defect_count) + " defects)");
+  const MeshStatistics stats = compute_statistics(generated.mesh);
+  if (!o.output.path.empty()) write_mesh_file(o, generated);
+  const MeshGenReport& r = generated.report;
+  nlohmann::json json = stats_json(spec, stats, r);
   json["seconds"]["total"] = total.seconds();
   if (!o.stats.empty()) write_json(o.stats, json);
 

@@ -10,9 +10,9 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "verification/cli/CliSupport.hpp"
+#include "verification/harness/Ensemble.hpp"
 #include "verification/harness/StudyKind.hpp"
 #include "verification/model/Choices.hpp"
-#include "verification/study/Ensemble.hpp"
 
 namespace vorodg {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "core/util/Errors.hpp"
 #include "core/util/Random.hpp"
-#include "verification/study/Ensemble.hpp"
+#include "verification/harness/Ensemble.hpp"
 
 namespace vorodg {
 

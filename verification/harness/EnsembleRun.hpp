@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/study/ResumableRuns.hpp"
+#include "verification/harness/ResumableRuns.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

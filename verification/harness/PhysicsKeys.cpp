@@ -6,6 +6,21 @@
 
 namespace vorodg {
 
+std::vector<SceneKey> naming_keys() {
+  return {key("name", "string", "file stem", "any", "the study's name in reports"),
+          key("description", "string", "\"\"", "any", "one sentence for --list and the report")};
+}
+
+SceneKey meshes_key(const std::string& more) {
+  return key("meshes[]", "list (required)", "", "as in every study (docs/scenes.md)",
+             "mesh families with sizes, realizations, seed" + more);
+}
+
+SceneKey variants_key() {
+  return key("variants[]", "objects with a label", "none", "",
+             "each merged over the top-level keys; each runs into DIR/<label>/");
+}
+
 std::vector<SceneKey> elastic_keys(const std::string& E, const std::string& nu) {
   return {bounded("material.E", "number", E, "0 < E <= 1e13",
                   "Young's modulus, Pa (no solid is stiffer than about 1.2e12)", 0.0, true, 1e13),

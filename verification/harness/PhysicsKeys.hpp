@@ -1,6 +1,7 @@
 #pragma once
-// The scene keys of the physical quantities more than one kind has: the elastic material, the
-// element, the cohesive law and the Mohr-Coulomb criterion. Each is spelled, bounded and
+// The scene keys more than one kind has: the scene's name and description, the mesh blocks and
+// the variants, and the physical quantities: the elastic material, the element, the cohesive
+// law and the Mohr-Coulomb criterion. Each is spelled, bounded and
 // documented here once; a kind's table splices them in with its own defaults, so that the same
 // quantity has the same key in every kind.
 #include <string>
@@ -9,6 +10,13 @@
 #include "verification/harness/SceneKeys.hpp"
 
 namespace vorodg {
+
+/// name, description: what every scene is called and says of itself.
+std::vector<SceneKey> naming_keys();
+/// meshes[]: the mesh blocks, as every kind reads them; `more`: what this kind adds to a block.
+SceneKey meshes_key(const std::string& more = "");
+/// variants[]: studies side by side, each merged over the top-level keys.
+SceneKey variants_key();
 
 /// material.E, material.nu, material.plane.
 std::vector<SceneKey> elastic_keys(const std::string& E, const std::string& nu);

@@ -14,7 +14,7 @@
 
 #include "core/geometry/Rectangle.hpp"
 #include "verification/harness/SceneKeys.hpp"
-#include "verification/study/SceneObject.hpp"
+#include "verification/harness/SceneObject.hpp"
 
 namespace vorodg {
 

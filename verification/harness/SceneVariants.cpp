@@ -1,8 +1,20 @@
 #include "verification/harness/SceneVariants.hpp"
 
 #include "core/util/Errors.hpp"
+#include "verification/harness/SceneObject.hpp"
 
 namespace vorodg {
+
+nlohmann::json parse_scene_json(const std::string& text, const std::string& source) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e400
+    throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+  SceneObject(root, "", source);  // "the top level: expected an object", as every reader says
+  return root;
+}
 
 std::vector<SceneVariant> scene_variants(const nlohmann::json& root, const std::string& source,
                                          nlohmann::json& base) {

@@ -14,6 +14,10 @@ struct SceneVariant {
   std::string source;   // "<file> variants[i]", for messages
 };
 
+/// The scene's text as a JSON object; throws InputError if it is not valid JSON or not an
+/// object (every kind's reader starts here).
+nlohmann::json parse_scene_json(const std::string& text, const std::string& source);
+
 /// The scene without `variants` (`base`) and each variant merged over it. Throws InputError
 /// unless `variants` is a non-empty list of objects with a label.
 std::vector<SceneVariant> scene_variants(const nlohmann::json& root, const std::string& source,

@@ -5,9 +5,9 @@
 #include <map>
 
 #include "core/util/Stopwatch.hpp"
+#include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
 #include "verification/model/SettingsSchema.hpp"
-#include "verification/study/Ensemble.hpp"
 #include "verification/study/StudyReport.hpp"
 
 namespace vorodg {

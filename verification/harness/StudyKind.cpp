@@ -3,7 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/util/Errors.hpp"
-#include "verification/study/SceneObject.hpp"
+#include "verification/harness/SceneObject.hpp"
+#include "verification/harness/SceneVariants.hpp"
 
 namespace vorodg {
 
@@ -18,13 +19,8 @@ const StudyKind& study_kind(const std::string& name, const std::string& where) {
 }
 
 std::string scene_study(const std::string& text, const std::string& source) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e400
-    throw InputError("scene " + source + ": not valid JSON (" + std::string(e.what()) + ")");
-  }
-  SceneObject top(root, "", source);  // refuses anything but an object, as every reader does
+  const nlohmann::json root = parse_scene_json(text, source);
+  SceneObject top(root, "", source);
   return top.has("study") ? top.text("study", "") : "convergence";
 }
 

@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "core/util/Stopwatch.hpp"
+#include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/harness/StudyKind.hpp"
-#include "verification/study/Ensemble.hpp"
 
 namespace vorodg {
 

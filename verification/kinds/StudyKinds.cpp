@@ -9,9 +9,9 @@ StudyKind penalty_sweep_kind();  // kinds/convergence
 StudyKind patch_suite_kind();    // kinds/convergence
 StudyKind tradeoff_kind();       // kinds/tradeoff
 StudyKind extremes_kind();       // kinds/extremes
-StudyKind fracture_kind();       // kinds/fracture
-StudyKind dynamics_kind();       // kinds/dynamics
-StudyKind fragmentation_kind();  // kinds/dynamics
+StudyKind fracture_kind();       // kinds/fracture (FractureStudy.cpp)
+StudyKind dynamics_kind();       // kinds/dynamics (DynamicsStudy.cpp)
+StudyKind fragmentation_kind();  // kinds/dynamics (DynamicsStudy.cpp)
 
 const std::vector<StudyKind>& study_kinds() {
   static const std::vector<StudyKind> kinds = {

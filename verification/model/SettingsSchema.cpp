@@ -106,10 +106,9 @@ SettingSpec kp_number() {
   return spec;
 }
 
-std::vector<SettingSpec> make_specs() {
+/// The problem, the formulation and the material.
+std::vector<SettingSpec> problem_specs() {
   using Scope = SettingScope;
-  const std::vector<int> rules(kFanRulePoints.begin(), kFanRulePoints.end());
-  const std::vector<int> degrees(kWeightDegrees.begin(), kWeightDegrees.end());
   return {
       choice(
           "problem", "--problem", "the boundary value problem", Scope::top, problem_choices(),
@@ -128,6 +127,15 @@ std::vector<SettingSpec> make_specs() {
              [](S& s) -> double& { return s.nu; }),
       number("load", "--load", "P", "beam: end load P", Scope::material,
              {-1e15, 1e15, false, false, {}}, [](S& s) -> double& { return s.load; }),
+  };
+}
+
+/// The element: strain operator, shape functions, quadrature, weight functions.
+std::vector<SettingSpec> element_specs() {
+  using Scope = SettingScope;
+  const std::vector<int> rules(kFanRulePoints.begin(), kFanRulePoints.end());
+  const std::vector<int> degrees(kWeightDegrees.begin(), kWeightDegrees.end());
+  return {
       flag("mean_dilation", "--mean-dilation", "mean-dilation (B-bar) strain operator",
            Scope::formulation, [](S& s) -> bool& { return s.mean_dilation; }),
       choice(
@@ -150,6 +158,13 @@ std::vector<SettingSpec> make_specs() {
       integer("degree", "--degree", "degree", "weight functions: P1 or P2 on the sub-triangles",
               Scope::formulation, one_of(degrees),
               [](S& s) -> int& { return s.element.weights.degree; }),
+  };
+}
+
+/// The DG formulations' penalty, iterations and interface tractions.
+std::vector<SettingSpec> dg_specs() {
+  using Scope = SettingScope;
+  return {
       penalty_choice(),
       kp_number(),
       flag("weighted_average", "--weighted-average",
@@ -167,6 +182,13 @@ std::vector<SettingSpec> make_specs() {
       traction_choice(),
       integer("sipg_sign", "--sipg-sign", "sipg_sign", "dg-sipg: -1 symmetric, +1 non-symmetric",
               Scope::formulation, one_of({-1, 1}), [](S& s) -> int& { return s.dg.sipg_sign; }),
+  };
+}
+
+/// What a run computes and how it solves.
+std::vector<SettingSpec> run_specs() {
+  using Scope = SettingScope;
+  return {
       flag(
           "errors", "--no-errors",
           "integrate the error against the exact solution (the flag skips it: no error points, "
@@ -192,6 +214,15 @@ std::vector<SettingSpec> make_specs() {
              Scope::formulation, {0.0, 1.0, false, true, {}},
              [](S& s) -> double& { return s.solver.amg_tolerance; }),
   };
+}
+
+std::vector<SettingSpec> make_specs() {
+  std::vector<SettingSpec> specs;
+  for (auto group : {problem_specs, element_specs, dg_specs, run_specs}) {
+    std::vector<SettingSpec> more = group();
+    specs.insert(specs.end(), more.begin(), more.end());
+  }
+  return specs;
 }
 
 std::string bound_text(double x) {

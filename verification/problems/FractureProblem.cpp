@@ -40,16 +40,11 @@ int vertex_at(const PolygonMesh& mesh, const Point& p) {
   return -1;
 }
 
-}  // namespace
-
-FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g, CrackingMode mode,
-                             double thickness) {
-  check_fracture_geometry(g);
+/// Marks the interior edges on the crack line (above the notch) and in the notch; refuses a mesh
+/// without edges along what the mode needs.
+void mark_line_and_notch(const PolygonMesh& mesh, const FractureGeometry& g, double tol,
+                         FractureSetup& s) {
   const Rectangle& d = g.domain;
-  const double tol = mesh.tag_tolerance() * d.scale();
-  FractureSetup s;
-  s.mode = mode;
-  s.thickness = thickness;
   s.line.assign(mesh.num_edges(), 0);
   s.notch.assign(mesh.num_edges(), 0);
   const double notch_top = d.y0() + g.notch_depth;
@@ -63,7 +58,8 @@ FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g,
     (in_notch ? s.notch : s.line)[e] = 1;
     (in_notch ? notch_length : line_length) += mesh.edge_length(e);
   }
-  const bool needs_line = mode == CrackingMode::pre_inserted || mode == CrackingMode::restricted;
+  const bool needs_line =
+      s.mode == CrackingMode::pre_inserted || s.mode == CrackingMode::restricted;
   if (needs_line && std::abs(line_length - (d.height() - g.notch_depth)) > 1e3 * tol)
     throw InputError("cracking.line = " + fmt(g.line_x) + ": the mesh has edges along only " +
                      fmt(line_length) + " of the " + fmt(d.height() - g.notch_depth) +
@@ -71,6 +67,12 @@ FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g,
   if (std::abs(notch_length - g.notch_depth) > 1e3 * tol)
     throw InputError("notch_depth = " + fmt(g.notch_depth) + ": the mesh has edges along only " +
                      fmt(notch_length) + " of it at x = " + fmt(g.line_x));
+}
+
+/// The load point and the crack-mouth gauge: the beam's mouth vertex, or for the bar the mean
+/// opening of the line (a gauge at one end would drive it to rotate).
+void find_gauges(const PolygonMesh& mesh, const FractureGeometry& g, FractureSetup& s) {
+  const Rectangle& d = g.domain;
   if (g.kind == FractureProblemKind::three_point_bend) {
     s.load_vertex = vertex_at(mesh, Point(g.line_x, d.y1()));
     if (s.load_vertex < 0)
@@ -84,20 +86,25 @@ FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g,
                        fmt(d.y0()) + ")");
     s.mouth.vertices = {mouth};
     s.mouth.weights = {1.0};
-  } else {  // the bar's opening is the line's mean: a gauge at one end would drive it to rotate
-    std::map<int, double> weight;
-    for (int e = 0; e < mesh.num_edges(); ++e)
-      if (s.line[e])
-        for (int v : {mesh.edge(e).v0, mesh.edge(e).v1})
-          weight[v] += 0.5 * mesh.edge_length(e) / d.height();
-    for (const auto& [v, w] : weight) {
-      s.mouth.vertices.push_back(v);
-      s.mouth.weights.push_back(w);
-    }
+    return;
   }
+  std::map<int, double> weight;
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (s.line[e])
+      for (int v : {mesh.edge(e).v0, mesh.edge(e).v1})
+        weight[v] += 0.5 * mesh.edge_length(e) / d.height();
+  for (const auto& [v, w] : weight) {
+    s.mouth.vertices.push_back(v);
+    s.mouth.weights.push_back(w);
+  }
+}
+
+/// The supports (the bar: pulled at its right end on rollers; the beam: simply supported) and
+/// the beam's load point.
+void add_constraints(const PolygonMesh& mesh, const FractureGeometry& g, double tol,
+                     FractureSetup& s) {
   for (int v = 0; v < mesh.num_vertices(); ++v) {
-    const Point& p = mesh.vertex(v);
-    const auto near = d.sides_near(p, tol);  // left, right, bottom, top
+    const auto near = g.domain.sides_near(mesh.vertex(v), tol);  // left, right, bottom, top
     if (g.kind == FractureProblemKind::tension_bar) {
       if (near[0]) s.constraints.push_back({v, 0, 0.0});
       if (near[1]) s.constraints.push_back({v, 0, 1.0});
@@ -109,6 +116,20 @@ FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g,
   }
   if (g.kind == FractureProblemKind::three_point_bend)
     s.constraints.push_back({s.load_vertex, 1, -1.0});
+}
+
+}  // namespace
+
+FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g, CrackingMode mode,
+                             double thickness) {
+  check_fracture_geometry(g);
+  const double tol = mesh.tag_tolerance() * g.domain.scale();
+  FractureSetup s;
+  s.mode = mode;
+  s.thickness = thickness;
+  mark_line_and_notch(mesh, g, tol, s);
+  find_gauges(mesh, g, s);
+  add_constraints(mesh, g, tol, s);
   return s;
 }
 

@@ -75,7 +75,7 @@ std::string ConvergenceTable::format(const Cell& cell, const Style& style) {
       os << std::defaultfloat << std::setprecision(precision) << x;
   };
   put(n->value, style.precision);
-  if (n->spread) os << " ± ", put(*n->spread, 1);
+  if (n->spread) os << " ± ", put(*n->spread, style.spread_precision);
   return os.str();
 }
 

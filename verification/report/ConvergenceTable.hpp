@@ -14,6 +14,7 @@ namespace vorodg {
 struct ColumnStyle {
   int precision = 4;
   bool scientific = false;
+  int spread_precision = 1;  // of the "± spread" part
 };
 
 class ConvergenceTable {

@@ -40,71 +40,92 @@ std::string rate_text(const RateFit& fit) {
   return fmt(fit.rate, 3) + (fit.ci95 ? " ± " + fmt(*fit.ci95, 2) : "");
 }
 
-}  // namespace
-
-void write_kp_trend(const StudySummary& summary, std::ostringstream& md) {
-  std::map<std::string, Reading> readings;
-  std::map<std::string, const GroupSummary*> cg;  // by mesh | problem
+/// The readings with their groups, CG's groups by "mesh | problem", and every k_p.
+struct Readings {
+  std::map<std::string, Reading> by_name;
+  std::map<std::string, const GroupSummary*> cg;
   std::set<double> kps;
+};
+
+Readings collect_readings(const StudySummary& summary) {
+  Readings out;
   for (const GroupSummary& g : summary.groups) {
     if (!g.kp) {
       if (g.rate_l2 && g.formulation == "cg" && g.label == "cg")
-        cg[g.mesh + " | " + g.problem] = &g;
+        out.cg[g.mesh + " | " + g.problem] = &g;
       continue;
     }
-    Reading& r = readings[g.mesh + " | " + g.problem + " | " + g.label];
+    Reading& r = out.by_name[g.mesh + " | " + g.problem + " | " + g.label];
     r.mesh = g.mesh;
     r.problem = g.problem;
     r.label = g.label;
     r.all.push_back(&g);
     if (g.rate_l2) r.groups.push_back(&g);
-    kps.insert(*g.kp);
+    out.kps.insert(*g.kp);
   }
-  std::erase_if(readings, [](const auto& item) { return item.second.groups.size() < 2; });
-  if (readings.empty()) return;
-  ConvergenceTable table;
+  std::erase_if(out.by_name, [](const auto& item) { return item.second.groups.size() < 2; });
+  return out;
+}
+
+/// Which readings rise, which rise through failed or diverged runs, which reach CG's rate.
+struct Verdicts {
   std::vector<std::string> rising, reaching, broken;
-  for (auto& [name, r] : readings) {
-    std::sort(r.groups.begin(), r.groups.end(), [](auto* a, auto* b) { return *a->kp < *b->kp; });
-    table.start_row();
-    table.add_text("mesh | problem", r.mesh + " | " + r.problem);
-    table.add_text("reading", r.label);
-    for (double kp : kps) {
-      const auto at = std::find_if(r.all.begin(), r.all.end(),
-                                   [&](const GroupSummary* g) { return *g->kp == kp; });
-      table.add_text("k_p " + fmt(kp), at == r.all.end() ? "-"
-                                       : (*at)->rate_l2  ? rate_text((*at)->rate_l2->fit)
-                                                         : "no rate");
-    }
-    int failed = 0, diverged = 0, runs = 0;
-    for (const GroupSummary* g : r.all)
-      for (const LevelSummary& lv : g->levels) {
-        failed += lv.failed;
-        diverged += lv.diverged;
-        runs += lv.runs;
-      }
-    table.add_text(
-        "failed / diverged runs",
-        std::to_string(failed) + " / " + std::to_string(diverged) + " of " + std::to_string(runs));
-    const bool throughout = rises_throughout(r), overall = rises_overall(r);
-    table.add_text("rises", throughout ? "at every step" : overall ? "overall" : "no");
-    const auto c = cg.find(r.mesh + " | " + r.problem);
-    std::string reaches = "-";
-    if (c != cg.end()) {
-      const RateFit &last = r.groups.back()->rate_l2->fit, &ref = c->second->rate_l2->fit;
-      const bool near = std::abs(last.rate - ref.rate) <= ci(last) + ci(ref);
-      reaches = (near ? "yes (" : "no (") + fmt(last.rate - ref.rate, 2) + ")";
-      if (overall && near && failed + diverged == 0)
-        reaching.push_back(r.label + " (" + r.mesh + ")");
-    }
-    table.add_text("reaches CG's rate at the largest k_p", reaches);
-    if (overall) (failed + diverged ? broken : rising).push_back(r.label + " (" + r.mesh + ")");
+};
+
+/// One reading's row: its rate at every k_p, its failures, whether it rises and reaches CG.
+void add_reading(ConvergenceTable& table, Reading& r, const Readings& all, Verdicts& verdicts) {
+  std::sort(r.groups.begin(), r.groups.end(), [](auto* a, auto* b) { return *a->kp < *b->kp; });
+  table.start_row();
+  table.add_text("mesh | problem", r.mesh + " | " + r.problem);
+  table.add_text("reading", r.label);
+  for (double kp : all.kps) {
+    const auto at = std::find_if(r.all.begin(), r.all.end(),
+                                 [&](const GroupSummary* g) { return *g->kp == kp; });
+    table.add_text("k_p " + fmt(kp), at == r.all.end() ? "-"
+                                     : (*at)->rate_l2  ? rate_text((*at)->rate_l2->fit)
+                                                       : "no rate");
   }
-  auto list = [](const std::vector<std::string>& names) {
-    std::string out;
-    for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
-    return out.empty() ? std::string("none") : out;
-  };
+  int failed = 0, diverged = 0, runs = 0;
+  for (const GroupSummary* g : r.all)
+    for (const LevelSummary& lv : g->levels) {
+      failed += lv.failed;
+      diverged += lv.diverged;
+      runs += lv.runs;
+    }
+  table.add_text(
+      "failed / diverged runs",
+      std::to_string(failed) + " / " + std::to_string(diverged) + " of " + std::to_string(runs));
+  const bool throughout = rises_throughout(r), overall = rises_overall(r);
+  table.add_text("rises", throughout ? "at every step" : overall ? "overall" : "no");
+  const auto c = all.cg.find(r.mesh + " | " + r.problem);
+  std::string reaches = "-";
+  if (c != all.cg.end()) {
+    const RateFit &last = r.groups.back()->rate_l2->fit, &ref = c->second->rate_l2->fit;
+    const bool near = std::abs(last.rate - ref.rate) <= ci(last) + ci(ref);
+    reaches = (near ? "yes (" : "no (") + fmt(last.rate - ref.rate, 2) + ")";
+    if (overall && near && failed + diverged == 0)
+      verdicts.reaching.push_back(r.label + " (" + r.mesh + ")");
+  }
+  table.add_text("reaches CG's rate at the largest k_p", reaches);
+  if (overall)
+    (failed + diverged ? verdicts.broken : verdicts.rising)
+        .push_back(r.label + " (" + r.mesh + ")");
+}
+
+std::string name_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
+  return out.empty() ? std::string("none") : out;
+}
+
+}  // namespace
+
+void write_kp_trend(const StudySummary& summary, std::ostringstream& md) {
+  Readings readings = collect_readings(summary);
+  if (readings.by_name.empty()) return;
+  ConvergenceTable table;
+  Verdicts verdicts;
+  for (auto& [name, r] : readings.by_name) add_reading(table, r, readings, verdicts);
   md << "## L2 rate against k_p\n\n"
      << "Least-squares L2 rate (95% interval) of each reading at each k_p. `rises`: the rate at "
         "the largest k_p exceeds the one at the smallest by more than both intervals (`overall`), "
@@ -114,11 +135,11 @@ void write_kp_trend(const StudySummary& summary, std::ostringstream& md) {
         "rates; runs whose iteration diverged are in them (their last iterate), so a reading with "
         "many of either has rates that describe its breakdown, not its convergence.\n\n";
   table.write_markdown(md);
-  md << "\nReadings whose rate rises with k_p, every run converged: " << list(rising)
-     << ". Rising only through failed or diverged runs: " << list(broken)
+  md << "\nReadings whose rate rises with k_p, every run converged: " << name_list(verdicts.rising)
+     << ". Rising only through failed or diverged runs: " << name_list(verdicts.broken)
      << ". Rising, every run converged, and reaching CG's rate at the largest k_p (the published "
         "figure's picture): "
-     << list(reaching) << ".\n\n";
+     << name_list(verdicts.reaching) << ".\n\n";
 }
 
 }  // namespace vorodg

@@ -74,16 +74,68 @@ std::vector<ElementOptions> scene_elements(const Scene& scene) {
   return elements;
 }
 
+/// What the analysis writes: the per-edge penalties, the thresholds, and the report's table.
+struct PenaltyOutputs {
+  std::ostringstream edges, thresholds;
+  ConvergenceTable table;
+};
+
+/// One level of a mesh block, realization 0: the coercive penalty of every interface and the
+/// definiteness threshold, for every element of the scene and every traction kind.
+void analyse_level(const Scene& scene, const SceneMesh& sm, int level,
+                   const SolveSettings& settings, PenaltyOutputs& out) {
+  const ConvergenceTable::Style sci{3, true}, count{6, false};
+  const std::uint64_t seed = derive_seed(derive_seed(sm.seed, level), 0);
+  const GeneratedMesh mesh = generate_mesh(sm.spec(scene.domain, level, seed));
+  const auto problem = make_problem(settings, mesh.mesh.domain());
+  const DgSpace space(mesh.mesh);
+  const double h = mesh.mesh.h_avg();
+  for (const ElementOptions& options : scene_elements(scene)) {
+    const ElementTable element(mesh.mesh, options);
+    const std::string name = element_name(options.family);
+    const ElasticityIntegrator integrator(element, problem->material(), false);
+    const InterfaceOperators ops(space, integrator, element);
+    const auto stiffness = integrator.all_cell_matrices(1);
+    for (TractionKind kind : kKinds) {
+      const InterfacePenalty penalty(ops, integrator, stiffness, PenaltyScaling::coercive, 1.0,
+                                     false, kind, 1);
+      const std::vector<double> eps = penalty.relative_to_h_avg();
+      if (kind != TractionKind::mean)
+        for (std::size_t i = 0; i < eps.size(); ++i)
+          out.edges << sm.label << ',' << level << ',' << fmt(h, 6) << ',' << name << ','
+                    << traction_name(kind) << ',' << fmt(space.interfaces()[i].length / h, 6) << ','
+                    << fmt(eps[i], 6) << '\n';
+      const double threshold = smallest_definite_kp(element, integrator, *problem, kind);
+      const SampleStatistics spread = sample_statistics(eps);
+      out.thresholds << sm.label << ',' << level << ',' << mesh.mesh.num_cells() << ',' << fmt(h, 6)
+                     << ',' << name << ',' << traction_name(kind) << ',' << fmt(spread.median, 6)
+                     << ',' << fmt(spread.max, 6) << ',' << fmt(threshold, 6) << '\n';
+      ConvergenceTable& t = out.table;
+      t.start_row();
+      t.add_text("mesh", sm.label);
+      t.add_value("level", level, std::nullopt, count);
+      t.add_value("cells", mesh.mesh.num_cells(), std::nullopt, count);
+      t.add_text("element", name);
+      t.add_text("traction", traction_name(kind));
+      t.add_value("auto eps h/E median", spread.median, std::nullopt, sci);
+      t.add_value("auto eps h/E max", spread.max, std::nullopt, sci);
+      if (std::isfinite(threshold))
+        t.add_value("smallest definite k_p", threshold, std::nullopt, sci);
+      else
+        t.add_text("smallest definite k_p", "> " + fmt(kMaxKp));
+    }
+  }
+}
+
 }  // namespace
 
 void write_penalty_analysis(const Scene& scene, const std::filesystem::path& out,
                             std::ostringstream& md) {
-  std::ostringstream edges, thresholds;
-  edges << "mesh,level,h_avg,element,traction,edge_length_over_h_avg,eps_over_E_per_h_avg\n";
-  thresholds
+  PenaltyOutputs outputs;
+  outputs.edges
+      << "mesh,level,h_avg,element,traction,edge_length_over_h_avg,eps_over_E_per_h_avg\n";
+  outputs.thresholds
       << "mesh,level,cells,h_avg,element,traction,auto_median,auto_max,smallest_definite_kp\n";
-  ConvergenceTable table;
-  const ConvergenceTable::Style sci{3, true}, count{6, false};
   SolveSettings settings;
   settings.problem = scene.problems.front();
   settings.E = scene.E;
@@ -91,56 +143,17 @@ void write_penalty_analysis(const Scene& scene, const std::filesystem::path& out
   settings.plane = scene.plane;
   settings.load = scene.load;
   for (const SceneMesh& sm : scene.meshes)
-    for (int level = 0; level < static_cast<int>(sm.sizes.size()); ++level) {
-      const std::uint64_t seed = derive_seed(derive_seed(sm.seed, level), 0);
-      const GeneratedMesh mesh = generate_mesh(sm.spec(scene.domain, level, seed));
-      const auto problem = make_problem(settings, mesh.mesh.domain());
-      const DgSpace space(mesh.mesh);
-      const double h = mesh.mesh.h_avg();
-      for (const ElementOptions& options : scene_elements(scene)) {
-        const ElementTable element(mesh.mesh, options);
-        const std::string name = element_name(options.family);
-        const ElasticityIntegrator integrator(element, problem->material(), false);
-        const InterfaceOperators ops(space, integrator, element);
-        const auto stiffness = integrator.all_cell_matrices(1);
-        for (TractionKind kind : kKinds) {
-          const InterfacePenalty penalty(ops, integrator, stiffness, PenaltyScaling::coercive, 1.0,
-                                         false, kind, 1);
-          const std::vector<double> eps = penalty.relative_to_h_avg();
-          if (kind != TractionKind::mean)
-            for (std::size_t i = 0; i < eps.size(); ++i)
-              edges << sm.label << ',' << level << ',' << fmt(h, 6) << ',' << name << ','
-                    << traction_name(kind) << ',' << fmt(space.interfaces()[i].length / h, 6) << ','
-                    << fmt(eps[i], 6) << '\n';
-          const double threshold = smallest_definite_kp(element, integrator, *problem, kind);
-          const SampleStatistics spread = sample_statistics(eps);
-          thresholds << sm.label << ',' << level << ',' << mesh.mesh.num_cells() << ',' << fmt(h, 6)
-                     << ',' << name << ',' << traction_name(kind) << ',' << fmt(spread.median, 6)
-                     << ',' << fmt(spread.max, 6) << ',' << fmt(threshold, 6) << '\n';
-          table.start_row();
-          table.add_text("mesh", sm.label);
-          table.add_value("level", level, std::nullopt, count);
-          table.add_value("cells", mesh.mesh.num_cells(), std::nullopt, count);
-          table.add_text("element", name);
-          table.add_text("traction", traction_name(kind));
-          table.add_value("auto eps h/E median", spread.median, std::nullopt, sci);
-          table.add_value("auto eps h/E max", spread.max, std::nullopt, sci);
-          if (std::isfinite(threshold))
-            table.add_value("smallest definite k_p", threshold, std::nullopt, sci);
-          else
-            table.add_text("smallest definite k_p", "> " + fmt(kMaxKp));
-        }
-      }
-    }
-  write_file_atomically(out / "penalty_edges.csv", edges.str());
-  write_file_atomically(out / "penalty_thresholds.csv", thresholds.str());
+    for (int level = 0; level < static_cast<int>(sm.sizes.size()); ++level)
+      analyse_level(scene, sm, level, settings, outputs);
+  write_file_atomically(out / "penalty_edges.csv", outputs.edges.str());
+  write_file_atomically(out / "penalty_thresholds.csv", outputs.thresholds.str());
   md << "## The coercive penalty and the definiteness threshold\n\n"
      << "Realization 0 of each level, problem " << settings.problem
      << ". `auto eps h/E`: the proven coercive penalty (k_p = 1) of each interface relative to E / "
         "h_avg; `smallest definite k_p`: the smallest k_p with eps = k_p E / h_avg for which the "
         "symmetric SIPG matrix is positive definite (bisection to 1%). Per-edge values in "
         "penalty_edges.csv, plotted in penalty_edges.png.\n\n";
-  table.write_markdown(md);
+  outputs.table.write_markdown(md);
   md << "\n";
 }
 

@@ -10,8 +10,8 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "verification/harness/SceneObject.hpp"
 #include "verification/model/SettingsSchema.hpp"
-#include "verification/study/SceneObject.hpp"
 
 namespace vorodg {
 namespace {

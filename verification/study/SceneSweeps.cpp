@@ -6,8 +6,8 @@
 #include <set>
 
 #include "core/util/Errors.hpp"
+#include "verification/harness/SceneObject.hpp"
 #include "verification/study/Scene.hpp"
-#include "verification/study/SceneObject.hpp"
 
 namespace vorodg {
 

@@ -9,10 +9,10 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
-#include "verification/study/Ensemble.hpp"
-#include "verification/study/ResumableRuns.hpp"
+#include "verification/harness/Ensemble.hpp"
+#include "verification/harness/ResumableRuns.hpp"
+#include "verification/harness/TaskPool.hpp"
 #include "verification/study/StudyProgress.hpp"
-#include "verification/study/TaskPool.hpp"
 
 namespace vorodg {
 namespace {
@@ -107,40 +107,44 @@ SolveSettings run_settings(const Scene& scene, const StudyRun& run) {
   return settings;
 }
 
-std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options) {
-  namespace fs = std::filesystem;
-  const std::vector<StudyRun> runs = expand_runs(scene);  // refuses a bad scene before any output
+namespace {
+
+/// The output folder, made; throws InputError if it cannot be.
+void make_output_folder(const std::filesystem::path& out) {
   std::error_code ec;
-  fs::create_directories(options.out, ec);
-  if (!fs::is_directory(options.out))
-    throw InputError("output folder '" + options.out.string() + "' cannot be created" +
+  std::filesystem::create_directories(out, ec);
+  if (!std::filesystem::is_directory(out))
+    throw InputError("output folder '" + out.string() + "' cannot be created" +
                      (ec ? " (" + ec.message() + ")" : std::string()));
-  const fs::path results_file = options.out / "results.jsonl";
-  const fs::path own_file = Ensemble::own_results(results_file);
+}
+
+/// Each run's record where results.jsonl (or this shard's own file) holds one of this version.
+std::vector<std::optional<RunRecord>> finished_records(const std::vector<StudyRun>& runs,
+                                                       const std::filesystem::path& results_file,
+                                                       const std::filesystem::path& own_file) {
   std::map<std::string, json> lines = read_finished_runs(results_file);
   if (own_file != results_file) lines.merge(read_finished_runs(own_file));
-
   std::vector<std::optional<RunRecord>> records(runs.size());
-  // Work by mesh: every pending run on the same (mesh, level, realization) shares one mesh.
-  std::map<std::tuple<int, int, int>, std::vector<std::size_t>> pending;
-  std::vector<double> costs;
-  std::vector<bool> done;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const auto line = lines.find(runs[i].id);
-    if (line != lines.end()) {
-      try {
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    if (const auto line = lines.find(runs[i].id); line != lines.end()) try {
         records[i] = record_from_json(runs[i], line->second);
       } catch (const std::exception&) {  // not a record of this version: run it again
       }
-    }
-    if (!records[i]) pending[{runs[i].mesh, runs[i].level, runs[i].realization}].push_back(i);
-    costs.push_back(expected_cost(scene, runs[i]));
-    done.push_back(records[i].has_value());
-  }
-  // A task's place among every mesh of the study, finished or not (what shards split by).
+  return records;
+}
+
+/// One task per mesh (mesh, level, realization) with runs still to do, each with its place
+/// among every mesh of the study, finished or not (what shards split by).
+std::vector<Task> mesh_tasks(const std::vector<StudyRun>& runs,
+                             const std::vector<std::optional<RunRecord>>& records,
+                             const std::vector<double>& costs) {
+  std::map<std::tuple<int, int, int>, std::vector<std::size_t>> pending;
   std::map<std::tuple<int, int, int>, int> place;
-  for (const StudyRun& run : runs)
-    place.emplace(std::tuple{run.mesh, run.level, run.realization}, 0);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::tuple key{runs[i].mesh, runs[i].level, runs[i].realization};
+    place.emplace(key, 0);
+    if (!records[i]) pending[key].push_back(i);
+  }
   int next_place = 0;
   for (auto& [key, p] : place) p = next_place++;
   std::vector<Task> tasks;
@@ -149,7 +153,39 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
     for (std::size_t i : list) task.runs.push_back(static_cast<int>(i)), task.cost += costs[i];
     tasks.push_back(std::move(task));
   }
+  return tasks;
+}
 
+/// A task's runs: the mesh made once, and every run on it sharing its element tables and
+/// symbolic analyses; each run's record as a JSON line.
+TaskOutput solve_task(const Scene& scene, const std::vector<StudyRun>& runs, const Task& task) {
+  TaskOutput output;
+  std::string mesh_error;
+  const auto mesh = make_mesh(scene, runs[task.runs.front()], mesh_error);
+  std::optional<SharedMeshWork> shared;
+  if (mesh) shared.emplace(mesh->mesh);
+  for (int i : task.runs)
+    output.lines.push_back(to_json(solve_run(scene, runs[i], mesh ? &*mesh : nullptr,
+                                             shared ? &*shared : nullptr, mesh_error))
+                               .dump());
+  return output;
+}
+
+}  // namespace
+
+std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options) {
+  const std::vector<StudyRun> runs = expand_runs(scene);  // refuses a bad scene before any output
+  make_output_folder(options.out);
+  const std::filesystem::path results_file = options.out / "results.jsonl";
+  const std::filesystem::path own_file = Ensemble::own_results(results_file);
+  std::vector<std::optional<RunRecord>> records = finished_records(runs, results_file, own_file);
+  std::vector<double> costs;
+  std::vector<bool> done;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    costs.push_back(expected_cost(scene, runs[i]));
+    done.push_back(records[i].has_value());
+  }
+  const std::vector<Task> tasks = mesh_tasks(runs, records, costs);
   std::ofstream out(own_file, std::ios::app);
   if (!out) throw InputError("cannot write '" + own_file.string() + "'");
   StudyProgress progress(costs, done, options.progress && Ensemble::coordinator());
@@ -157,20 +193,7 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
   // the results (the BLAS's summation order included) do not depend on --threads.
   const int blas_threads = set_blas_threads(1);
   run_tasks(
-      tasks, options.threads,
-      [&](const Task& task) {
-        TaskOutput output;
-        std::string mesh_error;
-        const auto mesh = make_mesh(scene, runs[task.runs.front()], mesh_error);
-        // The task's runs share the mesh's element tables and symbolic analyses.
-        std::optional<SharedMeshWork> shared;
-        if (mesh) shared.emplace(mesh->mesh);
-        for (int i : task.runs)
-          output.lines.push_back(to_json(solve_run(scene, runs[i], mesh ? &*mesh : nullptr,
-                                                   shared ? &*shared : nullptr, mesh_error))
-                                     .dump());
-        return output;
-      },
+      tasks, options.threads, [&](const Task& task) { return solve_task(scene, runs, task); },
       [&](const Task& task, const TaskOutput& output) {
         for (std::size_t k = 0; k < task.runs.size(); ++k) {
           const int i = task.runs[k];

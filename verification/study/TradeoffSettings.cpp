@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "verification/study/SceneObject.hpp"
+#include "verification/harness/SceneObject.hpp"
 
 namespace vorodg {
 

@@ -5,9 +5,9 @@
 
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
+#include "verification/harness/Ensemble.hpp"
+#include "verification/harness/ResumableRuns.hpp"
 #include "verification/report/SampleStatistics.hpp"
-#include "verification/study/Ensemble.hpp"
-#include "verification/study/ResumableRuns.hpp"
 
 namespace vorodg {
 namespace {

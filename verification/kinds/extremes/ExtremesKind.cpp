@@ -5,10 +5,10 @@
 #include <iostream>
 
 #include "core/util/Stopwatch.hpp"
+#include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
 #include "verification/harness/StaticStudy.hpp"
-#include "verification/study/Ensemble.hpp"
-#include "verification/study/ExtremesReport.hpp"
+#include "verification/kinds/extremes/ExtremesReport.hpp"
 #include "verification/study/StudyReport.hpp"
 
 namespace vorodg {

@@ -1,0 +1,215 @@
+#include "verification/kinds/dynamics/DynamicsKeys.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/element/ElementTable.hpp"
+#include "core/util/Format.hpp"
+#include "verification/harness/PhysicsKeys.hpp"
+#include "verification/model/Choices.hpp"
+#include "verification/model/SettingsSchema.hpp"
+
+namespace vorodg {
+namespace {
+
+/// The study, the problem and the body it is about.
+std::vector<SceneKey> study_keys() {
+  const std::string per_problem = "per problem: ";
+  return {
+      key("study", "string", "dynamics", "dynamics or fragmentation",
+          "the study kind: fragmentation adds crack insertion and the cohesive keys "
+          "(docs/fragmentation.md)"),
+      key("problem", "string", "wave-bar",
+          "wave-bar, free-body, wall-impact, two-blocks, column-impact, projectile-impact; "
+          "strip-expansion (fragmentation)",
+          "what is thrown, struck or stretched (docs/dynamics.md, \"Problems\")"),
+      key("domain", "[x0, y0, x1, y1]",
+          per_problem + "wave-bar [0, 0, 1, 0.05], free-body [0, 0, 1, 1], wall-impact [0, 0, 0.4, "
+                        "0.1], two-blocks [0, 0, 0.2, 0.1], strip-expansion [0, 0, 0.002, 1e-05], "
+                        "column-impact [0, 0, 0.3, 1.83], projectile-impact [0, 0, 4, 0.3]",
+          kRectangleRange, "the (first) body, in m"),
+      bounded("strain_rate", "number", "1e5", "0 < strain_rate <= 1e9",
+              "strip-expansion: the initial velocity is strain_rate (x - x_mid) along x, 1/s", 0.0,
+              true, 1e9),
+  };
+}
+
+/// How the bodies are thrown, and the wave bar's input.
+std::vector<SceneKey> body_keys() {
+  const std::string per_problem = "per problem: ";
+  return {
+      bounded("initial_velocity", "[vx, vy]",
+              per_problem + "wave-bar, strip-expansion and projectile-impact [0, 0], free-body [1, "
+                            "0.5], wall-impact and two-blocks [1, 0], column-impact [0, -7.6]",
+              "each |component| <= 1e4", "uniform velocity of the (first) body at t = 0, m/s", -1e4,
+              false, 1e4),
+      bounded("angular_velocity", "number", per_problem + "free-body 1, else 0", "|omega| <= 1e6",
+              "spin of the (first) body about its centre of mass at t = 0, rad/s (small strain: "
+              "the spin is the linearized rotation)",
+              -1e6, false, 1e6),
+      key("second_block.domain", "[x0, y0, x1, y1]", "domain moved right by 1.05 times its width",
+          "x0 < x1, y0 < y1, apart from domain",
+          "two-blocks: the second body (family file: the same size as domain)"),
+      bounded("second_block.initial_velocity", "[vx, vy]", "minus initial_velocity",
+              "each |component| <= 1e4", "two-blocks: the second body's velocity, m/s", -1e4, false,
+              1e4),
+      bounded("second_block.angular_velocity", "number", "0", "|omega| <= 1e6",
+              "two-blocks: the second body's spin, rad/s", -1e6, false, 1e6),
+      key("sides", "string", "free", "free or rollers",
+          "wave-bar: the long sides free (uniaxial stress, bar speed) or on rollers (uniaxial "
+          "strain, dilatational speed)"),
+      bounded("pulse.amplitude", "number", "1", "0 < |amplitude| <= 1e4",
+              "wave-bar: the peak of the velocity prescribed on the left end, m/s", -1e4, false,
+              1e4),
+      bounded("pulse.duration", "number", "0.9 L / c", "0 < duration <= 1e3",
+              "wave-bar: (1 - cos) rise, hold and (1 + cos) fall, a third each, s (c the expected "
+              "speed, L the bar's length)",
+              0.0, true, 1e3),
+  };
+}
+
+/// The material beyond its elastic constants, and damping.
+std::vector<SceneKey> material_keys() {
+  return {
+      bounded("material.density", "number", "7800", "0 < density <= 1e5", "mass density, kg/m^3",
+              0.0, true, 1e5),
+      key("material.mean_dilation", "bool", "false", "true or false", "B-bar strain operator"),
+      bounded("material.variation", "number", "0", "0 <= x < 1",
+              "per-cell factors uniform in [1 - x, 1 + x] on E and, independently, on the strength "
+              "(an edge takes the mean of its cells'; docs/impact.md)",
+              0.0, false, 1.0, true),
+      bounded("material.variation_seed", "integer", "1", "0 <= seed <= 2147483647",
+              "the seed of the per-cell factors (each cell its own stream)", 0.0, false,
+              2147483647.0),
+      bounded("damping", "number", "0", "0 <= c <= 1e9",
+              "mass-proportional damping c, 1/s (the force -c M v)", 0.0, false, 1e9),
+  };
+}
+
+/// The kinematics, gravity, and the column's and the projectile's keys.
+std::vector<SceneKey> impact_keys() {
+  const std::string per_problem = "per problem: ";
+  return {
+      key("kinematics", "string", "small", "small or corotational",
+          "small: linear small strain (a cell turned by theta is drawn and meets contact stretched "
+          "by about theta^2 / 2); corotational: small strain in a frame that turns with each cell, "
+          "for fragments that spin (docs/impact.md)"),
+      bounded("gravity", "[gx, gy]", per_problem + "column-impact [0, -9.81], else [0, 0]",
+              "each |component| <= 1e6", "body force per unit mass, m/s^2", -1e6, false, 1e6),
+      bounded("obliquity", "number", "45", "0 <= obliquity < 90",
+              "column-impact: the tilt of the plane the column falls on, degrees (the plane passes "
+              "through the column's bottom-left corner, its normal [sin, cos] of the tilt)",
+              0.0, false, 90.0, true),
+      bounded("projectile.speed", "number", "20", "0 < speed <= 1e4",
+              "projectile-impact: the rigid projectile's constant downward speed, m/s", 0.0, true,
+              1e4),
+      bounded("projectile.width", "number", "0.1", "0 < width <= 1e6",
+              "projectile-impact: the width of its flat nose, m (the top vertices under it move "
+              "down at its speed from t = 0, free to slide)",
+              0.0, true, 1e6),
+      bounded("projectile.position", "number", "the middle of the top side", "nose within the top",
+              "projectile-impact: x of the nose's centre, m", -1e6, false, 1e6),
+  };
+}
+
+/// The rigid wall and contact.
+std::vector<SceneKey> contact_keys() {
+  const std::string per_problem = "per problem: ";
+  return {
+      bounded("wall.point", "[x, y]",
+              per_problem + "wall-impact: the body's leading point along its velocity; "
+                            "column-impact: the column's bottom-left corner; a `wall` in another "
+                            "problem: the middle of the right side; else no wall",
+              "each |coordinate| <= 1e6, no point of a body behind the wall at t = 0",
+              "a point of a fixed rigid plane (any problem may have one)", -1e6, false, 1e6),
+      bounded("wall.normal", "[nx, ny]",
+              "wall-impact: against the initial velocity; column-impact: [sin, cos] of the "
+              "obliquity; else [-1, 0]",
+              "not [0, 0], each |component| <= 1e6",
+              "the plane's normal, pointing into free space (normalized)", -1e6, false, 1e6),
+      key("contact.enabled", "bool", "true", "true or false",
+          "contact between the surface cells of every body (the wall acts whatever this says)"),
+      bounded("contact.alpha", "number", "0.1", "0 < alpha <= 1",
+              "penalty stiffness k = alpha m / dt^2 (docs/contact.md)", 0.0, true, 1.0, false),
+      bounded("contact.damping_ratio", "number", "0", "0 <= zeta <= 1",
+              "contact damping, a fraction of the critical damping of the penalty spring", 0.0,
+              false, 1.0, false),
+  };
+}
+
+/// The time stepping.
+std::vector<SceneKey> time_keys() {
+  const std::string per_problem = "per problem: ";
+  return {
+      bounded("time.end", "number",
+              per_problem +
+                  "wave-bar 2 L / c; wall-impact and two-blocks the flight to contact plus 3 x 2 L "
+                  "/ c_bar (L: the extent along the wall's normal; the longer side of either "
+                  "block); free-body 1000 steps; strip-expansion 20 x the time to reach the "
+                  "cutoff, sigma_o / (E strain_rate); column-impact 0.3; projectile-impact 3e-3",
+              "0 < end <= 1e6", "the end time, s (not with time.steps)", 0.0, true, 1e6),
+      bounded("time.steps", "integer", "none (time.end)", "1 <= steps <= 1e9",
+              "the number of steps, instead of an end time (not with time.end)", 1.0, false, 1e9),
+      bounded("time.safety", "number", "0.9", "0 < safety < 1 (up to 10 only with --force)",
+              "dt = safety x the critical step", 0.0, true, 10.0),
+      key("time.estimate", "string", "lanczos; fragmentation: cells", "lanczos or cells",
+          "which critical step dt uses: the Lanczos estimate of the assembled system or the "
+          "cell-by-cell bound (both are reported); fragmentation needs the cell bound, which holds "
+          "for every crack pattern, plus the cohesive springs' bound"),
+      bounded("time.output_every", "integer", "100", "1 <= output_every <= 1e9",
+              "steps between rewrites of the history file and between .vtu frames", 1.0, false,
+              1e9),
+      bounded("time.history_every", "integer", "1", "1 <= history_every <= 1e9",
+              "steps between rows of the history", 1.0, false, 1e9),
+  };
+}
+
+/// What a run writes, the mesh blocks, and the studies of several scenes.
+std::vector<SceneKey> output_keys() {
+  return {
+      key("outputs.vtu", "bool", "true", "true or false",
+          "write the .pvd series of the deformed mesh"),
+      key("outputs.snapshots", "list of numbers", "none", "ascending times >= 0",
+          "extra frames at the first step at or after each time, s: vtu/<run>/snapshot_<i>.vtu, "
+          "listed in snapshots/<run>.csv and drawn in plots/<run>_snapshots.png"),
+      meshes_key(),
+      variants_key(),
+      key("perturb.key", "string", "none", "a top-level key or a JSON pointer (/wall/point)",
+          "the key a sensitivity study varies (instead of variants[]); its runs go to "
+          "DIR/perturb-<i>/, and DIR/perturbation.csv holds each run's Hamming distance to "
+          "perturb-0's crack state after every step"),
+      key("perturb.values[]", "list", "none", "two or more values of the key",
+          "the values, the first the reference"),
+  };
+}
+
+std::vector<SceneKey> make_keys() {
+  std::vector<SceneKey> keys = naming_keys();
+  append_keys(keys, study_keys());
+  append_keys(keys, cohesive_keys({"3e8", "100", "10", "0",
+                                   "dynamics needs an initially elastic law; its springs share "
+                                   "the stable step",
+                                   "fragmentation: "}));
+  append_keys(keys, body_keys());
+  append_keys(keys, elastic_keys("2e11", "0.3"));
+  append_keys(keys, material_keys());
+  append_keys(keys, element_keys());
+  append_keys(keys, impact_keys());
+  append_keys(keys, contact_keys());
+  append_keys(keys, time_keys());
+  append_keys(keys, output_keys());
+  return keys;
+}
+
+}  // namespace
+
+const KeyTable& dynamics_scene_keys() {
+  static const KeyTable table{"dynamics", make_keys(), {}};
+  return table;
+}
+
+const SceneKey& dynamics_key(const std::string& name) {
+  return dynamics_scene_keys().at(name);
+}
+
+}  // namespace vorodg

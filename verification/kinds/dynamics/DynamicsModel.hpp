@@ -1,0 +1,55 @@
+#pragma once
+// The model of one dynamics run, set up once before its time loop (setup_system, in deal.II's
+// words): the bodies' mesh, the element table, the lumped masses, the elastic integrator and the
+// per-cell material variation; the internal force (small strain, or corotational), the two
+// estimates of the critical step and the step taken; the central-difference integrator with its
+// contact, its boundary conditions and loads, and the cracks of a fragmentation run; and the
+// initial state (each body's velocity and spin).
+#include <optional>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/element/ElementTable.hpp"
+#include "dynamics/CentralDifference.hpp"
+#include "dynamics/ContactForces.hpp"
+#include "dynamics/LumpedMass.hpp"
+#include "dynamics/MaterialVariation.hpp"
+#include "verification/kinds/dynamics/DynamicsMesh.hpp"
+#include "verification/kinds/dynamics/FragmentationRun.hpp"
+
+namespace vorodg {
+
+class DynamicsModel {
+ public:
+  /// Builds everything of realization `id` of `scene`; throws InputError for what the mesh
+  /// cannot carry (a projectile narrower than the cells, a K0 too small for the law).
+  DynamicsModel(const DynamicsScene& scene, const EnsembleRunId& id);
+  DynamicsModel(const DynamicsModel&) = delete;
+  DynamicsModel& operator=(const DynamicsModel&) = delete;
+
+  const DynamicsScene& scene;
+  const BodiesMesh bodies;
+  const ElementTable table;
+  const LumpedMass mass;
+  const ElasticityIntegrator integrator;
+  const ElasticityIntegrator::MeanStrainOperators strain;  // cell mean strains, for the frames
+  const MaterialVariation variation;                       // empty: a uniform material
+
+  double dt_lanczos = 0.0, dt_cells = 0.0;  // the two estimates of the critical step
+  int lanczos_iterations = 0;
+  double dt = 0.0;  // the step taken: safety x the chosen estimate (with the springs' share)
+  long steps = 0;   // how many the run is to take
+
+  std::optional<FragmentationRun> cracks;  // fragmentation runs only
+  std::optional<ContactForces> contact;
+  std::optional<CentralDifference> run;
+
+  const PolygonMesh& mesh() const { return bodies.mesh; }
+
+ private:
+  /// The internal force of the (varied) cell matrices; sets the two critical-step estimates.
+  InternalForce make_force(const SplitDofMap& dofs);
+  /// The integrator with contact, boundaries, loads, cracks and its initial state.
+  void make_integrator(InternalForce force, const SplitDofMap& dofs);
+};
+
+}  // namespace vorodg

@@ -1,0 +1,83 @@
+#pragma once
+// What a dynamics run measures, step by step, from the integrator's records and the contact
+// reports: the drift of the energy balance and of the momenta, the wave bar's arrival time at
+// the far end, and the contact's depth, duration and rebound, each set beside its theory (the
+// 1D elastic bar: rebound speed = impact speed, contact time = 2 L / c_bar).
+#include <cmath>
+#include <vector>
+
+#include "dynamics/CentralDifference.hpp"
+#include "dynamics/CorotationalFrames.hpp"
+#include "verification/kinds/dynamics/DynamicsMesh.hpp"
+#include "verification/kinds/dynamics/DynamicsScene.hpp"
+
+namespace vorodg {
+
+struct DynamicsMeasures {
+  double energy_balance_error = 0.0;      // at the end, of the input energy
+  double max_energy_balance_error = 0.0;  // over every step
+  double momentum_drift = NAN;            // free bodies: max |P - P0| / sum_i m_i |v_i(0)|
+  double angular_momentum_drift = NAN;    // free-body: max |L - L0| / |L0|
+  // wave-bar
+  double arrival_time = NAN, arrival_theory = NAN, wave_speed = NAN, wave_speed_theory = NAN;
+  double wave_speed_error = NAN;  // measured / theory - 1
+  // contact (wall or bodies)
+  double max_penetration = 0.0, max_penetration_over_h = 0.0;
+  double contact_start = NAN, contact_end = NAN;  // first and last step in contact
+  double contact_time = NAN, contact_time_estimate = NAN;
+  int contact_steps = 0;
+  double tunnelled_contacts = 0.0;  // vertices found first deep inside a cell, left alone
+  double late_contacts = 0.0;       // found first deeper than a step goes: act beyond that
+  bool contact_ended = true;        // no contact at the last step
+  // wall: normal speeds of the centre of mass, towards the wall at t = 0 and away at the end
+  double impact_velocity = NAN, rebound_velocity = NAN, rebound_estimate = NAN;
+  // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
+  double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
+  double cracked_edges = NAN, broken_edges = NAN;
+  double released_edges = NAN;  // broken faces let go to surface contact (CohesiveForces)
+  // wall seconds in the insertion check and in the rebuilds after cracks (DynamicFracture)
+  double check_seconds = NAN, rebuild_seconds = NAN;
+  double law_balance_error = NAN;        // max over steps, with the law's closed-form energies
+  double law_balance_breach_time = NAN;  // first time it passed kLawBalanceLimit (NaN: never)
+  // small rotations (CorotationalFrames::mean_rotation), sampled at the output steps; NaN under
+  // corotational kinematics
+  double max_rotation = 0.0;         // the largest cell's mean rotation, rad
+  double large_rotation_time = NAN;  // first output time at which it passed kLargeRotation
+};
+
+/// A cell rotated further than this (rad) is drawn, and meets contact, stretched by more than
+/// theta^2 / 2 = 0.5 %: past it the small-strain model no longer describes where fragments are.
+constexpr double kLargeRotation = 0.1;
+
+class DynamicsProbe {
+ public:
+  /// `run` must be initialized; it and the mesh outlive the probe.
+  DynamicsProbe(const DynamicsScene& scene, const BodiesMesh& bodies, const CentralDifference& run);
+
+  /// After every step: books the step's record and contact reports.
+  void observe();
+  /// At the output steps: the cells' rotations against kLargeRotation.
+  void observe_rotation();
+  /// After the last step: the rebound, the contact time.
+  const DynamicsMeasures& finish();
+  const DynamicsMeasures& measures() const { return m_; }
+
+ private:
+  void observe_wave();
+  void observe_contact();
+  double far_end_velocity() const;
+
+  const DynamicsScene& scene_;
+  const BodiesMesh& bodies_;
+  const CentralDifference& run_;
+  DynamicsMeasures m_;
+  StepRecord start_;
+  double momentum_scale_ = 0.0, total_mass_ = 0.0;
+  bool conserves_momentum_ = false;
+  std::vector<int> far_nodes_;  // wave-bar: the nodes on the right end
+  CorotationalFrames frames_;   // for the cells' small-strain rotation
+  double previous_far_ = 0.0;
+  bool in_contact_ = false;
+};
+
+}  // namespace vorodg

@@ -1,0 +1,235 @@
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/element/ElementTable.hpp"
+#include "core/io/AtomicFile.hpp"
+#include "core/io/PvdCollection.hpp"
+#include "core/io/VtuMesh.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "dynamics/CentralDifference.hpp"
+#include "dynamics/ContactForces.hpp"
+#include "dynamics/LumpedMass.hpp"
+#include "verification/kinds/dynamics/DynamicsHistory.hpp"
+#include "verification/kinds/dynamics/DynamicsModel.hpp"
+#include "verification/kinds/dynamics/FragmentationRun.hpp"
+#include "verification/model/SettingsSchema.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vorodg {
+namespace {
+
+/// The run stops as unstable once kinetic plus elastic energy exceeds this many times the energy
+/// put in: a stable run stays within round-off of its input.
+constexpr double kBlowUp = 1e6;
+
+/// One frame of the series: the mesh at x = X + u with one point per node of the current DOF map
+/// (so a crack shows as a gap where its nodes split), the displacement and velocity at the
+/// points, each cell's mean stress (times its stiffness factor, if the material varies; taken in
+/// the cell's turning frame and turned back, under corotational kinematics) and von Mises
+/// stress, and any extra cell fields.
+void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDifference& run,
+                 const ElasticityIntegrator& integrator,
+                 const ElasticityIntegrator::MeanStrainOperators& strain,
+                 const std::vector<double>& stiffness, std::vector<VtuField> cell_fields) {
+  const int nodes = run.dofs().num_nodes();
+  std::vector<Point> moved(nodes);
+  VtuField displacement{"displacement", 2, {}}, velocity{"velocity", 2, {}};
+  VtuField stress{"mean_stress", 3, {}}, von_mises{"von_mises", 1, {}};
+  std::vector<int> cells;
+  cells.reserve(mesh.cell_vertex_list().size());
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    for (int k = 0; k < mesh.cell_size(c); ++k) cells.push_back(run.dofs().node(c, k));
+  for (int i = 0; i < nodes; ++i) {
+    const Eigen::Vector2d u = run.displacement().segment<2>(2 * i);
+    moved[i] = run.node_position(i) + u;
+    for (int d = 0; d < 2; ++d) {
+      displacement.values.push_back(u[d]);
+      velocity.values.push_back(run.velocity()[2 * i + d]);
+    }
+  }
+  const IsotropicElasticity& m = integrator.material();
+  const CorotationalFrames* frames = run.force().frames();
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    Eigen::VectorXd uc(2 * mesh.cell_size(c));
+    CorotationalFrames::Turn turn;  // none for small rotations
+    if (frames)
+      turn = frames->local_displacements(c, run.dofs(), run.displacement(), uc);
+    else
+      for (int k = 0; k < mesh.cell_size(c); ++k)
+        uc.segment<2>(2 * k) = run.displacement().segment<2>(2 * run.dofs().node(c, k));
+    const Eigen::Vector3d s = CorotationalFrames::global_stress(
+        turn, (stiffness.empty() ? 1.0 : stiffness[c]) * (m.D() * (strain.block(c) * uc)));
+    const double sz = m.model() == PlaneModel::strain ? m.nu() * (s[0] + s[1]) : 0.0;
+    stress.values.insert(stress.values.end(), {s[0], s[1], s[2]});
+    von_mises.values.push_back(
+        std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - sz) * (s[1] - sz) +
+                         (sz - s[0]) * (sz - s[0])) +
+                  3.0 * s[2] * s[2]));
+  }
+  cell_fields.insert(cell_fields.begin(), {stress, von_mises});
+  // The frame's domain is the deformed bounding box (the bodies have moved off the reference one).
+  Point lo = moved.front(), hi = moved.front();
+  for (const Point& p : moved) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const PolygonMesh deformed(Rectangle(lo.x(), lo.y(), hi.x(), hi.y()), moved, mesh.offsets(),
+                             cells);
+  write_vtu(file, deformed, {{displacement, velocity}, cell_fields});
+}
+
+/// history/<name>.csv, its folder made.
+fs::path history_file(const fs::path& out, const std::string& name) {
+  fs::create_directories(out / "history");
+  return out / "history" / (name + ".csv");
+}
+
+/// What a run writes as it goes: its history, its .pvd series (outputs.vtu) and the frames at
+/// the requested snapshot times with their list.
+class RunOutputs {
+ public:
+  RunOutputs(const DynamicsModel& model, const fs::path& out, std::string name)
+      : model_(model),
+        scene_(model.scene),
+        out_(out),
+        name_(std::move(name)),
+        history_(history_file(out, name_)),
+        series_(out / "vtu" / (name_ + ".pvd")) {
+    snapshots_ << "snapshot,requested_time,time,step,file\n";
+  }
+
+  /// A row of the history.
+  void record(const StepRecord& step) { history_.add(step, model_.run->contact()); }
+  void flush() { history_.flush(); }
+
+  /// A frame of the series.
+  void frame() {
+    const CentralDifference& run = *model_.run;
+    if (scene_.vtu) series_.add(run.time(), write("step_" + std::to_string(run.step_count())));
+  }
+
+  /// A frame at the first step at or after each requested time.
+  void snapshots() {
+    const CentralDifference& run = *model_.run;
+    for (; next_ < scene_.snapshots.size() &&
+           run.time() >= scene_.snapshots[next_] - 1e-9 * model_.dt;
+         ++next_) {
+      const std::string stem = "snapshot_" + std::to_string(next_);
+      write(stem);
+      snapshots_ << next_ << ',' << exact_text(scene_.snapshots[next_]) << ','
+                 << exact_text(run.time()) << ',' << run.step_count() << ',' << name_ << '/' << stem
+                 << ".vtu\n";
+    }
+  }
+
+  /// The history's last rows and the snapshots' list.
+  void finish() {
+    history_.flush();
+    if (scene_.snapshots.empty()) return;
+    fs::create_directories(out_ / "snapshots");
+    write_file_atomically(out_ / "snapshots" / (name_ + ".csv"), snapshots_.str());
+  }
+
+ private:
+  fs::path write(const std::string& stem) {
+    const fs::path file = out_ / "vtu" / name_ / (stem + ".vtu");
+    fs::create_directories(file.parent_path());
+    write_frame(file, model_.mesh(), *model_.run, model_.integrator, model_.strain,
+                model_.variation.stiffness,
+                model_.cracks ? model_.cracks->cell_fields(model_.mass) : std::vector<VtuField>{});
+    return file;
+  }
+
+  const DynamicsModel& model_;
+  const DynamicsScene& scene_;
+  const fs::path out_;
+  const std::string name_;
+  DynamicsHistory history_;
+  PvdCollection series_;
+  std::size_t next_ = 0;  // the next snapshot
+  std::ostringstream snapshots_;
+};
+
+/// Steps the model to its end, observing and writing as the scene asks. Throws NumericalError
+/// once the energy blows up (a stable run stays within round-off of its input).
+void time_loop(DynamicsModel& model, RunOutputs& outputs, DynamicsProbe& probe) {
+  const DynamicsScene& scene = model.scene;
+  CentralDifference& run = *model.run;
+  probe.observe();
+  if (model.cracks) model.cracks->check_balance(run.record());
+  outputs.record(run.record());
+  outputs.frame();
+  outputs.snapshots();
+  for (long s = 1; s <= model.steps; ++s) {
+    if (model.cracks)
+      model.cracks->step();
+    else
+      run.step();
+    const StepRecord& step = run.record();
+    probe.observe();
+    if (model.cracks) model.cracks->integrate(step);
+    const double energy = step.kinetic + step.elastic;
+    const bool unstable = !std::isfinite(energy) || energy > kBlowUp * step.input_energy();
+    const bool last = s == model.steps || unstable;
+    if (s % scene.history_every == 0 || last) {
+      outputs.record(step);
+      if (model.cracks) model.cracks->check_balance(step);
+    }
+    if (s % scene.output_every == 0 || last) {
+      probe.observe_rotation();
+      outputs.flush();
+      if (!unstable) outputs.frame();  // a blown-up state has no picture worth drawing
+    }
+    if (!unstable) outputs.snapshots();
+    if (unstable)
+      throw NumericalError("unstable at step " + std::to_string(s) + " (t = " + fmt(step.time) +
+                           " s): the energy grew to " + fmt(energy / step.input_energy(), 3) +
+                           " times the input (dt = " + fmt(scene.safety) + " x the " +
+                           step_estimate_name(scene.estimate) + " estimate)");
+  }
+}
+
+}  // namespace
+
+void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<EnsembleRunId>& runs) {
+  check_each_level(
+      runs, [&](const EnsembleRunId& run) { bodies_mesh(scene, run); },
+      "scene " + scene.path.string() + ": ");
+}
+
+DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
+                            const fs::path& out) {
+  const Stopwatch clock;
+  DynamicsModel model(scene, id);
+  DynamicsRecord r;
+  r.run = id;
+  r.cells = model.mesh().num_cells();
+  r.h_avg = model.bodies.h_avg;
+  r.dt_lanczos = model.dt_lanczos, r.dt_cells = model.dt_cells;
+  r.lanczos_iterations = model.lanczos_iterations;
+  r.dt = model.dt;
+  r.steps = model.steps;
+  r.dofs = model.run->dofs().num_dofs();
+  RunOutputs outputs(model, out, id.id());
+  DynamicsProbe probe(scene, model.bodies, *model.run);
+  const double setup = clock.seconds();
+  try {
+    time_loop(model, outputs, probe);
+    r.complete = true;
+  } catch (const NumericalError& e) {  // unstable, or a breakdown: what was written stays
+    r.failure = e.what();
+  }
+  outputs.finish();
+  r.steps = model.run->step_count();  // those done: fewer if the run stopped
+  r.end_time = model.run->time();
+  r.measures = probe.finish();
+  if (model.cracks) model.cracks->finish(out, id.id(), model.mass, r.measures);
+  r.seconds = clock.seconds();
+  r.loop_seconds = r.seconds - setup;
+  return r;
+}
+
+}  // namespace vorodg

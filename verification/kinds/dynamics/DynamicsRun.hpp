@@ -1,0 +1,42 @@
+#pragma once
+// One run of a dynamics study: a mesh realization at one level, integrated by central differences
+// with lumped masses and contact from t = 0 to the scene's end. Its history and its deformed-mesh
+// series are written as it goes (atomically, so a stopped run leaves only whole files); what it
+// measured becomes one record.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "verification/kinds/dynamics/DynamicsMesh.hpp"
+#include "verification/kinds/dynamics/DynamicsProbe.hpp"
+#include "verification/kinds/dynamics/DynamicsScene.hpp"
+
+namespace vorodg {
+
+struct DynamicsRecord {
+  EnsembleRunId run;
+  int cells = 0, dofs = 0;
+  double h_avg = 0.0;
+  double dt = 0.0;
+  double dt_lanczos = 0.0, dt_cells = 0.0;  // the two estimates of the critical step
+  int lanczos_iterations = 0;
+  long steps = 0;
+  double end_time = 0.0;
+  DynamicsMeasures measures;
+  bool complete = false;
+  std::string failure;
+  double seconds = 0.0;
+  double loop_seconds = 0.0;  // of which the time loop
+};
+
+/// Builds the bodies' mesh of the first realization of every level, so that a mesh spec the
+/// bodies cannot carry is refused as bad input (naming the mesh block) before anything runs.
+void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<EnsembleRunId>& runs);
+
+/// Runs one realization, writing history/<id>.csv and (outputs.vtu) vtu/<id>.pvd under `out`.
+/// A run that becomes unstable or breaks down numerically stops there: it keeps its history and
+/// is recorded incomplete with the reason.
+DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& run,
+                            const std::filesystem::path& out);
+
+}  // namespace vorodg

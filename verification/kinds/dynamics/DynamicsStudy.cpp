@@ -1,0 +1,282 @@
+// The explicit-dynamics study kinds: `dynamics` (wave bars, free bodies, impacts: every measured
+// figure beside its theory) and `fragmentation`, the same with crack insertion and the cohesive
+// law (fragment counts, masses, the energy with the law's closed forms). One reader and one runner
+// serve both. Every (mesh, level, realization) of the scene is one run (DynamicsRun) in the
+// harness's resumable pool; each variant, or each value of a `perturb` study, runs into its own
+// subfolder, and a perturbation study ends with the Hamming distances between them. The reports:
+// results.csv (one row per run), summary.json and report.md (docs/dynamics.md "The dynamics
+// study"). A run that became unstable or broke down keeps its history; the study exits 3.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/io/AtomicFile.hpp"
+#include "core/util/Format.hpp"
+#include "verification/harness/Ensemble.hpp"
+#include "verification/harness/EnsembleStudy.hpp"
+#include "verification/harness/StudyParts.hpp"
+#include "verification/kinds/dynamics/DynamicsHistory.hpp"
+#include "verification/kinds/dynamics/DynamicsKeys.hpp"
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
+#include "verification/kinds/dynamics/FragmentLevels.hpp"
+#include "verification/kinds/dynamics/FragmentationRun.hpp"
+#include "verification/kinds/dynamics/PerturbationReport.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace vorodg {
+namespace {
+
+/// The measured figures by name, in the order results.csv lists them.
+const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_fields() {
+  using M = DynamicsMeasures;
+  static const std::vector<std::pair<const char*, double M::*>> fields = {
+      {"energy_balance_error", &M::energy_balance_error},
+      {"max_energy_balance_error", &M::max_energy_balance_error},
+      {"momentum_drift", &M::momentum_drift},
+      {"angular_momentum_drift", &M::angular_momentum_drift},
+      {"arrival_time", &M::arrival_time},
+      {"arrival_theory", &M::arrival_theory},
+      {"wave_speed", &M::wave_speed},
+      {"wave_speed_theory", &M::wave_speed_theory},
+      {"wave_speed_error", &M::wave_speed_error},
+      {"max_penetration", &M::max_penetration},
+      {"max_penetration_over_h", &M::max_penetration_over_h},
+      {"tunnelled_contacts", &M::tunnelled_contacts},
+      {"late_contacts", &M::late_contacts},
+      {"impact_velocity", &M::impact_velocity},
+      {"rebound_velocity", &M::rebound_velocity},
+      {"rebound_estimate", &M::rebound_estimate},
+      {"contact_time", &M::contact_time},
+      {"contact_time_estimate", &M::contact_time_estimate},
+      {"fragments", &M::fragments},
+      {"max_fragment_mass_fraction", &M::max_fragment_mass_fraction},
+      {"dissipated_energy", &M::dissipated_energy},
+      {"cracked_edges", &M::cracked_edges},
+      {"broken_edges", &M::broken_edges},
+      {"released_edges", &M::released_edges},
+      {"check_seconds", &M::check_seconds},
+      {"rebuild_seconds", &M::rebuild_seconds},
+      {"law_balance_error", &M::law_balance_error},
+      {"law_balance_breach_time", &M::law_balance_breach_time},
+      {"max_rotation", &M::max_rotation},
+      {"large_rotation_time", &M::large_rotation_time}};
+  return fields;
+}
+
+/// Every field of a dynamics record, with the scene's settings that results.csv lists beside
+/// them (problem, estimate, safety: not part of the record's JSON).
+std::vector<RecordField<DynamicsRecord>> dynamics_fields(const DynamicsScene& scene) {
+  using R = DynamicsRecord;
+  const CsvFormat fine{true, 12, true};
+  std::vector<RecordField<R>> f = run_id_fields<R>();
+  f.insert(f.end(),
+           {csv_column<R>("problem", dynamics_problem_name(scene.problem)),
+            field("cells", &R::cells), field("dofs", &R::dofs), field("h_avg", &R::h_avg, fine),
+            field("dt", &R::dt, fine), field("dt_critical_lanczos", &R::dt_lanczos, fine),
+            field("dt_critical_cells", &R::dt_cells, fine),
+            field("lanczos_iterations", &R::lanczos_iterations),
+            csv_column<R>("estimate", step_estimate_name(scene.estimate)),
+            csv_column<R>("safety", scene.safety), field("steps", &R::steps),
+            field("end_time", &R::end_time, fine)});
+  for (const auto& [name, member] : measure_fields())  // absent: not measured
+    f.push_back({name, [m = member](const R& r) { return number_json(r.measures.*m); },
+                 [m = member](R& r, const json& j) { r.measures.*m = read_number(j); },
+                 CsvFormat{true, 10, true}, true, true, true});
+  f.push_back({"contact_steps", [](const R& r) { return json(r.measures.contact_steps); },
+               [](R& r, const json& j) { r.measures.contact_steps = j.get<int>(); }});
+  f.push_back({"contact_ended", [](const R& r) { return json(r.measures.contact_ended); },
+               [](R& r, const json& j) { r.measures.contact_ended = j.get<bool>(); }});
+  f.insert(f.end(), {field("complete", &R::complete), field("failure", &R::failure, kNotInCsv),
+                     field("seconds", &R::seconds, {true, 4, false}),
+                     field("loop_seconds", &R::loop_seconds, kNotInCsv)});
+  return f;
+}
+
+std::string cell(double x, int precision = 6) {
+  return std::isfinite(x) ? fmt(x, precision) : "";
+}
+
+/// The worst of a figure over the complete runs that measured it (NaN: none did).
+double worst(const std::vector<DynamicsRecord>& records, double DynamicsMeasures::*field) {
+  double w = NAN;
+  for (const DynamicsRecord& r : records)
+    if (r.complete && std::isfinite(r.measures.*field))
+      w = std::isnan(w) ? std::abs(r.measures.*field) : std::max(w, std::abs(r.measures.*field));
+  return w;
+}
+
+std::string report_row(const DynamicsScene& scene, const DynamicsRecord& r) {
+  const DynamicsMeasures& m = r.measures;
+  std::ostringstream md;
+  md << "| " << r.run.id() << " | " << r.cells << " | " << fmt(r.h_avg, 4) << " | " << fmt(r.dt, 4)
+     << " | " << fmt(r.dt_lanczos, 4) << " / " << fmt(r.dt_cells, 4) << " | " << r.steps << " | "
+     << fmt(m.energy_balance_error, 2) << " | " << cell(m.momentum_drift, 2) << " | ";
+  switch (scene.problem) {
+    case DynamicsProblem::wave_bar:
+      md << cell(m.arrival_time, 5) << " / " << cell(m.arrival_theory, 5) << " | "
+         << cell(m.wave_speed, 5) << " / " << cell(m.wave_speed_theory, 5) << " ("
+         << (std::isfinite(m.wave_speed_error) ? fmt(100 * m.wave_speed_error, 3) + "%" : "-")
+         << ") |";
+      break;
+    case DynamicsProblem::free_body: md << cell(m.angular_momentum_drift, 2) << " |"; break;
+    default:
+      md << cell(m.max_penetration_over_h, 3) << " | " << cell(m.rebound_velocity, 5) << " / "
+         << cell(m.rebound_estimate, 5) << " | " << cell(m.contact_time, 4) << " / "
+         << cell(m.contact_time_estimate, 4) << (m.contact_ended ? "" : " (not ended)") << " |";
+  }
+  return md.str() + "\n";
+}
+
+std::string report_md(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result) {
+  std::ostringstream md;
+  md << "# " << scene.name << (scene.label.empty() ? "" : " / " + scene.label) << "\n\n"
+     << scene.description << "\n\nProblem " << dynamics_problem_name(scene.problem) << "; "
+     << result.records.size() << " runs, " << result.incomplete
+     << " incomplete. dt = " << fmt(scene.safety) << " x the " << step_estimate_name(scene.estimate)
+     << " estimate of the critical step"
+     << (scene.fragmentation ? ", with the cohesive springs' share (docs/fragmentation.md)" : "")
+     << ".\n\n| run | cells | h_avg | dt [s] | dt_crit Lanczos / "
+        "cells [s] | steps | energy balance error | momentum drift | ";
+  switch (scene.problem) {
+    case DynamicsProblem::wave_bar:
+      md << "arrival / L/c [s] | speed / theory [m/s] "
+            "|\n|---|---|---|---|---|---|---|---|---|---|\n";
+      break;
+    case DynamicsProblem::free_body:
+      md << "angular momentum drift |\n|---|---|---|---|---|---|---|---|---|\n";
+      break;
+    default:
+      md << "max penetration / h_avg | rebound / 1D estimate [m/s] | contact time / 2L/c_bar [s] "
+            "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  }
+  for (const DynamicsRecord& r : result.records) md << report_row(scene, r);
+  if (scene.fragmentation) {
+    md << "\n| run | fragments | broken / cracked edges | largest fragment (mass fraction) | "
+          "dissipated [J/m] | balance with the law's energies | largest cell rotation [rad] "
+          "(first past "
+       << fmt(kLargeRotation) << " at [s]) |\n|---|---|---|---|---|---|---|\n";
+    for (const DynamicsRecord& r : result.records) {
+      const DynamicsMeasures& m = r.measures;
+      md << "| " << r.run.id() << " | " << fmt(m.fragments) << " | " << fmt(m.broken_edges) << " / "
+         << fmt(m.cracked_edges) << " | " << fmt(m.max_fragment_mass_fraction, 3) << " | "
+         << fmt(m.dissipated_energy, 4) << " | " << fmt(m.law_balance_error, 2)
+         << (std::isfinite(m.law_balance_breach_time)
+                 ? " (past " + fmt(100 * kLawBalanceLimit) + " % at " +
+                       fmt(m.law_balance_breach_time, 3) + " s)"
+                 : "")
+         << " | " << fmt(m.max_rotation, 3)
+         << (std::isfinite(m.large_rotation_time) ? " (" + fmt(m.large_rotation_time, 3) + ")" : "")
+         << " |\n";
+    }
+  }
+  md << "\nEnergy balance error: |balance - balance(0)| over the input energy at the end "
+        "(docs/dynamics.md). Momentum drift: max |P - P(0)| over sum m|v(0)|, only where no wall, "
+        "prescribed velocity or damping acts.\n\nFiles: results.csv (one row per run), "
+        "history/<run>.csv "
+        "(columns "
+     << DynamicsHistory::columns()
+     << "), vtu/<run>.pvd (deformed mesh, velocity, cell stresses), plots/<run>_energy.png.\n";
+  for (const DynamicsRecord& r : result.records)
+    if (!r.complete) md << "\n- " << r.run.id() << " is incomplete: " << r.failure << "\n";
+  return md.str();
+}
+
+void write_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result,
+                   const fs::path& out) {
+  const std::vector<RecordField<DynamicsRecord>> fields = dynamics_fields(scene);
+  std::string csv = csv_header(fields);
+  for (const DynamicsRecord& r : result.records) csv += csv_row(fields, r);
+  write_file_atomically(out / "results.csv", csv);
+  json settings = json::object();
+  for (const auto& [key, value] : scene.settings) settings[key] = value;
+  json runs = json::array();
+  for (const DynamicsRecord& r : result.records) {
+    json j = record_json(fields, r);
+    for (const char* timing : {"seconds", "loop_seconds", "check_seconds", "rebuild_seconds"})
+      j.erase(timing);  // the same results give the same bytes, on any number of processes
+    runs.push_back(j);
+  }
+  json summary = {{"scene", scene.name},
+                  {"study", scene.fragmentation ? "fragmentation" : "dynamics"},
+                  {"problem", dynamics_problem_name(scene.problem)},
+                  {"settings", settings},
+                  {"runs", result.records.size()},
+                  {"incomplete", result.incomplete},
+                  {"records", runs}};
+  for (const auto& [name, field] : measure_fields())
+    if (const double w = worst(result.records, field);
+        std::isfinite(w) && !std::string_view(name).ends_with("seconds"))
+      summary["worst"][name] = w;
+  write_file_atomically(out / "summary.json", summary.dump(1) + "\n");
+  std::string md = report_md(scene, result);
+  if (scene.fragmentation) {
+    const std::vector<FragmentLevel> levels = fragment_levels(result.records, out);
+    write_file_atomically(out / "levels.csv", fragment_levels_csv(levels));
+    md += fragment_levels_md(levels);
+  }
+  write_file_atomically(out / "report.md", md);
+}
+
+StudyRecords<DynamicsRecord> run_dynamics_study(const DynamicsScene& scene, const fs::path& out,
+                                                int threads, bool progress) {
+  check_dynamics_meshes(scene, ensemble_runs(scene.meshes));
+  StudyRecords<DynamicsRecord> result = run_study_records<DynamicsRecord>(
+      scene.meshes, out, threads, progress, dynamics_fields(scene),
+      [&](const EnsembleRunId& id) { return run_dynamics(scene, id, out); },
+      [](const DynamicsRecord& r) {
+        return r.run.id() + ": " + std::to_string(r.cells) + " cells, " + std::to_string(r.steps) +
+               " steps of " + fmt(r.dt, 4) + " s, energy balance " +
+               fmt(r.measures.energy_balance_error, 2) + ", " + fmt(r.seconds, 3) + " s" +
+               (r.complete ? "" : " (incomplete: " + r.failure + ")");
+      });
+  if (Ensemble::writes_reports()) write_reports(scene, result, out);
+  return result;
+}
+
+int run_dynamics_scene(const StudyCall& call) {
+  const DynamicsScene scene = read_dynamics_scene(call.scene, call.force);
+  return run_study_parts<DynamicsScene>(
+      scene, call, "dynamics", "dynamics_plots.py",
+      [&](const DynamicsScene& part, const std::filesystem::path& out) {
+        const StudyRecords<DynamicsRecord> r =
+            run_dynamics_study(part, out, call.threads, call.progress);
+        return PartCounts{r.records.size(), r.incomplete};
+      },
+      [&](int incomplete) {
+        if (!scene.perturb_key.empty() && incomplete == 0)
+          write_perturbation_report(scene, call.out);
+        if (scene.fragmentation && scene.variants.size() >= 2 && !call.no_plots)
+          draw_plots("dynamics_plots.py", call.out);  // across the variants, and the perturbation
+      });
+}
+
+/// Reads as `vorodg run --force` would: --list and the fuzzer take every scene a run can take.
+std::string read_dynamics(const std::string& text, const std::string& source) {
+  return parse_dynamics_scene(text, source, true).description;
+}
+
+std::vector<SceneKey> dynamics_keys() {
+  return dynamics_scene_keys().keys;
+}
+
+}  // namespace
+
+StudyKind dynamics_kind() {
+  return {"dynamics",
+          "explicit dynamics with contact: waves, free bodies, impacts against their theory",
+          read_dynamics, run_dynamics_scene, dynamics_keys};
+}
+
+StudyKind fragmentation_kind() {
+  return {"fragmentation",
+          "explicit dynamics with crack insertion: fragments, their masses and the energy",
+          read_dynamics, run_dynamics_scene, dynamics_keys};
+}
+
+}  // namespace vorodg

@@ -1,0 +1,31 @@
+// The keys a fragmentation study adds to a dynamics scene (docs/fragmentation.md): the cohesive
+// law, the insertion criterion and the strip's strain rate. A dynamics study refuses them.
+#include "core/util/Errors.hpp"
+#include "verification/kinds/dynamics/DynamicsKeys.hpp"
+#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
+
+namespace vorodg {
+
+void DynamicsSceneReader::read_fracture() {
+  for (const char* key : {"cohesive", "criterion"})
+    if (!s_.fragmentation && top_.has(key)) top_.fail_value(key, "only in a fragmentation study");
+  refuse_unless(s_.problem == DynamicsProblem::strip_expansion, "strain_rate");
+  if (s_.problem == DynamicsProblem::strip_expansion) s_.strain_rate = number(top_, "strain_rate");
+  if (!s_.fragmentation) return;
+  SceneObject c = object("cohesive");
+  CohesiveParameters& law = s_.cohesive;
+  law.shape = word(c, "cohesive.law", " linear bilinear ") == "linear" ? SofteningShape::linear
+                                                                       : SofteningShape::bilinear;
+  law.strength = number(c, "cohesive.strength");
+  law.fracture_energy = number(c, "cohesive.fracture_energy");
+  law.shear_factor = number(c, "cohesive.shear_factor");
+  s_.stiffness_factor = number(c, "cohesive.initial_stiffness");
+  c.finish();
+  SceneObject m = object("criterion");
+  s_.criterion.cohesion = number(m, "criterion.cohesion", law.strength);
+  s_.criterion.friction = number(m, "criterion.friction");
+  s_.criterion.tensile_cutoff = number(m, "criterion.tensile_cutoff", law.strength);
+  m.finish();
+}
+
+}  // namespace vorodg

@@ -1,0 +1,123 @@
+#include "verification/kinds/dynamics/FragmentationRun.hpp"
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "core/io/AtomicFile.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+#include "dynamics/Fragments.hpp"
+#include "verification/model/SettingsSchema.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vorodg {
+namespace {
+
+CohesiveParameters with_stiffness(const DynamicsScene& scene, double h_avg) {
+  CohesiveParameters p = scene.cohesive;
+  p.initial_stiffness = scene.stiffness_factor * scene.E / h_avg;
+  return p;
+}
+
+CohesiveLaw make_law(const DynamicsScene& scene, double h_avg) {
+  try {
+    return CohesiveLaw(with_stiffness(scene, h_avg));
+  } catch (const InputError& e) {
+    throw InputError("cohesive.initial_stiffness " + fmt(scene.stiffness_factor) +
+                     " x E / h_avg (" + fmt(h_avg) + " m): " + e.what());
+  }
+}
+
+}  // namespace
+
+FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh& mesh,
+                                   double h_avg)
+    : mesh_(mesh),
+      law_(make_law(scene, h_avg)),
+      criterion_(scene.criterion),
+      eligible_(mesh.num_edges(), 1) {}
+
+double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
+                                     double safety) const {
+  return CohesiveForces::stable_step(cells, mesh_, mass, law_, eligible_, safety);
+}
+
+void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,
+                              const MaterialVariation& variation, ContactForces* contact,
+                              int threads) {
+  run_ = &run;
+  contact_ = contact;
+  cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
+  cohesive_->set_edge_strength(variation.edge_strength(mesh_));
+  insertion_ = std::make_unique<CrackInsertion>(mesh_, integrator, criterion_, eligible_, threads);
+  insertion_->vary(variation);
+  insertion_->turn_with(run.force().frames());
+  fracture_ = std::make_unique<DynamicFracture>(mesh_, run, *cohesive_, *insertion_, contact);
+}
+
+void FragmentationRun::step() {
+  fracture_->step(1);
+}
+
+void FragmentationRun::integrate(const StepRecord& r) {
+  if (contact_) contact_damped_ += contact_->report().dissipation_power * (r.time - last_time_);
+  last_time_ = r.time;
+}
+
+void FragmentationRun::check_balance(const StepRecord& r) {
+  if (r.step == 0) start_ = r.kinetic + r.elastic;
+  // Contact by its closed form too: the energy in its springs now, and what its damping has
+  // taken. Its booked work would hide energy that a penalty switching on at depth creates.
+  const double contact = contact_ ? contact_->report().potential + contact_damped_ : 0.0;
+  const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
+                      cohesive_->stored_energy() + r.damping_dissipation + contact;
+  const double put_in = start_ + r.external_work + r.reaction_work;
+  const double balance = std::abs(held - put_in) / std::max(r.input_energy(), 1e-300);
+  worst_balance_ = std::max(worst_balance_, balance);
+  if (std::isnan(breach_time_) && balance > kLawBalanceLimit) breach_time_ = r.time;
+}
+
+std::vector<VtuField> FragmentationRun::cell_fields(const LumpedMass& mass) const {
+  const Fragments pieces(fracture_->broken_state(), mass);
+  VtuField fragment{"fragment", 1, {}}, cracked{"cracked_edges", 1, {}};
+  for (int c = 0; c < mesh_.num_cells(); ++c) {
+    fragment.values.push_back(pieces.fragment(c));
+    int n = 0;
+    for (int e : mesh_.cell_edges(c)) n += fracture_->cracked()[e];
+    cracked.values.push_back(n);
+  }
+  return {fragment, cracked};
+}
+
+void FragmentationRun::finish(const fs::path& out, const std::string& id, const LumpedMass& mass,
+                              DynamicsMeasures& m) const {
+  const Fragments pieces(fracture_->broken_state(), mass);
+  m.fragments = pieces.num_fragments();
+  m.max_fragment_mass_fraction = pieces.largest_mass_fraction();
+  m.dissipated_energy = cohesive_->dissipated_energy();
+  m.cracked_edges = static_cast<double>(cohesive_->edges().size());
+  m.broken_edges = cohesive_->num_broken();
+  m.released_edges = static_cast<double>(cohesive_->released_edges().size());
+  m.check_seconds = fracture_->times().check;
+  m.rebuild_seconds = fracture_->times().rebuild;
+  m.law_balance_error = worst_balance_;
+  m.law_balance_breach_time = breach_time_;
+  const Eigen::Matrix2Xd v = pieces.velocities(run_->dofs(), run_->velocity());
+  std::ostringstream f;
+  f << "fragment,mass,cells,x,y,vx,vy\n";
+  for (int i = 0; i < pieces.num_fragments(); ++i)
+    f << i << ',' << exact_text(pieces.mass(i)) << ',' << pieces.num_cells(i) << ','
+      << exact_text(pieces.centres()(0, i)) << ',' << exact_text(pieces.centres()(1, i)) << ','
+      << exact_text(v(0, i)) << ',' << exact_text(v(1, i)) << '\n';
+  fs::create_directories(out / "fragments");
+  write_file_atomically(out / "fragments" / (id + ".csv"), f.str());
+  std::ostringstream c;
+  c << "step,edge\n";
+  for (const DynamicFracture::Event& e : fracture_->events()) c << e.step << ',' << e.edge << '\n';
+  fs::create_directories(out / "cracks");
+  write_file_atomically(out / "cracks" / (id + ".csv"), c.str());
+}
+
+}  // namespace vorodg

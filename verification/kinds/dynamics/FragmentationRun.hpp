@@ -1,0 +1,68 @@
+#pragma once
+// The cracks of one fragmentation run (docs/fragmentation.md): the cohesive law with K0 in units
+// of E / h_avg, the Mohr-Coulomb insertion check on every interior edge, and DynamicFracture on
+// the run's integrator; the stable step with the faces' springs; after the run, the fragments and
+// the crack log as files, and the figures for results.csv.
+#include <filesystem>
+#include <string>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/io/VtuMesh.hpp"
+#include "dynamics/DynamicFracture.hpp"
+#include "dynamics/MaterialVariation.hpp"
+#include "dynamics/StableTimeStep.hpp"
+#include "verification/kinds/dynamics/DynamicsProbe.hpp"
+#include "verification/kinds/dynamics/DynamicsScene.hpp"
+
+namespace vorodg {
+
+/// The energy balance with the law's energies a run must keep, of the input energy.
+constexpr double kLawBalanceLimit = 0.01;
+
+class FragmentationRun {
+ public:
+  /// The law and criterion of `scene` on `mesh`; throws InputError naming cohesive keys the
+  /// mesh cannot carry (a K0 too small for the law's peak to come before delta_c).
+  FragmentationRun(const DynamicsScene& scene, const PolygonMesh& mesh, double h_avg);
+
+  /// safety x the critical step of the cells and the faces' springs together, for every crack
+  /// pattern the run can reach.
+  double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety) const;
+  /// Starts cracking on `run` (before its initialize()) of a material varying as `variation`
+  /// (empty: uniform; the run's cell matrices already scaled); with `contact` (the run's), cracks
+  /// expose new surface to it.
+  void attach(CentralDifference& run, const ElasticityIntegrator& integrator,
+              const MaterialVariation& variation, ContactForces* contact, int threads);
+  /// One step of the run with the insertion check after it.
+  void step();
+  /// After every step: sums what accrues over time (contact damping's loss, by the rectangle
+  /// rule on the power; zero without damping).
+  void integrate(const StepRecord& record);
+  /// After a step (the run calls it at its history steps: the closed forms cost a pass over the
+  /// cracked edges): the balance with the closed forms of the cohesive law and of contact
+  /// (kinetic + elastic + dissipated + stored + contact springs + contact damping against what
+  /// was put in), relative to the input energy; its largest value so far is kept.
+  void check_balance(const StepRecord& record);
+  /// For a .vtu frame: per cell its fragment (components across the fully broken edges) and its
+  /// number of cracked edges.
+  std::vector<VtuField> cell_fields(const LumpedMass& mass) const;
+  /// Fills the fragmentation figures of `m` and writes fragments/<id>.csv and cracks/<id>.csv.
+  void finish(const std::filesystem::path& out, const std::string& id, const LumpedMass& mass,
+              DynamicsMeasures& m) const;
+
+ private:
+  const PolygonMesh& mesh_;
+  CohesiveLaw law_;
+  MohrCoulomb criterion_;
+  std::vector<char> eligible_;
+  std::unique_ptr<CohesiveForces> cohesive_;
+  std::unique_ptr<CrackInsertion> insertion_;
+  std::unique_ptr<DynamicFracture> fracture_;
+  CentralDifference* run_ = nullptr;
+  const ContactForces* contact_ = nullptr;
+  double start_ = 0.0, worst_balance_ = 0.0;
+  double contact_damped_ = 0.0, last_time_ = 0.0;  // contact damping's loss so far
+  double breach_time_ = NAN;                       // when the balance first passed kLawBalanceLimit
+};
+
+}  // namespace vorodg

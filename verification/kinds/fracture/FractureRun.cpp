@@ -1,0 +1,215 @@
+#include "verification/kinds/fracture/FractureRun.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/element/ElasticityIntegrator.hpp"
+#include "core/element/ElementTable.hpp"
+#include "core/io/AtomicFile.hpp"
+#include "core/io/PvdCollection.hpp"
+#include "core/io/VtuMesh.hpp"
+#include "core/mesh/MeshValidator.hpp"
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+#include "core/util/Stopwatch.hpp"
+#include "dg/CohesiveFracture.hpp"
+#include "dg/QuasiStaticPath.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vorodg {
+namespace {
+
+constexpr int kCurveWriteEvery = 10;  // points between rewrites of a run's curve file
+
+/// The deformed mesh as disconnected cells (every cell its own vertex copies, moved by `scale`
+/// times the displacement), with each cell's worst interface state: 0 intact, 1 cohesive, 2 open.
+void write_deformed(const fs::path& path, const CohesiveFracture& model, const Eigen::VectorXd& u,
+                    const std::vector<InterfacePoint>& points, double scale) {
+  const PolygonMesh& mesh = model.space().mesh();
+  std::vector<Point> vertices;
+  std::vector<int> offsets{0}, loops;
+  VtuField displacement{"displacement", 2, {}}, state{"interface_state", 1, {}};
+  state.values.assign(mesh.num_cells(), 0.0);
+  for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+    const Interface& f = model.interfaces().face(p);
+    const double s = points[p].state == PointState::open       ? 2.0
+                     : points[p].state == PointState::cohesive ? 1.0
+                                                               : 0.0;
+    for (int c : f.cell) state.values[c] = std::max(state.values[c], s);
+  }
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const auto loop = mesh.cell_vertices(c);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int dof = model.space().dof(c, static_cast<int>(k));
+      const Eigen::Vector2d d(u[dof], u[dof + 1]);
+      loops.push_back(static_cast<int>(vertices.size()));
+      vertices.push_back(mesh.vertex(loop[k]) + scale * d);
+      displacement.values.push_back(d.x());
+      displacement.values.push_back(d.y());
+    }
+    offsets.push_back(static_cast<int>(loops.size()));
+  }
+  const PolygonMesh exploded(mesh.domain(), std::move(vertices), std::move(offsets),
+                             std::move(loops));
+  write_vtu(path, exploded, {{displacement}, {state}});
+}
+
+/// Faces past the strength (softening or open; not the notch) as segments x0,y0,x1,y1,state.
+std::string crack_faces(const CohesiveFracture& model, const std::vector<InterfacePoint>& points) {
+  std::ostringstream csv;
+  csv << "x0,y0,x1,y1,state\n";
+  const CohesiveLaw& law = model.interfaces().law();
+  for (int p = 0; p + 1 < static_cast<int>(points.size()); p += 2) {
+    const Interface& f = model.interfaces().face(p);
+    if (model.setup().notch[f.edge]) continue;
+    bool cracked = false, open = true;
+    for (int q = p; q < p + 2; ++q) {
+      cracked |= law.dissipated_energy(points[q].history.max_opening) > 0.0;
+      open &= points[q].state == PointState::open;
+    }
+    if (cracked)
+      csv << fmt(f.a.x(), 12) << ',' << fmt(f.a.y(), 12) << ',' << fmt(f.b.x(), 12) << ','
+          << fmt(f.b.y(), 12) << ',' << (open ? "open" : "cohesive") << '\n';
+  }
+  return csv.str();
+}
+
+GeneratedMesh run_mesh(const FractureScene& scene, const EnsembleRunId& run) {
+  MeshSpec spec = scene.meshes[run.mesh].spec(scene.geometry.domain, run.level, run.seed);
+  if (spec.symmetric && scene.geometry.notch_depth > 0.0)  // the notch tip must be a vertex
+    spec.line_marks = {scene.geometry.domain.y0() + scene.geometry.notch_depth};
+  GeneratedMesh generated = generate_mesh(spec);
+  if (const auto report = validate_mesh(generated.mesh); !report.ok())
+    throw NumericalError("invalid mesh: " + report.defects.front().what);
+  return generated;
+}
+
+/// What a run keeps of each converged point of its path: a row of its curve (rewritten every
+/// kCurveWriteEvery points, so a stopped run keeps a whole file), the record's running figures
+/// (peak, dissipation, balance, the bar's closed form), and every vtu_every points a frame.
+class PathRecorder {
+ public:
+  PathRecorder(const FractureScene& scene, const CohesiveFracture& model,
+               const IsotropicElasticity& material, const fs::path& out, std::string id,
+               FractureRecord& record)
+      : scene_(scene),
+        model_(model),
+        material_(material),
+        out_(out),
+        id_(std::move(id)),
+        r_(record),
+        curve_file_(out / "curves" / (id_ + ".csv")),
+        series_(out / "vtu" / (id_ + ".pvd")),
+        // Displacements are tiny against the body: magnify them to a twentieth of its size.
+        magnify_(0.05 * scene.geometry.domain.scale() /
+                 std::max(scene.loading.max_stroke, scene.loading.max_cmod)) {
+    fs::create_directories(out / "curves");
+    fs::create_directories(out / "cracks");
+    curve_ << "step,displacement,cmod,load,external_work,elastic_energy,dissipated_energy,"
+              "coupling_energy,cohesive_energy,switched_energy,crack_length,inserted,newton_"
+              "iterations\n";
+  }
+
+  void operator()(const PathPoint& p, const Eigen::VectorXd& u,
+                  const std::vector<InterfacePoint>& points) {
+    curve_ << p.step << ',' << fmt(p.stroke, 12) << ',' << fmt(p.cmod, 12) << ',' << fmt(p.load, 12)
+           << ',' << fmt(p.external_work, 12) << ',' << fmt(p.energy.elastic, 12) << ','
+           << fmt(p.energy.dissipated, 12) << ',' << fmt(p.energy.coupling, 12) << ','
+           << fmt(p.energy.cohesive, 12) << ',' << fmt(p.energy.switched, 12) << ','
+           << fmt(p.energy.crack_length, 12) << ',' << p.inserted << ',' << p.iterations << '\n';
+    update_record(p);
+    if (scene_.vtu_every > 0 && p.step % scene_.vtu_every == 0) {
+      const fs::path file = out_ / "vtu" / id_ / ("step_" + std::to_string(p.step) + ".vtu");
+      fs::create_directories(file.parent_path());
+      write_deformed(file, model_, u, points, magnify_);
+      series_.add(p.stroke, file);
+    }
+    last_points_ = points;
+    if (p.step % kCurveWriteEvery == 0) write_file_atomically(curve_file_, curve_.str());
+  }
+
+  /// The whole curve, and the faces past the strength at the last point.
+  void finish() {
+    write_file_atomically(curve_file_, curve_.str());
+    write_file_atomically(out_ / "cracks" / (id_ + ".csv"), crack_faces(model_, last_points_));
+  }
+
+ private:
+  void update_record(const PathPoint& p) {
+    if (p.load > r_.peak_load) r_.peak_load = p.load, r_.displacement_at_peak = p.stroke;
+    r_.dissipated_energy = p.energy.dissipated;
+    r_.crack_length = p.energy.crack_length;
+    r_.energy_balance_error = std::max(r_.energy_balance_error, p.balance_error());
+    if (scene_.geometry.kind == FractureProblemKind::tension_bar) {
+      const double d = tension_bar_deviation(scene_.geometry, material_, model_.interfaces().law(),
+                                             scene_.thickness, p.stroke, p.cmod, p.load);
+      r_.closed_form_error =
+          std::isnan(r_.closed_form_error) ? d : std::max(r_.closed_form_error, d);
+    }
+    r_.newton_iterations += p.iterations;
+    ++r_.points;
+  }
+
+  const FractureScene& scene_;
+  const CohesiveFracture& model_;
+  const IsotropicElasticity& material_;
+  const fs::path out_;
+  const std::string id_;
+  FractureRecord& r_;
+  const fs::path curve_file_;
+  PvdCollection series_;
+  const double magnify_;
+  std::ostringstream curve_;
+  std::vector<InterfacePoint> last_points_;
+};
+
+}  // namespace
+
+void check_fracture_meshes(const FractureScene& scene, const std::vector<EnsembleRunId>& runs) {
+  check_each_level(
+      runs,
+      [&](const EnsembleRunId& run) {
+        fracture_setup(run_mesh(scene, run).mesh, scene.geometry, scene.mode, scene.thickness);
+      },
+      "");
+}
+
+FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run,
+                            const fs::path& out) {
+  const Stopwatch clock;
+  FractureRecord r;
+  r.run = run;
+  const GeneratedMesh generated = run_mesh(scene, run);
+  const PolygonMesh& mesh = generated.mesh;
+  r.cells = mesh.num_cells();
+  r.full_dg_dofs = 2 * mesh.offsets().back();
+  r.h_avg = mesh.h_avg();
+  const ElementTable table(mesh, scene.element);
+  const IsotropicElasticity material(scene.E, scene.nu, scene.plane);
+  const ElasticityIntegrator integrator(table, material, false);
+  FractureSetup setup = fracture_setup(mesh, scene.geometry, scene.mode, scene.thickness);
+  setup.split_all = scene.split_all;
+  CohesiveParameters law = scene.law;
+  if (scene.mode == CrackingMode::pre_inserted)
+    law.initial_stiffness = scene.initial_stiffness * scene.E / mesh.h_avg();
+  CohesiveFracture model(table, integrator, setup, law, scene.criterion, DgOptions{});
+  model.setup_system();
+  r.dofs = model.num_dofs();
+
+  PathRecorder recorder(scene, model, material, out, run.id(), r);
+  const double setup_seconds = clock.seconds();
+  QuasiStaticPath path(model, scene.loading);
+  r.complete = path.run([&](const PathPoint& p, const Eigen::VectorXd& u,
+                            const std::vector<InterfacePoint>& points) { recorder(p, u, points); });
+  recorder.finish();
+  r.failure = path.failure();
+  r.ended = path.stop_reason();
+  r.factorizations = path.factorizations();
+  r.seconds = clock.seconds();
+  r.path_seconds = r.seconds - setup_seconds;
+  return r;
+}
+
+}  // namespace vorodg

@@ -49,10 +49,12 @@ DynamicsScene perturbed_scene(const json& root, const std::string& source, bool 
   for (std::size_t i = 0; i < p["values"].size(); ++i) {
     json variant = base;
     variant.erase("variants");
-    if (!material || i > 0) {             // (the material form's reference is the uniform material)
-      variant[pointer] = p["values"][i];  // the whole scene, so merging it changes only this
-      if (material) variant["material"]["variation"] = p["variation"];
-    }
+    if (!material || i > 0) try {  // (the material form's reference is the uniform material)
+        variant[pointer] = p["values"][i];  // the whole scene, so merging it changes only this
+        if (material) variant["material"]["variation"] = p["variation"];
+      } catch (const json::exception&) {  // a pointer through a list or a value: no such key
+        throw InputError(where + ".key: '" + key + "' names no place in the scene");
+      }
     variant["label"] = "perturb-" + std::to_string(i);
     base["variants"].push_back(variant);
   }

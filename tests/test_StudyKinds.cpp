@@ -246,5 +246,25 @@ TEST(StudyKinds, ARecordThatOverflowedMakesTheStudyExit3NamingTheQuantity) {
   fs::remove_all(dir);
 }
 
+TEST(StudyKinds, ARecordThisVersionCannotReadIsOneLineNotAnAbort) {
+  const fs::path dir = testing::fresh_test_dir("study_kinds_old_record");
+  json scene = json::parse(read_file(kScenes / "demo-fracture.json"));
+  scene["meshes"][0]["sizes"] = json::array({0.04});
+  scene["meshes"][0]["realizations"] = 1;
+  std::ofstream(dir / "s.json") << scene.dump(1);
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / "results.jsonl") << R"({"id": "rcp-L0-R0", "cells": 10})"
+                                               << "\n";
+  const testing::RunResult r = run_program(
+      VORODG_EXE,
+      {"run", (dir / "s.json").string(), "-o", (dir / "out").string(), "--quiet", "--no-plots"},
+      dir);
+  EXPECT_EQ(r.signal, 0) << r.err;
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err_lines(), 1) << r.err;
+  EXPECT_NE(r.err.find("rcp-L0-R0 is not one this version reads"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace vorodg

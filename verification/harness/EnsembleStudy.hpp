@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/util/Errors.hpp"
 #include "verification/harness/EnsembleRun.hpp"
 #include "verification/harness/RecordFields.hpp"
 
@@ -46,7 +47,13 @@ StudyRecords<Record> run_study_records(
   for (std::size_t i = 0; i < done.size(); ++i) {
     Record r;
     r.run = runs[i];
-    read_record(fields, done[i], r);
+    try {
+      read_record(fields, done[i], r);
+    } catch (const nlohmann::json::exception& e) {  // written by another version of vorodg
+      throw InputError((out / "results.jsonl").string() + ": the record of " + runs[i].id() +
+                       " is not one this version reads (" + e.what() +
+                       "); remove its line to run it again");
+    }
     refuse_non_finite(fields, r);  // a record resumed from an older run too
     result.records.push_back(r);
     if (!r.complete) ++result.incomplete;

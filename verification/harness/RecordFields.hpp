@@ -68,12 +68,11 @@ RecordField<Record> csv_column(std::string name, nlohmann::json value, CsvFormat
 /// The fields every ensemble record (fracture, dynamics) starts with: its run's id, mesh block,
 /// level, realization and seed. They are not read back: the run list gives them.
 template <class Record>
-std::vector<RecordField<Record>> run_id_fields(CsvFormat text = {}) {
-  return {{"id", [](const Record& r) { return nlohmann::json(r.run.id()); }, nullptr, text},
-          {"mesh", [](const Record& r) { return nlohmann::json(r.run.label); }, nullptr, text},
-          {"level", [](const Record& r) { return nlohmann::json(r.run.level); }, nullptr, text},
-          {"realization", [](const Record& r) { return nlohmann::json(r.run.realization); },
-           nullptr, text},
+std::vector<RecordField<Record>> run_id_fields() {
+  return {{"id", [](const Record& r) { return nlohmann::json(r.run.id()); }},
+          {"mesh", [](const Record& r) { return nlohmann::json(r.run.label); }},
+          {"level", [](const Record& r) { return nlohmann::json(r.run.level); }},
+          {"realization", [](const Record& r) { return nlohmann::json(r.run.realization); }},
           {"seed", [](const Record& r) { return nlohmann::json(r.run.seed); }, nullptr, kNotInCsv}};
 }
 

@@ -2,7 +2,7 @@
 // realizations (convergence), over a list of k_p per DG formulation (penalty-sweep), and every
 // formulation on affine fields judged pass or fail (patch-suite). One runner serves the three;
 // the report picks its tables by the scene's study (StudyReport).
-#include "verification/harness/StaticStudy.hpp"
+#include "verification/study/StaticStudy.hpp"
 
 namespace vorodg {
 namespace {

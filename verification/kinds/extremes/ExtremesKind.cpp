@@ -7,8 +7,8 @@
 #include "core/util/Stopwatch.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
-#include "verification/harness/StaticStudy.hpp"
 #include "verification/kinds/extremes/ExtremesReport.hpp"
+#include "verification/study/StaticStudy.hpp"
 #include "verification/study/StudyReport.hpp"
 
 namespace vorodg {

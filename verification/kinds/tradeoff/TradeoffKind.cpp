@@ -1,7 +1,7 @@
 // The trade-off study: error against wall time over the knobs, the Pareto front and a
 // recommendation, which is checked by running it once more before the report
 // (TradeoffVerification; docs/tradeoff.md).
-#include "verification/harness/StaticStudy.hpp"
+#include "verification/study/StaticStudy.hpp"
 #include "verification/study/TradeoffVerification.hpp"
 
 namespace vorodg {

@@ -1,4 +1,4 @@
-#include "verification/harness/StaticStudy.hpp"
+#include "verification/study/StaticStudy.hpp"
 
 #include <algorithm>
 #include <iostream>

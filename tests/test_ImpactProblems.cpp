@@ -1,5 +1,5 @@
 // The report's impact problems and the keys that come with them (verification/kinds/dynamics/
-// ImpactKeys, docs/fragmentation.md "The impact problems"):
+// problems/ColumnImpact and ProjectileImpact, docs/fragmentation.md "The impact problems"):
 //   - column-impact's defaults: the 0.3 x 1.83 m column falling at 7.6 m/s under gravity onto a
 //     plane through its bottom-left corner with normal [sin, cos] of the obliquity (45 degrees),
 //     300 ms; another obliquity turns the normal;
@@ -80,10 +80,10 @@ TEST(ImpactProblems, ColumnDefaults) {
 
 TEST(ImpactProblems, ProjectileDefaultsAndRefusals) {
   const DynamicsScene s = parse_dynamics_scene(scene("projectile-impact", ""), "test");
-  ASSERT_TRUE(s.projectile);
-  EXPECT_EQ(s.projectile->speed, 20.0);
-  EXPECT_EQ(s.projectile->width, 0.1);
-  EXPECT_EQ(s.projectile->position, 2.0);
+  EXPECT_EQ(s.problem->name(), "projectile-impact");
+  EXPECT_EQ(s.setting("projectile.speed"), "20");
+  EXPECT_EQ(s.setting("projectile.width"), "0.1");
+  EXPECT_EQ(s.setting("projectile.position"), "2");
   EXPECT_EQ(s.bodies[0].velocity, Point(0, 0));
   EXPECT_EQ(s.end, 3e-3);
   EXPECT_FALSE(s.wall);

@@ -34,7 +34,9 @@ class SceneKeyReader {
   /// Every key that was read and the value used, in the table's order.
   std::vector<std::pair<std::string, std::string>> settings() const;
 
- protected:
+  // Each read below takes the default and the bounds of `full` from the table and notes the
+  // value used. Public: the parts of a kind (its problems) read their own keys through them.
+
   /// The object at a top-level key (an empty one if absent).
   SceneObject object(const std::string& key);
   static std::string leaf(const std::string& full) { return full.substr(full.rfind('.') + 1); }
@@ -49,7 +51,10 @@ class SceneKeyReader {
                    const std::optional<std::string>& fallback = {});
   Point point(SceneObject& o, const std::string& full, const Point& fallback);
   Rectangle rectangle(SceneObject& o, const std::string& full, const Rectangle& fallback);
+  /// The top-level object of the scene.
+  SceneObject& top() { return top_; }
 
+ protected:
   const KeyTable& table_;
   const std::string& source_;
   SceneObject top_;

@@ -1,22 +1,26 @@
-// The registry of study kinds: one line per kind. A kind lives in its own folder under
-// verification/kinds/ and provides a function returning its StudyKind (harness/StudyKind.hpp).
+// The registry of study kinds, in the order messages and docs list them. A kind lives in its own
+// folder under verification/kinds/ and provides <name>_kind() returning its StudyKind
+// (harness/StudyKind.hpp); adding one is its folder and one line here.
 #include "verification/harness/StudyKind.hpp"
+
+#define VORODG_STUDY_KINDS(KIND)              \
+  KIND(convergence)   /* kinds/convergence */ \
+  KIND(penalty_sweep) /* kinds/convergence */ \
+  KIND(patch_suite)   /* kinds/convergence */ \
+  KIND(tradeoff)      /* kinds/tradeoff */    \
+  KIND(extremes)      /* kinds/extremes */    \
+  KIND(fracture)      /* kinds/fracture */    \
+  KIND(dynamics)      /* kinds/dynamics */    \
+  KIND(fragmentation) /* kinds/dynamics */
 
 namespace vorodg {
 
-StudyKind convergence_kind();    // kinds/convergence
-StudyKind penalty_sweep_kind();  // kinds/convergence
-StudyKind patch_suite_kind();    // kinds/convergence
-StudyKind tradeoff_kind();       // kinds/tradeoff
-StudyKind extremes_kind();       // kinds/extremes
-StudyKind fracture_kind();       // kinds/fracture (FractureStudy.cpp)
-StudyKind dynamics_kind();       // kinds/dynamics (DynamicsStudy.cpp)
-StudyKind fragmentation_kind();  // kinds/dynamics (DynamicsStudy.cpp)
+#define VORODG_DECLARE_KIND(name) StudyKind name##_kind();
+VORODG_STUDY_KINDS(VORODG_DECLARE_KIND)
 
 const std::vector<StudyKind>& study_kinds() {
-  static const std::vector<StudyKind> kinds = {
-      convergence_kind(), penalty_sweep_kind(), patch_suite_kind(), tradeoff_kind(),
-      extremes_kind(),    fracture_kind(),      dynamics_kind(),    fragmentation_kind()};
+#define VORODG_LIST_KIND(name) name##_kind(),
+  static const std::vector<StudyKind> kinds = {VORODG_STUDY_KINDS(VORODG_LIST_KIND)};
   return kinds;
 }
 

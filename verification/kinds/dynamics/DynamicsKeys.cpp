@@ -6,27 +6,34 @@
 #include "core/element/ElementTable.hpp"
 #include "core/util/Format.hpp"
 #include "verification/harness/PhysicsKeys.hpp"
+#include "verification/harness/SceneKeyReader.hpp"
+#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/model/SettingsSchema.hpp"
 
 namespace vorodg {
 namespace {
 
+/// The problems' names: "a, b; c (fragmentation)".
+std::string problem_names() {
+  std::string both, fragmentation;
+  for (const std::unique_ptr<DynamicsProblem>& p : dynamics_problems()) {
+    std::string& list = p->needs_fragmentation() ? fragmentation : both;
+    list += (list.empty() ? "" : ", ") + p->name();
+  }
+  return both + (fragmentation.empty() ? "" : "; " + fragmentation + " (fragmentation)");
+}
+
 /// The study, the problem and the body it is about.
 std::vector<SceneKey> study_keys() {
-  const std::string per_problem = "per problem: ";
   return {
       key("study", "string", "dynamics", "dynamics or fragmentation",
           "the study kind: fragmentation adds crack insertion and the cohesive keys "
           "(docs/fragmentation.md)"),
-      key("problem", "string", "wave-bar",
-          "wave-bar, free-body, wall-impact, two-blocks, column-impact, projectile-impact; "
-          "strip-expansion (fragmentation)",
+      key("problem", "string", dynamics_problems().front()->name(), problem_names(),
           "what is thrown, struck or stretched (docs/dynamics.md, \"Problems\")"),
       key("domain", "[x0, y0, x1, y1]",
-          per_problem + "wave-bar [0, 0, 1, 0.05], free-body [0, 0, 1, 1], wall-impact [0, 0, 0.4, "
-                        "0.1], two-blocks [0, 0, 0.2, 0.1], strip-expansion [0, 0, 0.002, 1e-05], "
-                        "column-impact [0, 0, 0.3, 1.83], projectile-impact [0, 0, 4, 0.3]",
+          per_problem_text([](const DynamicsProblem& p) { return rect_text(p.default_domain()); }),
           kRectangleRange, "the (first) body, in m"),
       bounded("strain_rate", "number", "1e5", "0 < strain_rate <= 1e9",
               "strip-expansion: the initial velocity is strain_rate (x - x_mid) along x, 1/s", 0.0,
@@ -36,14 +43,16 @@ std::vector<SceneKey> study_keys() {
 
 /// How the bodies are thrown, and the wave bar's input.
 std::vector<SceneKey> body_keys() {
-  const std::string per_problem = "per problem: ";
   return {
-      bounded("initial_velocity", "[vx, vy]",
-              per_problem + "wave-bar, strip-expansion and projectile-impact [0, 0], free-body [1, "
-                            "0.5], wall-impact and two-blocks [1, 0], column-impact [0, -7.6]",
+      bounded("initial_velocity", "[vx, vy]", per_problem_text([](const DynamicsProblem& p) {
+                return point_text(p.default_velocity());
+              }),
               "each |component| <= 1e4", "uniform velocity of the (first) body at t = 0, m/s", -1e4,
               false, 1e4),
-      bounded("angular_velocity", "number", per_problem + "free-body 1, else 0", "|omega| <= 1e6",
+      bounded("angular_velocity", "number", per_problem_text([](const DynamicsProblem& p) {
+                return exact_text(p.default_angular_velocity());
+              }),
+              "|omega| <= 1e6",
               "spin of the (first) body about its centre of mass at t = 0, rad/s (small strain: "
               "the spin is the linearized rotation)",
               -1e6, false, 1e6),
@@ -88,13 +97,14 @@ std::vector<SceneKey> material_keys() {
 
 /// The kinematics, gravity, and the column's and the projectile's keys.
 std::vector<SceneKey> impact_keys() {
-  const std::string per_problem = "per problem: ";
   return {
       key("kinematics", "string", "small", "small or corotational",
           "small: linear small strain (a cell turned by theta is drawn and meets contact stretched "
           "by about theta^2 / 2); corotational: small strain in a frame that turns with each cell, "
           "for fragments that spin (docs/impact.md)"),
-      bounded("gravity", "[gx, gy]", per_problem + "column-impact [0, -9.81], else [0, 0]",
+      bounded("gravity", "[gx, gy]", per_problem_text([](const DynamicsProblem& p) {
+                return point_text(p.default_gravity());
+              }),
               "each |component| <= 1e6", "body force per unit mass, m/s^2", -1e6, false, 1e6),
       bounded("obliquity", "number", "45", "0 <= obliquity < 90",
               "column-impact: the tilt of the plane the column falls on, degrees (the plane passes "
@@ -139,15 +149,11 @@ std::vector<SceneKey> contact_keys() {
 
 /// The time stepping.
 std::vector<SceneKey> time_keys() {
-  const std::string per_problem = "per problem: ";
   return {
-      bounded("time.end", "number",
-              per_problem +
-                  "wave-bar 2 L / c; wall-impact and two-blocks the flight to contact plus 3 x 2 L "
-                  "/ c_bar (L: the extent along the wall's normal; the longer side of either "
-                  "block); free-body 1000 steps; strip-expansion 20 x the time to reach the "
-                  "cutoff, sigma_o / (E strain_rate); column-impact 0.3; projectile-impact 3e-3",
-              "0 < end <= 1e6", "the end time, s (not with time.steps)", 0.0, true, 1e6),
+      bounded(
+          "time.end", "number",
+          per_problem_text([](const DynamicsProblem& p) { return p.default_length_doc(); }, "; "),
+          "0 < end <= 1e6", "the end time, s (not with time.steps)", 0.0, true, 1e6),
       bounded("time.steps", "integer", "none (time.end)", "1 <= steps <= 1e9",
               "the number of steps, instead of an end time (not with time.end)", 1.0, false, 1e9),
       bounded("time.safety", "number", "0.9", "0 < safety < 1 (up to 10 only with --force)",

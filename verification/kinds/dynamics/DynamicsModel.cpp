@@ -1,7 +1,6 @@
 #include "verification/kinds/dynamics/DynamicsModel.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
@@ -11,16 +10,6 @@
 
 namespace vorodg {
 namespace {
-
-/// The wave bar's input: a (1 - cos) rise, a hold and a (1 + cos) fall, a third of `duration`
-/// each, so that the velocity and its rate start and end at zero.
-double pulse(double t, double amplitude, double duration) {
-  const double tr = duration / 3.0;
-  if (t <= 0.0 || t >= duration) return 0.0;
-  if (t < tr) return amplitude * 0.5 * (1.0 - std::cos(std::numbers::pi * t / tr));
-  if (t < 2.0 * tr) return amplitude;
-  return amplitude * 0.5 * (1.0 + std::cos(std::numbers::pi * (t - 2.0 * tr) / tr));
-}
 
 /// Each body's uniform velocity plus its spin about its own centre of mass.
 Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& bodies,
@@ -41,39 +30,18 @@ Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& b
     const DynamicsBody& b = scene.bodies[body[i]];
     const Point r = run.node_position(i) - centre[body[i]] / mass[body[i]];
     v.segment<2>(2 * i) = b.velocity + b.angular_velocity * Point(-r.y(), r.x());
-    if (scene.problem == DynamicsProblem::strip_expansion)  // stretched about the middle
-      v[2 * i] +=
-          scene.strain_rate * (run.node_position(i).x() - 0.5 * (b.domain.x0() + b.domain.x1()));
+    scene.problem->add_initial_velocity(b, run.node_position(i), v.segment<2>(2 * i));
   }
   return v;
 }
 
-/// projectile-impact: the top vertices under the projectile's nose move down at its speed.
-void add_projectile(const DynamicsProjectile& p, const PolygonMesh& mesh, CentralDifference& run) {
-  std::vector<int> under;
-  for (int v : mesh.side_vertices(Side::top))
-    if (std::abs(mesh.vertex(v).x() - p.position) <= 0.5 * p.width) under.push_back(v);
-  if (under.empty())
-    throw InputError("projectile: no vertex of the top side within its nose [" +
-                     fmt(p.position - 0.5 * p.width) + ", " + fmt(p.position + 0.5 * p.width) +
-                     "]: expected a nose wider than the cells");
-  const double speed = p.speed;
-  run.add_velocity_boundary({under, 1, [speed](double) { return -speed; }});
-}
-
+/// Gravity, and the problem's prescribed velocities and loads.
 void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, CentralDifference& run) {
   if (scene.gravity != Eigen::Vector2d::Zero()) {
     const Eigen::Vector2d g = scene.gravity;
     run.set_body_force([g](double) { return g; });
   }
-  if (scene.projectile) add_projectile(*scene.projectile, mesh, run);
-  if (scene.problem != DynamicsProblem::wave_bar) return;
-  const double amplitude = scene.pulse_amplitude, duration = scene.pulse_duration;
-  run.add_velocity_boundary(
-      {mesh.side_vertices(Side::left), 0, [=](double t) { return pulse(t, amplitude, duration); }});
-  if (scene.rollers)
-    for (Side s : {Side::bottom, Side::top})
-      run.add_velocity_boundary({mesh.side_vertices(s), 1, [](double) { return 0.0; }});
+  scene.problem->add_boundaries(mesh, run);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 #pragma once
 // What a dynamics run measures, step by step, from the integrator's records and the contact
-// reports: the drift of the energy balance and of the momenta, the wave bar's arrival time at
-// the far end, and the contact's depth, duration and rebound, each set beside its theory (the
-// 1D elastic bar: rebound speed = impact speed, contact time = 2 L / c_bar).
+// reports: the drift of the energy balance and of the momenta, the contact's depth, duration and
+// rebound, each set beside its theory (the 1D elastic bar: rebound speed = impact speed, contact
+// time = 2 L / c_bar), and what the problem measures of its own (a wave's arrival).
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "dynamics/CentralDifference.hpp"
@@ -63,9 +64,7 @@ class DynamicsProbe {
   const DynamicsMeasures& measures() const { return m_; }
 
  private:
-  void observe_wave();
   void observe_contact();
-  double far_end_velocity() const;
 
   const DynamicsScene& scene_;
   const BodiesMesh& bodies_;
@@ -73,10 +72,9 @@ class DynamicsProbe {
   DynamicsMeasures m_;
   StepRecord start_;
   double momentum_scale_ = 0.0, total_mass_ = 0.0;
-  bool conserves_momentum_ = false;
-  std::vector<int> far_nodes_;  // wave-bar: the nodes on the right end
-  CorotationalFrames frames_;   // for the cells' small-strain rotation
-  double previous_far_ = 0.0;
+  bool conserves_momentum_ = false, conserves_angular_momentum_ = false;
+  CorotationalFrames frames_;              // for the cells' small-strain rotation
+  std::unique_ptr<ProblemProbe> problem_;  // the problem's own measures (may be none)
   bool in_contact_ = false;
 };
 

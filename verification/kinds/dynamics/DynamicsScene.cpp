@@ -1,10 +1,9 @@
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <map>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
@@ -21,63 +20,34 @@ namespace {
 
 using nlohmann::json;
 
-const std::map<std::string, DynamicsProblem>& problem_names() {
-  static const std::map<std::string, DynamicsProblem> names = {
-      {"wave-bar", DynamicsProblem::wave_bar},
-      {"free-body", DynamicsProblem::free_body},
-      {"wall-impact", DynamicsProblem::wall_impact},
-      {"two-blocks", DynamicsProblem::two_blocks},
-      {"strip-expansion", DynamicsProblem::strip_expansion},
-      {"column-impact", DynamicsProblem::column_impact},
-      {"projectile-impact", DynamicsProblem::projectile_impact}};
-  return names;
-}
-
-std::array<Point, 4> corners(const Rectangle& r) {
-  return {r.lo(), Point(r.x1(), r.y0()), r.hi(), Point(r.x0(), r.y1())};
+/// The problems' names as the reader's list of accepted words: " a b c ".
+std::string problem_words() {
+  std::string words = " ";
+  for (const std::unique_ptr<DynamicsProblem>& p : dynamics_problems()) words += p->name() + " ";
+  return words;
 }
 
 }  // namespace
 
-void DynamicsSceneReader::read_bodies() {
-  const DynamicsProblem p = s_.problem;
-  const bool bar = p == DynamicsProblem::wave_bar, free = p == DynamicsProblem::free_body;
-  const bool strip = p == DynamicsProblem::strip_expansion;
-  const bool column = p == DynamicsProblem::column_impact;
-  const bool beam = p == DynamicsProblem::projectile_impact;
+void DynamicsSceneReader::read_problem() {
+  const std::string name = word(top_, "problem", problem_words());
+  problem_ = make_dynamics_problem(name);
+  if (problem_->needs_fragmentation() && !s_.fragmentation)
+    top_.fail_value("problem", "'" + name + "': expected study fragmentation");
+  const std::vector<std::string> own = problem_->own_keys();
+  for (const std::unique_ptr<DynamicsProblem>& other : dynamics_problems())
+    for (const std::string& key : other->own_keys())
+      if (top_.has(key) && std::find(own.begin(), own.end(), key) == own.end())
+        top_.fail_value(key, "not used by problem " + name);
+}
+
+void DynamicsSceneReader::read_body() {
   DynamicsBody a;
-  a.domain =
-      rectangle(top_, "domain",
-                bar      ? Rectangle(0, 0, 1, 0.05)
-                : free   ? Rectangle(0, 0, 1, 1)
-                : strip  ? Rectangle(0, 0, 0.002, 1e-5)
-                : column ? Rectangle(0, 0, 0.3, 1.83)
-                : beam   ? Rectangle(0, 0, 4.0, 0.3)
-                         : Rectangle(0, 0, p == DynamicsProblem::wall_impact ? 0.4 : 0.2, 0.1));
-  a.velocity = point(top_, "initial_velocity",
-                     bar || strip || beam ? Point(0, 0)
-                     : free               ? Point(1, 0.5)
-                     : column             ? Point(0, -7.6)
-                                          : Point(1, 0));
-  a.angular_velocity = number(top_, "angular_velocity", free ? 1.0 : 0.0);
+  a.domain = rectangle(top_, "domain", problem_->default_domain());
+  a.velocity = point(top_, "initial_velocity", problem_->default_velocity());
+  a.angular_velocity = number(top_, "angular_velocity", problem_->default_angular_velocity());
   s_.bodies = {a};
-  refuse_unless(p == DynamicsProblem::two_blocks, "second_block");
-  if (p != DynamicsProblem::two_blocks) return;
-  SceneObject o = object("second_block");
-  const double shift = 1.05 * a.domain.width();
-  DynamicsBody b;
-  b.domain = rectangle(
-      o, "second_block.domain",
-      Rectangle(a.domain.x0() + shift, a.domain.y0(), a.domain.x1() + shift, a.domain.y1()));
-  b.velocity = point(o, "second_block.initial_velocity", -a.velocity);
-  b.angular_velocity = number(o, "second_block.angular_velocity");
-  const bool apart = b.domain.x0() >= a.domain.x1() || a.domain.x0() >= b.domain.x1() ||
-                     b.domain.y0() >= a.domain.y1() || a.domain.y0() >= b.domain.y1();
-  if (!apart)
-    o.fail_value("domain", rect_text(b.domain) + " overlaps domain " + rect_text(a.domain) +
-                               ": expected the blocks apart (touching at most)");
-  o.finish();
-  s_.bodies.push_back(b);
+  s_.gravity = point(top_, "gravity", problem_->default_gravity());
 }
 
 void DynamicsSceneReader::read_material() {
@@ -103,22 +73,8 @@ void DynamicsSceneReader::read_element() {
   s_.element.vem_stabilization = number(top_, "vem_stabilization");
 }
 
-void DynamicsSceneReader::read_wave_bar() {
-  const bool bar = s_.problem == DynamicsProblem::wave_bar;
-  refuse_unless(bar, "sides");
-  refuse_unless(bar, "pulse");
-  if (!bar) return;
-  s_.rollers = word(top_, "sides", " free rollers ") == "rollers";
-  SceneObject o = object("pulse");
-  s_.pulse_amplitude = number(o, "pulse.amplitude");
-  if (s_.pulse_amplitude == 0.0) o.fail_value("amplitude", "expected not 0, found 0");
-  s_.pulse_duration =
-      number(o, "pulse.duration", 0.9 * s_.bodies[0].domain.width() / s_.wave_speed());
-  o.finish();
-}
-
 void DynamicsSceneReader::read_wall() {
-  const bool impact = s_.hits_wall();
+  const bool impact = problem_->hits_wall();
   if (!impact && !top_.has("wall")) {
     note("wall.point", "none");
     note("wall.normal", "none");
@@ -128,15 +84,10 @@ void DynamicsSceneReader::read_wall() {
   if (impact && body.velocity.norm() == 0.0)
     top_.fail_value("initial_velocity", "expected a nonzero velocity towards the wall");
   SceneObject o = object("wall");
-  // The default wall touches the body's leading point and faces its velocity.
-  const Point ahead = impact ? Point(body.velocity.normalized()) : Point(1, 0);
-  const Point centre = 0.5 * (body.domain.lo() + body.domain.hi());
-  const double reach = 0.5 * (std::abs(ahead.x()) * body.domain.width() +
-                              std::abs(ahead.y()) * body.domain.height());
-  const bool column = s_.problem == DynamicsProblem::column_impact;
+  const DynamicsWall fallback = problem_->default_wall(s_);
   DynamicsWall w;
-  w.point = point(o, "wall.point", column ? column_wall().point : Point(centre + reach * ahead));
-  w.normal = point(o, "wall.normal", column ? column_wall().normal : Point(-ahead));
+  w.point = point(o, "wall.point", fallback.point);
+  w.normal = point(o, "wall.normal", fallback.normal);
   if (w.normal.norm() == 0.0) o.fail_value("normal", "expected not [0, 0]");
   w.normal.normalize();
   o.finish();
@@ -164,46 +115,17 @@ void DynamicsSceneReader::read_contact() {
   c.finish();
 }
 
-void DynamicsSceneReader::default_end() {
-  const DynamicsBody& a = s_.bodies[0];
-  switch (s_.problem) {
-    case DynamicsProblem::free_body: s_.steps = 1000; break;
-    case DynamicsProblem::wave_bar: s_.end = 2.0 * a.domain.width() / s_.wave_speed(); break;
-    case DynamicsProblem::wall_impact: {
-      const Point n = s_.wall->normal;
-      const double length =
-          std::abs(n.x()) * a.domain.width() + std::abs(n.y()) * a.domain.height();
-      double gap = 1e300;  // from the leading corner to the wall, at the approach speed
-      for (const Point& c : corners(a.domain)) gap = std::min(gap, (c - s_.wall->point).dot(n));
-      s_.end = gap / -a.velocity.dot(n) + 3.0 * 2.0 * length / s_.bar_speed();
-      break;
-    }
-    case DynamicsProblem::column_impact: s_.end = 0.3; break;
-    case DynamicsProblem::projectile_impact: s_.end = 3e-3; break;
-    case DynamicsProblem::strip_expansion:
-      s_.end = 20.0 * s_.criterion.tensile_cutoff / (s_.E * s_.strain_rate);
-      break;
-    case DynamicsProblem::two_blocks: {
-      const Rectangle &d = a.domain, &e = s_.bodies[1].domain;
-      const double gap = std::hypot(std::max({0.0, e.x0() - d.x1(), d.x0() - e.x1()}),
-                                    std::max({0.0, e.y0() - d.y1(), d.y0() - e.y1()}));
-      const double speed = (a.velocity - s_.bodies[1].velocity).norm();
-      s_.end =
-          (speed > 0.0 ? gap / speed : 0.0) + 6.0 * std::max(d.scale(), e.scale()) / s_.bar_speed();
-      break;
-    }
-  }
-  note("time.end", s_.end > 0.0 ? exact_text(s_.end) : "none (time.steps)");
-  note("time.steps", s_.steps > 0 ? std::to_string(s_.steps) : "none (time.end)");
-}
-
 void DynamicsSceneReader::read_time() {
   SceneObject t = object("time");
   const bool end = t.has("end"), steps = t.has("steps");
   if (end && steps) t.fail_value("steps", "give time.end or time.steps, not both");
   if (end) s_.end = number(t, "time.end", 0.0), note("time.steps", "none (time.end)");
   if (steps) s_.steps = integer(t, "time.steps", 1), note("time.end", "none (time.steps)");
-  if (!end && !steps) default_end();
+  if (!end && !steps) {  // the problem's rough length
+    problem_->default_length(s_);
+    note("time.end", s_.end > 0.0 ? exact_text(s_.end) : "none (time.steps)");
+    note("time.steps", s_.steps > 0 ? std::to_string(s_.steps) : "none (time.end)");
+  }
   const SceneKey& safety = table_.at("time.safety");
   s_.safety = t.number("safety", key_default(safety));
   if (const auto bad = check_key(safety, s_.safety)) t.fail_value("safety", *bad);
@@ -242,21 +164,15 @@ DynamicsScene DynamicsSceneReader::read() {
   s_.description = top_.text("description", "");
   s_.label = top_.text("label", "");
   s_.fragmentation = word(top_, "study", " dynamics fragmentation ") == "fragmentation";
-  const std::string problem = word(top_, "problem",
-                                   " wave-bar free-body wall-impact two-blocks strip-expansion "
-                                   "column-impact projectile-impact ");
-  s_.problem = problem_names().at(problem);
-  if (s_.problem == DynamicsProblem::strip_expansion && !s_.fragmentation)
-    top_.fail_value("problem", "'strip-expansion': expected study fragmentation");
+  read_problem();
   read_material();
   try {
     IsotropicElasticity(s_.E, s_.nu, s_.plane);
   } catch (const InputError& e) {
     throw InputError("scene " + source_ + ": material: " + e.what());
   }
-  read_bodies();
-  read_impact();
-  read_wave_bar();
+  read_body();
+  problem_->read(*this, s_);
   read_wall();
   read_contact();
   read_fracture();
@@ -270,13 +186,8 @@ DynamicsScene DynamicsSceneReader::read() {
   }
   top_.finish();
   s_.settings = settings();
+  s_.problem = std::move(problem_);
   return s_;
-}
-
-std::string dynamics_problem_name(DynamicsProblem p) {
-  for (const auto& [name, value] : problem_names())
-    if (value == p) return name;
-  return "?";
 }
 
 std::string step_estimate_name(StepEstimate e) {
@@ -292,16 +203,14 @@ double DynamicsScene::dilatational_speed() const {
   return std::sqrt(E * (1.0 - nu) / (density * (1.0 + nu) * (1.0 - 2.0 * nu)));
 }
 
-double DynamicsScene::wave_speed() const {
-  return rollers ? dilatational_speed() : bar_speed();
-}
-
-bool DynamicsScene::hits_wall() const {
-  return problem == DynamicsProblem::wall_impact || problem == DynamicsProblem::column_impact;
+const std::string& DynamicsScene::setting(const std::string& key) const {
+  for (const auto& [name, value] : settings)
+    if (name == key) return value;
+  throw std::out_of_range("dynamics scene: no setting " + key);
 }
 
 bool DynamicsScene::external_momentum() const {
-  return wall || problem == DynamicsProblem::wave_bar || projectile || damping != 0.0 ||
+  return wall || problem->prescribes_velocity() || damping != 0.0 ||
          gravity != Eigen::Vector2d::Zero();
 }
 

@@ -1,11 +1,10 @@
 #pragma once
-// The scene of a `dynamics` study (keys in docs/dynamics.md "The dynamics study"): one problem
-// (a wave bar, a free body, a block thrown at a rigid wall, two blocks thrown at each other), one
-// material, contact, the time stepping, over mesh families with levels and realizations. A
-// `fragmentation` study is the same with cracks (docs/fragmentation.md): the cohesive law and the
-// insertion criterion, and the strip-expansion problem. The impact problems of the report (a
-// column falling onto an inclined rigid plane, a beam struck by a rigid projectile) may run in
-// either study kind (their keys in ImpactKeys.cpp).
+// The scene of a `dynamics` study (keys in docs/scenes.md): one problem (a class of problems/: a
+// wave bar, a free body, a block thrown at a rigid wall, two blocks thrown at each other, the
+// report's falling column and struck beam), one material, contact, the time stepping, over mesh
+// families with levels and realizations. A `fragmentation` study is the same with cracks
+// (docs/fragmentation.md): the cohesive law and the insertion criterion, and the strip-expansion
+// problem.
 // `variants` (objects merged over the top-level keys, each with a `label`) runs several such
 // studies side by side, each into its own subfolder.
 //
@@ -14,6 +13,7 @@
 // with one line naming the key, and records every value it used (`settings`) for the echo.
 #include <Eigen/Core>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,22 +25,13 @@
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/material/MohrCoulomb.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
+#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
 
-enum class DynamicsProblem {
-  wave_bar,
-  free_body,
-  wall_impact,
-  two_blocks,
-  strip_expansion,
-  column_impact,
-  projectile_impact
-};
 enum class StepEstimate { lanczos, cells };
 
-std::string dynamics_problem_name(DynamicsProblem p);
 std::string step_estimate_name(StepEstimate e);
 
 /// A rectangular body and how it is thrown: a uniform velocity plus a spin about its centre of
@@ -56,19 +47,11 @@ struct DynamicsWall {
   Point normal = Point(-1.0, 0.0);  // into free space; normalized by the reader
 };
 
-/// A rigid flat-nosed projectile of infinite mass moving down at constant speed onto the top side
-/// of the body: the vertical velocity of the top vertices under its nose is prescribed from t = 0
-/// (bonded in the normal direction, free to slide).
-struct DynamicsProjectile {
-  double speed = 0.0;     // m/s, downwards
-  double width = 0.0;     // of the nose, m
-  double position = 0.0;  // x of the nose's centre, m
-};
-
 struct DynamicsScene {
   std::filesystem::path path;
   std::string name, description, label;  // label: the variant's (empty at the top level)
-  DynamicsProblem problem = DynamicsProblem::wave_bar;
+  /// What is thrown, struck or stretched, with its own keys read (problems/).
+  std::shared_ptr<const DynamicsProblem> problem;
   std::vector<DynamicsBody> bodies;  // one; two-blocks: two
   double E = 0.0, nu = 0.0, density = 0.0;
   PlaneModel plane = PlaneModel::stress;
@@ -79,13 +62,8 @@ struct DynamicsScene {
   std::uint64_t variation_seed = 1;  // their stream (MaterialVariation)
   double damping = 0.0;              // mass-proportional, 1/s
   Eigen::Vector2d gravity = Eigen::Vector2d::Zero();  // body force per unit mass, m/s^2
-  // wave-bar
-  bool rollers = false;  // sides: rollers on the long sides (uniaxial strain)
-  double pulse_amplitude = 0.0, pulse_duration = 0.0;
   // contact
   std::optional<DynamicsWall> wall;
-  double obliquity = 0.0;  // column-impact: the plane's tilt, degrees
-  std::optional<DynamicsProjectile> projectile;
   bool contact = true;  // surface-to-surface contact
   PenaltyParameters penalty;
   // time
@@ -98,7 +76,6 @@ struct DynamicsScene {
   std::vector<double> snapshots;  // times of extra frames (ascending), s
   // fragmentation (study kind): crack insertion with the cohesive law on every interior edge
   bool fragmentation = false;
-  double strain_rate = 0.0;  // strip-expansion
   CohesiveParameters cohesive;
   double stiffness_factor = 0.0;  // K0 in units of E / h_avg
   MohrCoulombParameters criterion;
@@ -113,10 +90,8 @@ struct DynamicsScene {
   /// The speeds of the material: uniaxial stress (bar) and uniaxial strain (dilatational).
   double bar_speed() const;
   double dilatational_speed() const;
-  /// wave-bar: the speed the pulse should travel at (dilatational with rollers, else bar).
-  double wave_speed() const;
-  /// True where the body hits a fixed rigid plane (wall-impact, column-impact).
-  bool hits_wall() const;
+  /// The value used for `key`, as echoed; throws std::out_of_range for a key not read.
+  const std::string& setting(const std::string& key) const;
   /// True where something outside the bodies changes their momentum: a wall, a prescribed
   /// velocity, gravity or damping.
   bool external_momentum() const;

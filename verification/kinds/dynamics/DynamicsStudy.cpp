@@ -75,15 +75,14 @@ std::vector<RecordField<DynamicsRecord>> dynamics_fields(const DynamicsScene& sc
   using R = DynamicsRecord;
   const CsvFormat fine{true, 12, true};
   std::vector<RecordField<R>> f = run_id_fields<R>();
-  f.insert(f.end(),
-           {csv_column<R>("problem", dynamics_problem_name(scene.problem)),
-            field("cells", &R::cells), field("dofs", &R::dofs), field("h_avg", &R::h_avg, fine),
-            field("dt", &R::dt, fine), field("dt_critical_lanczos", &R::dt_lanczos, fine),
-            field("dt_critical_cells", &R::dt_cells, fine),
-            field("lanczos_iterations", &R::lanczos_iterations),
-            csv_column<R>("estimate", step_estimate_name(scene.estimate)),
-            csv_column<R>("safety", scene.safety), field("steps", &R::steps),
-            field("end_time", &R::end_time, fine)});
+  f.insert(f.end(), {csv_column<R>("problem", scene.problem->name()), field("cells", &R::cells),
+                     field("dofs", &R::dofs), field("h_avg", &R::h_avg, fine),
+                     field("dt", &R::dt, fine), field("dt_critical_lanczos", &R::dt_lanczos, fine),
+                     field("dt_critical_cells", &R::dt_cells, fine),
+                     field("lanczos_iterations", &R::lanczos_iterations),
+                     csv_column<R>("estimate", step_estimate_name(scene.estimate)),
+                     csv_column<R>("safety", scene.safety), field("steps", &R::steps),
+                     field("end_time", &R::end_time, fine)});
   for (const auto& [name, member] : measure_fields())  // absent: not measured
     f.push_back({name, [m = member](const R& r) { return number_json(r.measures.*m); },
                  [m = member](R& r, const json& j) { r.measures.*m = read_number(j); },
@@ -98,10 +97,6 @@ std::vector<RecordField<DynamicsRecord>> dynamics_fields(const DynamicsScene& sc
   return f;
 }
 
-std::string cell(double x, int precision = 6) {
-  return std::isfinite(x) ? fmt(x, precision) : "";
-}
-
 /// The worst of a figure over the complete runs that measured it (NaN: none did).
 double worst(const std::vector<DynamicsRecord>& records, double DynamicsMeasures::*field) {
   double w = NAN;
@@ -111,51 +106,40 @@ double worst(const std::vector<DynamicsRecord>& records, double DynamicsMeasures
   return w;
 }
 
-std::string report_row(const DynamicsScene& scene, const DynamicsRecord& r) {
+std::string report_row(const std::vector<ReportColumn>& columns, const DynamicsRecord& r) {
   const DynamicsMeasures& m = r.measures;
   std::ostringstream md;
   md << "| " << r.run.id() << " | " << r.cells << " | " << fmt(r.h_avg, 4) << " | " << fmt(r.dt, 4)
      << " | " << fmt(r.dt_lanczos, 4) << " / " << fmt(r.dt_cells, 4) << " | " << r.steps << " | "
-     << fmt(m.energy_balance_error, 2) << " | " << cell(m.momentum_drift, 2) << " | ";
-  switch (scene.problem) {
-    case DynamicsProblem::wave_bar:
-      md << cell(m.arrival_time, 5) << " / " << cell(m.arrival_theory, 5) << " | "
-         << cell(m.wave_speed, 5) << " / " << cell(m.wave_speed_theory, 5) << " ("
-         << (std::isfinite(m.wave_speed_error) ? fmt(100 * m.wave_speed_error, 3) + "%" : "-")
-         << ") |";
-      break;
-    case DynamicsProblem::free_body: md << cell(m.angular_momentum_drift, 2) << " |"; break;
-    default:
-      md << cell(m.max_penetration_over_h, 3) << " | " << cell(m.rebound_velocity, 5) << " / "
-         << cell(m.rebound_estimate, 5) << " | " << cell(m.contact_time, 4) << " / "
-         << cell(m.contact_time_estimate, 4) << (m.contact_ended ? "" : " (not ended)") << " |";
-  }
+     << fmt(m.energy_balance_error, 2) << " | " << measure_text(m.momentum_drift, 2) << " |";
+  for (const ReportColumn& c : columns) md << " " << c.cell(m) << " |";
   return md.str() + "\n";
+}
+
+/// The table of every run: the common columns, then the problem's.
+std::string runs_table(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result) {
+  const std::vector<ReportColumn> columns = scene.problem->report_columns();
+  std::string md =
+      "| run | cells | h_avg | dt [s] | dt_crit Lanczos / cells [s] | steps | energy balance "
+      "error | momentum drift |";
+  for (const ReportColumn& c : columns) md += " " + c.header + " |";
+  md += "\n|";
+  for (std::size_t i = 0; i < 8 + columns.size(); ++i) md += "---|";
+  md += "\n";
+  for (const DynamicsRecord& r : result.records) md += report_row(columns, r);
+  return md;
 }
 
 std::string report_md(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result) {
   std::ostringstream md;
   md << "# " << scene.name << (scene.label.empty() ? "" : " / " + scene.label) << "\n\n"
-     << scene.description << "\n\nProblem " << dynamics_problem_name(scene.problem) << "; "
+     << scene.description << "\n\nProblem " << scene.problem->name() << "; "
      << result.records.size() << " runs, " << result.incomplete
      << " incomplete. dt = " << fmt(scene.safety) << " x the " << step_estimate_name(scene.estimate)
      << " estimate of the critical step"
      << (scene.fragmentation ? ", with the cohesive springs' share (docs/fragmentation.md)" : "")
-     << ".\n\n| run | cells | h_avg | dt [s] | dt_crit Lanczos / "
-        "cells [s] | steps | energy balance error | momentum drift | ";
-  switch (scene.problem) {
-    case DynamicsProblem::wave_bar:
-      md << "arrival / L/c [s] | speed / theory [m/s] "
-            "|\n|---|---|---|---|---|---|---|---|---|---|\n";
-      break;
-    case DynamicsProblem::free_body:
-      md << "angular momentum drift |\n|---|---|---|---|---|---|---|---|---|\n";
-      break;
-    default:
-      md << "max penetration / h_avg | rebound / 1D estimate [m/s] | contact time / 2L/c_bar [s] "
-            "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  }
-  for (const DynamicsRecord& r : result.records) md << report_row(scene, r);
+     << ".\n\n"
+     << runs_table(scene, result);
   if (scene.fragmentation) {
     md << "\n| run | fragments | broken / cracked edges | largest fragment (mass fraction) | "
           "dissipated [J/m] | balance with the law's energies | largest cell rotation [rad] "
@@ -204,7 +188,7 @@ void write_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord
   }
   json summary = {{"scene", scene.name},
                   {"study", scene.fragmentation ? "fragmentation" : "dynamics"},
-                  {"problem", dynamics_problem_name(scene.problem)},
+                  {"problem", scene.problem->name()},
                   {"settings", settings},
                   {"runs", result.records.size()},
                   {"incomplete", result.incomplete},

@@ -1,5 +1,5 @@
 // The keys a fragmentation study adds to a dynamics scene (docs/fragmentation.md): the cohesive
-// law, the insertion criterion and the strip's strain rate. A dynamics study refuses them.
+// law and the insertion criterion. A dynamics study refuses them.
 #include "core/util/Errors.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
@@ -9,8 +9,6 @@ namespace vorodg {
 void DynamicsSceneReader::read_fracture() {
   for (const char* key : {"cohesive", "criterion"})
     if (!s_.fragmentation && top_.has(key)) top_.fail_value(key, "only in a fragmentation study");
-  refuse_unless(s_.problem == DynamicsProblem::strip_expansion, "strain_rate");
-  if (s_.problem == DynamicsProblem::strip_expansion) s_.strain_rate = number(top_, "strain_rate");
   if (!s_.fragmentation) return;
   SceneObject c = object("cohesive");
   CohesiveParameters& law = s_.cohesive;

@@ -1,0 +1,107 @@
+#pragma once
+// One problem of the dynamics and fragmentation study kinds, as a class (the dynamics side's
+// counterpart of the static ExactSolution): what it throws, strikes or stretches. Each problem
+// owns its bodies' defaults, the keys only it reads (a wave bar's pulse, a projectile, a second
+// block), its boundary conditions and initial velocities beyond the rigid motion, the length of
+// a run when the scene gives none, the measures of its own (a wave's arrival) and the columns
+// report.md shows for it. The scene, the model, the probe and the report ask the problem; none
+// of them names one. The problems are listed once, in DynamicsProblems.cpp.
+#include <Eigen/Core>
+#include <array>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/geometry/Rectangle.hpp"
+#include "dynamics/CentralDifference.hpp"
+
+namespace vorodg {
+
+struct BodiesMesh;
+struct DynamicsBody;
+struct DynamicsMeasures;
+struct DynamicsScene;
+struct DynamicsWall;
+class DynamicsSceneReader;
+class PolygonMesh;
+
+/// Measures a problem takes beside the common ones (energy, momenta, contact, rotations).
+class ProblemProbe {
+ public:
+  virtual ~ProblemProbe() = default;
+  /// After every step.
+  virtual void observe(DynamicsMeasures& m) = 0;
+};
+
+/// A column of report.md: its header and the text of a run's cell.
+struct ReportColumn {
+  std::string header;
+  std::function<std::string(const DynamicsMeasures&)> cell;
+};
+
+class DynamicsProblem {
+ public:
+  virtual ~DynamicsProblem() = default;
+  /// The name a scene gives as `problem`.
+  virtual std::string name() const = 0;
+
+  // ---- the scene's keys
+  /// Top-level keys only this problem reads: every other problem refuses them.
+  virtual std::vector<std::string> own_keys() const { return {}; }
+  /// True where the problem exists only with crack insertion (a fragmentation study).
+  virtual bool needs_fragmentation() const { return false; }
+  /// The (first) body where `domain`, `initial_velocity` and `angular_velocity` are not given.
+  virtual Rectangle default_domain() const = 0;
+  virtual Eigen::Vector2d default_velocity() const { return Eigen::Vector2d::Zero(); }
+  virtual double default_angular_velocity() const { return 0.0; }
+  virtual Eigen::Vector2d default_gravity() const { return Eigen::Vector2d::Zero(); }
+  /// Reads the problem's own keys, once the material and the first body are read (a second
+  /// body goes into scene.bodies).
+  virtual void read(DynamicsSceneReader& reader, DynamicsScene& scene) = 0;
+  /// True where the body is thrown at a fixed rigid plane: the wall is required.
+  virtual bool hits_wall() const { return false; }
+  /// The wall where the scene's `wall` leaves its point or normal out: by default the plane
+  /// through the body's leading point, facing its velocity.
+  virtual DynamicsWall default_wall(const DynamicsScene& scene) const;
+  /// The run's length where the scene gives neither time.end nor time.steps: sets one of them.
+  virtual void default_length(DynamicsScene& scene) const = 0;
+  /// That default in words, for the key table.
+  virtual std::string default_length_doc() const = 0;
+
+  // ---- the run
+  /// True where a velocity is prescribed on part of the boundary (momentum enters there).
+  virtual bool prescribes_velocity() const { return false; }
+  /// Prescribed velocities and loads of the problem (gravity is the scene's).
+  virtual void add_boundaries(const PolygonMesh&, CentralDifference&) const {}
+  /// What the problem adds to a node's velocity at t = 0 beyond its body's rigid motion.
+  virtual void add_initial_velocity(const DynamicsBody&, const Eigen::Vector2d&,
+                                    Eigen::Ref<Eigen::Vector2d>) const {}
+
+  // ---- what is measured and reported
+  /// True where the bodies keep their angular momentum unless something outside acts.
+  virtual bool measures_angular_momentum() const { return false; }
+  /// The measures of its own, with their theory set in `m` at t = 0 (nullptr: none).
+  virtual std::unique_ptr<ProblemProbe> probe(const DynamicsScene&, const BodiesMesh&,
+                                              const CentralDifference&, DynamicsMeasures& m) const;
+  /// The columns of report.md after the common ones; by default the contact's.
+  virtual std::vector<ReportColumn> report_columns() const;
+};
+
+/// A new problem of each kind, in the order docs and messages list them.
+std::vector<std::unique_ptr<DynamicsProblem>> dynamics_problems();
+/// The problem called `name`, fresh (its own keys not read yet); nullptr for an unknown name.
+std::unique_ptr<DynamicsProblem> make_dynamics_problem(const std::string& name);
+/// "per problem: a x, b and c y, else z" of a default that depends on the problem: problems with
+/// the same text grouped, the largest group of two or more as "else".
+std::string per_problem_text(const std::function<std::string(const DynamicsProblem&)>& text,
+                             const std::string& separator = ", ");
+/// The extent of a rectangle along a unit direction: the length a 1D wave crosses.
+double extent(const Rectangle& r, const Eigen::Vector2d& direction);
+/// The rectangle's corners, counter-clockwise from its lower left.
+std::array<Eigen::Vector2d, 4> corners(const Rectangle& r);
+/// A measure in report.md: blank where it was not measured.
+std::string measure_text(double x, int precision = 6);
+
+}  // namespace vorodg

@@ -1,6 +1,8 @@
 #include "verification/harness/PhysicsKeys.hpp"
 
 #include "core/element/ElementTable.hpp"
+#include "core/meshgen/MeshFamily.hpp"
+#include "core/util/Format.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/model/SettingsSchema.hpp"
 
@@ -11,9 +13,45 @@ std::vector<SceneKey> naming_keys() {
           key("description", "string", "\"\"", "any", "one sentence for --list and the report")};
 }
 
-SceneKey meshes_key(const std::string& more) {
-  return key("meshes[]", "list (required)", "", "as in every study (docs/scenes.md)",
-             "mesh families with sizes, realizations, seed" + more);
+std::vector<SceneKey> mesh_keys() {
+  const MeshSpec spec;  // the generators' defaults
+  const std::string families = "rcp, hex, perturbed-hex, tri, quad, file";
+  return {
+      key("meshes[]", "list (required)", "", "a non-empty list of mesh blocks",
+          "one block per mesh family; each realization of each level is a run"),
+      key("meshes[].family", "string", "rcp", families,
+          "the mesh generator, or `file`: meshes read from `files`"),
+      key("meshes[].label", "string", "the family", "any",
+          "names the block in reports (two blocks of one family need labels)"),
+      bounded("meshes[].sizes", "number or list (required, not with file)", "",
+              "each > 0, at most the domain's longer side, coarse to fine",
+              "d (rcp, tri) or h (hex, perturbed-hex, quad) of each level", 0.0, true,
+              kCoordinateLimit),
+      key("meshes[].files", "string or list (required with file)", "",
+          "regular .vtu files, h_avg strictly decreasing",
+          "one mesh per level, relative to the scene file's folder, each read and validated on "
+          "the domain when the scene is read; its h_avg is the level's size"),
+      bounded("meshes[].realizations", "integer", "1", "1 <= realizations <= 1e6 (file: 1)",
+              "random meshes per level", 1.0, false, 1e6),
+      bounded("meshes[].seed", "integer", std::to_string(spec.seed), "0 <= seed <= 2^53",
+              "base seed; realization i of level l uses a pure function of (seed, l, i)", 0.0,
+              false, 9007199254740992.0),
+      bounded("meshes[].perturbation", "number", exact_text(spec.perturbation),
+              "0 <= r < " + fmt(kMaxPerturbation),
+              "perturbed-hex: the vertices' random shift, a fraction of h", 0.0, false,
+              kMaxPerturbation, true),
+      bounded("meshes[].regularization", "number", exact_text(spec.regularization),
+              "0 <= x < " + fmt(kMaxRegularization), "rcp: edges shorter than x d are collapsed",
+              0.0, false, kMaxRegularization, true),
+      key("meshes[].symmetric", "bool or string", "false", "true, false or \"notch\" (rcp only)",
+          "rcp: the whole mesh mirrored about the vertical mid-line, or (notch) along the notch "
+          "and at the load point only"),
+  };
+}
+
+const SceneKey& mesh_key(const std::string& name) {
+  static const KeyTable table{"mesh", mesh_keys(), {}};
+  return table.at(name);
 }
 
 SceneKey variants_key() {

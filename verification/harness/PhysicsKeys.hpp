@@ -13,8 +13,10 @@ namespace vorodg {
 
 /// name, description: what every scene is called and says of itself.
 std::vector<SceneKey> naming_keys();
-/// meshes[]: the mesh blocks, as every kind reads them; `more`: what this kind adds to a block.
-SceneKey meshes_key(const std::string& more = "");
+/// meshes[] and the keys of a mesh block, as every kind reads them (read_mesh).
+std::vector<SceneKey> mesh_keys();
+/// One of them by its full name ("meshes[].seed"); throws std::out_of_range for another.
+const SceneKey& mesh_key(const std::string& name);
 /// variants[]: studies side by side, each merged over the top-level keys.
 SceneKey variants_key();
 

@@ -38,6 +38,13 @@ SceneKeyReader::SceneKeyReader(const KeyTable& table, const nlohmann::json& root
   }
 }
 
+double checked_number(SceneObject& o, const std::string& name, const SceneKey& key,
+                      double fallback) {
+  const double value = o.number(name, fallback);
+  if (const auto bad = check_key(key, value)) o.fail_value(name, *bad);
+  return value;
+}
+
 void echo_settings(const std::vector<std::pair<std::string, std::string>>& settings) {
   for (const auto& [key, value] : settings) std::cout << "#   " << key << " = " << value << "\n";
 }

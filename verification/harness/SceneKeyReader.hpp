@@ -23,6 +23,11 @@ std::string vector_text(std::initializer_list<double> v);
 std::string point_text(const Point& p);
 std::string rect_text(const Rectangle& r);
 
+/// The number at `name` in `o` (absent: `fallback`), refused with one line naming it where it is
+/// outside the bounds of `key`: for readers that read an object's keys without a table reader.
+double checked_number(SceneObject& o, const std::string& name, const SceneKey& key,
+                      double fallback);
+
 /// Prints "#   key = value" for every key used: the echo at the top of a study part.
 void echo_settings(const std::vector<std::pair<std::string, std::string>>& settings);
 

@@ -10,13 +10,21 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "verification/harness/PhysicsKeys.hpp"
+#include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneObject.hpp"
 #include "verification/model/SettingsSchema.hpp"
+#include "verification/study/StaticSceneKeys.hpp"
 
 namespace vorodg {
 namespace {
 
 using nlohmann::json;
+
+/// A number of a mesh block within the bounds of its key (PhysicsKeys: mesh_keys).
+double bounded_number(SceneObject& m, const std::string& name, double fallback) {
+  return checked_number(m, name, mesh_key("meshes[]." + name), fallback);
+}
 
 void check_sizes(SceneObject& m, const std::vector<double>& sizes, const Rectangle& domain) {
   if (sizes.empty()) m.fail_value("sizes", "missing (required): the d or h of every level");
@@ -127,20 +135,13 @@ SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
     mesh.sizes = m.numbers("sizes", {});
     check_sizes(m, mesh.sizes, domain);
     mesh.realizations = m.integer("realizations", mesh.realizations);
-    if (mesh.realizations < 1) m.fail_value("realizations", "expected at least 1");
+    bounded_number(m, "realizations", mesh.realizations);
   }
-  const double seed = m.number("seed", static_cast<double>(mesh.seed));
-  if (seed < 0 || seed != std::floor(seed) || seed > 9007199254740992.0)
-    m.fail_value("seed", "expected an integer in 0..2^53, found " + fmt(seed));
+  const double seed = bounded_number(m, "seed", static_cast<double>(mesh.seed));
+  if (seed != std::floor(seed)) m.fail_value("seed", "expected an integer, found " + fmt(seed));
   mesh.seed = static_cast<std::uint64_t>(seed);
-  mesh.perturbation = m.number("perturbation", mesh.perturbation);
-  if (!(mesh.perturbation >= 0 && mesh.perturbation < kMaxPerturbation))
-    m.fail_value("perturbation", "expected 0 <= r < " + fmt(kMaxPerturbation) + ", found " +
-                                     fmt(mesh.perturbation));
-  mesh.regularization = m.number("regularization", mesh.regularization);
-  if (!(mesh.regularization >= 0 && mesh.regularization < kMaxRegularization))
-    m.fail_value("regularization", "expected a fraction of d in [0, " + fmt(kMaxRegularization) +
-                                       "), found " + fmt(mesh.regularization));
+  mesh.perturbation = bounded_number(m, "perturbation", mesh.perturbation);
+  mesh.regularization = bounded_number(m, "regularization", mesh.regularization);
   read_symmetry(m, mesh, family);
   m.finish();
   return mesh;
@@ -320,7 +321,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     for (SceneFormulation& f : scene.formulations) f.settings.energy_error = s.energy_error;
     outputs.finish();
   }
-  scene.patch_tolerance = top.number("patch_tolerance", scene.patch_tolerance);
+  scene.patch_tolerance =
+      checked_number(top, "patch_tolerance", static_key("patch_tolerance"), scene.patch_tolerance);
   scene.reference = top.text("reference", "");
   if (top.has("tradeoff")) {
     if (scene.study != "trade-off") top.fail_value("tradeoff", "only a trade-off study takes it");

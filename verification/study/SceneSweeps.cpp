@@ -6,8 +6,10 @@
 #include <set>
 
 #include "core/util/Errors.hpp"
+#include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneObject.hpp"
 #include "verification/study/Scene.hpp"
+#include "verification/study/StaticSceneKeys.hpp"
 
 namespace vorodg {
 
@@ -15,6 +17,33 @@ using nlohmann::json;
 
 /// An extremes scene: every entry of "sweeps" is merged (JSON merge patch) over the top-level
 /// keys and read as a scene of its own, so each sweep is validated like any scene.
+namespace {
+
+/// The keys of a sweep block (sweeps[].name, ...) and the scene keys it may merge over the top
+/// level, from the key tables.
+struct SweepKeys {
+  std::vector<std::string> own;
+  std::set<std::string> scene;
+};
+
+const SweepKeys& sweep_keys() {
+  static const SweepKeys keys = [] {
+    SweepKeys k;
+    const std::string prefix = "sweeps[].";
+    for (const SceneKey& key : extremes_scene_table().keys)
+      if (key.name.starts_with(prefix)) k.own.push_back(key.name.substr(prefix.size()));
+    for (const SceneKey& key : static_scene_table().keys) {
+      const std::string top = key.name.substr(0, key.name.find_first_of(".["));
+      if (top != "name" && top != "description" && top != "study" && top != "tradeoff")
+        k.scene.insert(top);
+    }
+    return k;
+  }();
+  return keys;
+}
+
+}  // namespace
+
 Scene parse_extremes(const json& root, SceneObject& top, const std::string& source) {
   const json& sweeps = top.at("sweeps");
   if (!sweeps.is_array() || sweeps.empty())
@@ -28,21 +57,17 @@ Scene parse_extremes(const json& root, SceneObject& top, const std::string& sour
     SceneObject s(sweeps[i], where, source);
     json merged = base;
     json patch = sweeps[i];
-    static const std::vector<std::string> sweep_keys = {
-        "name", "axis", "baseline", "expected_rate", "degraded_factor", "broken_factor"};
-    static const std::set<std::string> scene_keys = {"problems",        "domain",       "material",
-                                                     "meshes",          "formulations", "outputs",
-                                                     "patch_tolerance", "reference"};
+    const std::vector<std::string>& sweep_own = sweep_keys().own;
     for (const auto& [key, ignored] : sweeps[i].items()) {
-      if (scene_keys.count(key) ||
-          std::find(sweep_keys.begin(), sweep_keys.end(), key) != sweep_keys.end())
+      if (sweep_keys().scene.count(key) ||
+          std::find(sweep_own.begin(), sweep_own.end(), key) != sweep_own.end())
         continue;
-      for (const std::string& known : sweep_keys)  // a misspelt sweep key: suggest it here
+      for (const std::string& known : sweep_own)  // a misspelt sweep key: suggest it here
         if (edit_distance(key, known) < 4)
           throw InputError("scene " + source + ": unknown key '" + where + "." + key +
                            "' (did you mean '" + known + "'?)");
     }
-    for (const std::string& key : sweep_keys) patch.erase(key);
+    for (const std::string& key : sweep_own) patch.erase(key);
     merged.merge_patch(patch);
     merged["study"] = "convergence";
     auto sweep = std::make_shared<Scene>(parse_scene(merged.dump(), source + " " + where));
@@ -63,9 +88,12 @@ Scene parse_extremes(const json& root, SceneObject& top, const std::string& sour
                     [](const SceneFormulation& f) { return f.settings.formulation == "cg"; });
     if (sweep->baseline == "cg" && !has_cg)
       s.fail_value("baseline", "'cg' needs a cg formulation in the sweep");
-    sweep->expected_rate = s.number("expected_rate", sweep->expected_rate);
-    sweep->degraded_factor = s.number("degraded_factor", sweep->degraded_factor);
-    sweep->broken_factor = s.number("broken_factor", sweep->broken_factor);
+    const auto number = [&](const std::string& name, double fallback) {
+      return checked_number(s, name, static_key("sweeps[]." + name), fallback);
+    };
+    sweep->expected_rate = number("expected_rate", sweep->expected_rate);
+    sweep->degraded_factor = number("degraded_factor", sweep->degraded_factor);
+    sweep->broken_factor = number("broken_factor", sweep->broken_factor);
     if (!(sweep->degraded_factor > 1 && sweep->broken_factor > sweep->degraded_factor))
       s.fail_value("broken_factor", "expected 1 < degraded_factor < broken_factor");
     scene.sweeps.push_back(sweep);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <iostream>
-#include <map>
 
 #include "core/util/Stopwatch.hpp"
 #include "verification/harness/Ensemble.hpp"
@@ -40,33 +39,6 @@ int run_static_study(
     return 1;
   }
   return 0;
-}
-
-std::vector<SceneKey> static_scene_keys() {
-  // The top-level `problems` is a list in a scene: the scene reader's, not the schema's.
-  static const std::map<SettingScope, std::string> prefix = {
-      {SettingScope::material, "material."},
-      {SettingScope::formulation, "formulations[]."},
-      {SettingScope::outputs, "outputs."}};
-  static const std::map<SettingKind, std::string> type = {{SettingKind::number, "number"},
-                                                          {SettingKind::integer, "integer"},
-                                                          {SettingKind::flag, "bool"},
-                                                          {SettingKind::choice, "string"}};
-  std::vector<SceneKey> keys;
-  for (const SettingSpec& spec : setting_specs()) {
-    if (!prefix.count(spec.scope)) continue;  // command-line only
-    keys.push_back(key(prefix.at(spec.scope) + spec.key, type.at(spec.kind), default_text(spec),
-                       requirement_text(spec), spec.doc));
-    SceneKey& k = keys.back();
-    k.lower = spec.range.lower, k.upper = spec.range.upper;
-    k.lower_open = spec.range.lower_open, k.upper_open = spec.range.upper_open;
-    if (!spec.range.allowed.empty()) {  // a list of values: its least and greatest
-      const auto [lo, hi] =
-          std::minmax_element(spec.range.allowed.begin(), spec.range.allowed.end());
-      k.lower = *lo, k.upper = *hi, k.lower_open = k.upper_open = false;
-    }
-  }
-  return keys;
 }
 
 std::string read_static_scene(const std::string& text, const std::string& source) {

@@ -8,6 +8,7 @@
 #include "verification/harness/StudyKind.hpp"
 #include "verification/model/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
+#include "verification/study/StaticSceneKeys.hpp"
 #include "verification/study/StudyRunner.hpp"
 
 namespace vorodg {
@@ -20,10 +21,6 @@ StudyOptions study_options(const StudyCall& call);
 int run_static_study(
     const Scene& scene, const StudyCall& call,
     const std::function<void(const std::vector<RunRecord>&, const StudyOptions&)>& check = {});
-
-/// The keys of a static scene that the settings schema holds (material, formulations[],
-/// outputs), as scene keys.
-std::vector<SceneKey> static_scene_keys();
 
 /// A static scene's reader for the registry: reads and validates, returns the description.
 std::string read_static_scene(const std::string& text, const std::string& source);

@@ -178,7 +178,6 @@ std::vector<SceneKey> output_keys() {
       key("outputs.snapshots", "list of numbers", "none", "ascending times >= 0",
           "extra frames at the first step at or after each time, s: vtu/<run>/snapshot_<i>.vtu, "
           "listed in snapshots/<run>.csv and drawn in plots/<run>_snapshots.png"),
-      meshes_key(),
       variants_key(),
       key("perturb.key", "string", "none", "a top-level key or a JSON pointer (/wall/point)",
           "the key a sensitivity study varies (instead of variants[]); its runs go to "
@@ -203,6 +202,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, impact_keys());
   append_keys(keys, contact_keys());
   append_keys(keys, time_keys());
+  append_keys(keys, mesh_keys());
   append_keys(keys, output_keys());
   return keys;
 }

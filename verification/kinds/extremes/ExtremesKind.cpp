@@ -45,7 +45,7 @@ int run_extremes(const StudyCall& call) {
 
 StudyKind extremes_kind() {
   return {"extremes", "sweeps to the numerical extremes, a verdict per run", read_static_scene,
-          run_extremes, static_scene_keys};
+          run_extremes, extremes_scene_keys};
 }
 
 }  // namespace vorodg

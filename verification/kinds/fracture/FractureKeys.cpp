@@ -61,10 +61,9 @@ std::vector<SceneKey> loading_keys() {
   };
 }
 
-/// The mesh blocks, the outputs and the variants.
+/// The outputs and the variants.
 std::vector<SceneKey> study_keys() {
   return {
-      meshes_key("; `symmetric` true, \"notch\" or false"),
       bounded("outputs.vtu_every", "integer", "10", "0 <= vtu_every <= 1e9",
               "write the deformed mesh every this many points (0: never)", 0.0, false, 1e9),
       variants_key(),
@@ -82,6 +81,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, cohesive_keys({"3.33e6", "124", "1000", "0.75", "pre-inserted faces", ""}));
   append_keys(keys, cracking_keys());
   append_keys(keys, loading_keys());
+  append_keys(keys, mesh_keys());
   append_keys(keys, study_keys());
   return keys;
 }

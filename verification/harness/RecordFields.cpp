@@ -1,5 +1,7 @@
 #include "verification/harness/RecordFields.hpp"
 
+#include <algorithm>
+
 namespace vorodg {
 
 nlohmann::json number_json(double x) {
@@ -23,6 +25,11 @@ std::string csv_cell(const nlohmann::json& value, const CsvFormat& format) {
   if (value.is_boolean()) return value.get<bool>() ? "1" : "0";
   if (value.is_string()) {
     const std::string& s = value.get_ref<const std::string&>();
+    if (format.quoted) {
+      std::string text = s;
+      std::replace(text.begin(), text.end(), '"', '\'');
+      return "\"" + text + "\"";
+    }
     const bool non_finite = s == "nan" || s == "inf" || s == "-inf";
     return non_finite && format.blank_if_nan ? "" : s;
   }

@@ -26,6 +26,7 @@ struct CsvFormat {
   bool listed = true;
   int digits = 6;             // significant digits of a number
   bool blank_if_nan = false;  // a non-finite number as an empty cell
+  bool quoted = false;        // a text in double quotes (its own double quotes turned to ')
 };
 inline constexpr CsvFormat kNotInCsv{false, 0, false};
 
@@ -38,6 +39,13 @@ struct RecordField {
   bool optional = false;  // absent from JSON when NaN (not measured), and NaN when absent
   bool in_json = true;    // false: a column of results.csv only (a setting of the scene)
   bool number = false;    // a double: written through number_json
+  /// Where set, the field exists only where it holds: absent from JSON, an empty CSV cell, and
+  /// not expected when read back.
+  std::function<bool(const Record&)> when = {};
+  /// false: older records may lack it; reading one leaves the record's default.
+  bool required = true;
+
+  bool holds(const Record& r) const { return !when || when(r); }
 };
 
 /// A member of the record: doubles through number_json, anything else as nlohmann::json
@@ -84,7 +92,7 @@ template <class Record>
 nlohmann::json record_json(const std::vector<RecordField<Record>>& fields, const Record& r) {
   nlohmann::json j = nlohmann::json::object();
   for (const RecordField<Record>& f : fields) {
-    if (!f.in_json) continue;
+    if (!f.in_json || !f.holds(r)) continue;
     nlohmann::json v = f.get(r);
     if (f.optional && v.is_string() && v.get<std::string>() == "nan") continue;
     j[f.name] = std::move(v);
@@ -102,7 +110,7 @@ void read_record(const std::vector<RecordField<Record>>& fields, const nlohmann:
       f.set(r, j.at(f.name));
     else if (f.optional)
       f.set(r, number_json(NAN));
-    else
+    else if (f.required && !f.when)
       f.set(r, j.at(f.name));  // throws, naming the missing field
   }
 }
@@ -127,7 +135,7 @@ std::string csv_row(const std::vector<RecordField<Record>>& fields, const Record
   for (const RecordField<Record>& f : fields)
     if (f.csv.listed) {
       if (!first) line += ',';
-      line += csv_cell(f.get(r), f.csv);
+      if (f.holds(r)) line += csv_cell(f.get(r), f.csv);
       first = false;
     }
   return line + "\n";

@@ -1,8 +1,9 @@
 #pragma once
 // Typed records of runs: what a run is (StudyRun: a pure function of the scene), what it
 // measured (RunMetrics, also `vorodg solve --metrics`) and both together (RunRecord: one line
-// of results.jsonl). JSON is made and read here only; optional values are optional, never
-// sentinels, and no number is read back out of a label.
+// of results.jsonl). Each is a field table (RecordFields): JSON and results.csv are made from it,
+// and read back through it; optional values are optional, never sentinels, and no number is read
+// back out of a label.
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "core/util/Stopwatch.hpp"
 #include "dg/DgElasticity.hpp"
 #include "verification/SolveRun.hpp"
+#include "verification/harness/RecordFields.hpp"
 
 namespace vorodg {
 
@@ -60,6 +62,12 @@ struct RunRecord {
 
   bool ok() const { return metrics.has_value(); }
 };
+
+/// The field tables (harness/RecordFields): a run's metrics (metrics.json, and the part of a
+/// record a finished run adds), and a whole record: its line of results.jsonl and its row of
+/// results.csv.
+const std::vector<RecordField<RunMetrics>>& metrics_fields();
+const std::vector<RecordField<RunRecord>>& run_record_fields();
 
 nlohmann::json to_json(const RunMetrics& metrics);
 RunMetrics metrics_from_json(const nlohmann::json& value);

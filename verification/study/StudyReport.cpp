@@ -26,31 +26,10 @@ std::string csv_text(std::string s) {
   return "\"" + s + "\"";
 }
 
-std::string csv_number(double x) {
-  return fmt(x, 17);
-}
-
 void write_results_csv(const std::vector<RunRecord>& records, const std::filesystem::path& out) {
-  std::ostringstream csv;
-  csv << "id,mesh,family,level,size,realization,seed,problem,nu,formulation,variant,kp,status,"
-         "cells,dofs,h_avg,l2_error,energy_error,rcond,iterations,stop_reason,relative_gap,"
-         "seconds_total,error\n";
-  for (const RunRecord& record : records) {
-    const StudyRun& r = record.run;
-    csv << csv_text(r.id) << ',' << r.mesh_label << ',' << family_name(r.family) << ',' << r.level
-        << ',' << csv_number(r.size) << ',' << r.realization << ',' << r.seed << ',' << r.problem
-        << ',' << csv_number(r.nu) << ',' << r.formulation_name << ',' << csv_text(r.variant) << ','
-        << (r.kp ? csv_number(*r.kp) : "") << ',' << (record.ok() ? "ok" : "failed") << ',';
-    if (const auto& m = record.metrics)
-      csv << m->cells << ',' << m->dofs << ',' << csv_number(m->h_avg) << ','
-          << csv_number(m->l2_error) << ',' << csv_number(m->energy_error) << ','
-          << csv_number(m->rcond) << ',' << m->iterations() << ',' << m->stop_reason() << ','
-          << csv_number(m->dg ? m->dg->relative_gap : 0.0) << ',' << csv_number(m->total_seconds());
-    else
-      csv << ",,,,,,,,,";
-    csv << ',' << csv_text(record.error) << "\n";
-  }
-  write_file_atomically(out / "results.csv", csv.str());
+  std::string csv = csv_header(run_record_fields());
+  for (const RunRecord& record : records) csv += csv_row(run_record_fields(), record);
+  write_file_atomically(out / "results.csv", csv);
 }
 
 /// Seconds per stage, summed over each group's runs (wall times: never in summary.json).

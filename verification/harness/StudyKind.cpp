@@ -1,10 +1,12 @@
 #include "verification/harness/StudyKind.hpp"
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "core/util/Errors.hpp"
 #include "verification/harness/SceneObject.hpp"
 #include "verification/harness/SceneVariants.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 
 namespace vorodg {
 
@@ -29,11 +31,20 @@ const StudyKind& scene_kind(const std::string& text, const std::string& source) 
 }
 
 std::string key_table_markdown(const StudyKind& kind) {
-  std::string md = "| key | type | default | range | meaning |\n|---|---|---|---|---|\n";
-  for (const SceneKey& k : kind.keys())
-    md += "| `" + k.name + "` | " + k.type + " | " + k.fallback + " | " + k.range + " | " + k.doc +
-          " |\n";
-  return md;
+  ConvergenceTable t;
+  for (const SceneKey& k : kind.keys()) {
+    t.start_row();
+    for (const auto& [column, text] :
+         {std::pair<const char*, std::string>{"key", "`" + k.name + "`"},
+          {"type", k.type},
+          {"default", k.fallback},
+          {"range", k.range},
+          {"meaning", k.doc}})
+      t.add_text(column, text);
+  }
+  std::ostringstream md;
+  t.write_markdown(md);
+  return md.str();
 }
 
 std::string read_study_scene(const std::string& text, const std::string& source) {

@@ -1,13 +1,42 @@
 #include "verification/report/ConvergenceTable.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "verification/report/RateFit.hpp"
 
 namespace vorodg {
+
+ColumnStyle integer_style() {
+  ColumnStyle s;
+  s.precision = 17;
+  return s;
+}
+
+ColumnStyle shortest_csv_style() {
+  ColumnStyle s;
+  s.csv_precision = 0, s.csv_quoted = false, s.in_text = false;
+  return s;
+}
+
+namespace {
+
+/// A number in the CSV: with `precision` significant digits, or its shortest exact text.
+void put_csv_number(std::ostream& out, double x, int precision) {
+  if (precision > 0) {
+    out << std::defaultfloat << std::setprecision(precision) << x;
+    return;
+  }
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out << std::string_view(buffer, end - buffer);
+}
+
+}  // namespace
 
 void ConvergenceTable::start_row() {
   ++rows_;
@@ -37,8 +66,12 @@ void ConvergenceTable::add_value(const std::string& name, double value,
   current(name, style) = Number{value, spread};
 }
 
-void ConvergenceTable::add_text(const std::string& name, const std::string& text) {
-  current(name, Style{}) = text;
+void ConvergenceTable::add_text(const std::string& name, const std::string& text, Style style) {
+  current(name, style) = text;
+}
+
+void ConvergenceTable::declare_column(const std::string& name, Style style) {
+  column(name, style);
 }
 
 std::optional<double> ConvergenceTable::value(std::size_t row, const std::string& name) const {
@@ -66,7 +99,7 @@ void ConvergenceTable::evaluate_convergence_rates(const std::string& data,
 std::string ConvergenceTable::format(const Cell& cell, const Style& style) {
   if (const std::string* text = std::get_if<std::string>(&cell)) return *text;
   const Number* n = std::get_if<Number>(&cell);
-  if (!n) return "-";
+  if (!n) return style.missing;
   std::ostringstream os;
   auto put = [&](double x, int precision) {
     if (style.scientific)
@@ -82,6 +115,7 @@ std::string ConvergenceTable::format(const Cell& cell, const Style& style) {
 std::vector<std::vector<std::string>> ConvergenceTable::formatted() const {
   std::vector<std::vector<std::string>> table(rows_ + 1);
   for (const Column& c : columns_) {
+    if (!c.style.in_text) continue;
     table[0].push_back(c.name);
     for (std::size_t r = 0; r < rows_; ++r) table[r + 1].push_back(format(c.cells[r], c.style));
   }
@@ -96,7 +130,7 @@ std::size_t ConvergenceTable::display_width(const std::string& text) {
 
 void ConvergenceTable::write_text(std::ostream& out, const std::string& indent) const {
   const auto table = formatted();
-  std::vector<std::size_t> width(columns_.size(), 0);
+  std::vector<std::size_t> width(table[0].size(), 0);
   for (const auto& row : table)
     for (std::size_t c = 0; c < row.size(); ++c)
       width[c] = std::max(width[c], display_width(row[c]));
@@ -116,45 +150,59 @@ void ConvergenceTable::write_markdown(std::ostream& out) const {
     out << "\n";
     if (r == 0) {
       out << "|";
-      for (std::size_t c = 0; c < columns_.size(); ++c) out << "---|";
+      for (std::size_t c = 0; c < table[0].size(); ++c) out << "---|";
       out << "\n";
     }
   }
 }
 
-void ConvergenceTable::write_csv(std::ostream& out) const {
+void ConvergenceTable::write_csv(std::ostream& out, const CsvOptions& options) const {
   auto quoted = [](const std::string& s) {
     std::string q = "\"";
     for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
     return q + "\"";
   };
+  auto name = [&](const std::string& s) { return options.quote_names ? quoted(s) : s; };
+  std::vector<const Column*> listed;
   std::vector<bool> has_spread;
-  for (const Column& c : columns_)
+  for (const Column& c : columns_) {
+    if (!c.style.in_csv) continue;
+    listed.push_back(&c);
     has_spread.push_back(std::any_of(c.cells.begin(), c.cells.end(), [](const Cell& x) {
       const Number* n = std::get_if<Number>(&x);
       return n && n->spread;
     }));
-  for (std::size_t c = 0; c < columns_.size(); ++c) {
-    out << (c ? "," : "") << quoted(columns_[c].name);
-    if (has_spread[c]) out << "," << quoted(columns_[c].name + " spread");
+  }
+  for (std::size_t c = 0; c < listed.size(); ++c) {
+    const std::string& header =
+        listed[c]->style.csv_name.empty() ? listed[c]->name : listed[c]->style.csv_name;
+    out << (c ? "," : "") << name(header);
+    if (has_spread[c]) out << "," << name(header + " spread");
   }
   out << "\n";
   for (std::size_t r = 0; r < rows_; ++r) {
-    for (std::size_t c = 0; c < columns_.size(); ++c) {
-      const Cell& cell = columns_[c].cells[r];
+    for (std::size_t c = 0; c < listed.size(); ++c) {
+      const Cell& cell = listed[c]->cells[r];
+      const ColumnStyle& style = listed[c]->style;
       out << (c ? "," : "");
       const Number* n = std::get_if<Number>(&cell);
       if (n)
-        out << std::setprecision(17) << n->value;
+        put_csv_number(out, n->value, style.csv_precision);
       else if (const std::string* t = std::get_if<std::string>(&cell))
-        out << quoted(*t);
+        out << (style.csv_quoted ? quoted(*t) : *t);
       if (has_spread[c]) {
         out << ",";
-        if (n && n->spread) out << std::setprecision(17) << *n->spread;
+        if (n && n->spread) put_csv_number(out, *n->spread, style.csv_precision);
       }
     }
     out << "\n";
   }
+}
+
+std::string csv_text(const ConvergenceTable& table) {
+  std::ostringstream csv;
+  table.write_csv(csv, {.quote_names = false});
+  return csv.str();
 }
 
 }  // namespace vorodg

@@ -74,17 +74,49 @@ std::vector<ElementOptions> scene_elements(const Scene& scene) {
   return elements;
 }
 
-/// What the analysis writes: the per-edge penalties, the thresholds, and the report's table.
+/// What the analysis writes: the per-edge penalties (penalty_edges.csv), and the thresholds
+/// (penalty_thresholds.csv and the report's table: one table, some columns in one only).
 struct PenaltyOutputs {
-  std::ostringstream edges, thresholds;
-  ConvergenceTable table;
+  ConvergenceTable edges, thresholds;
 };
+
+ColumnStyle csv_digits(int precision, bool in_text = true) {
+  ColumnStyle s;
+  s.csv_precision = precision, s.csv_quoted = false, s.in_text = in_text;
+  return s;
+}
+
+/// The columns of both tables, in their order.
+PenaltyOutputs penalty_tables() {
+  PenaltyOutputs out;
+  const ColumnStyle text = csv_digits(6), number = csv_digits(6);
+  ColumnStyle count{6, false}, sci{3, true};
+  count.csv_precision = 17;
+  sci.csv_precision = 6;
+  for (const char* c : {"mesh", "level", "h_avg", "element", "traction", "edge_length_over_h_avg",
+                        "eps_over_E_per_h_avg"})
+    out.edges.declare_column(c, std::string(c) == "level" ? count : number);
+  ColumnStyle median = sci, max = sci, md_only = sci;
+  median.csv_name = "auto_median", max.csv_name = "auto_max", md_only.in_csv = false;
+  for (const auto& [name, style] : std::vector<std::pair<std::string, ColumnStyle>>{
+           {"mesh", text},
+           {"level", count},
+           {"cells", count},
+           {"h_avg", csv_digits(6, false)},
+           {"element", text},
+           {"traction", text},
+           {"auto eps h/E median", median},
+           {"auto eps h/E max", max},
+           {"smallest definite k_p", md_only},
+           {"smallest_definite_kp", csv_digits(6, false)}})
+    out.thresholds.declare_column(name, style);
+  return out;
+}
 
 /// One level of a mesh block, realization 0: the coercive penalty of every interface and the
 /// definiteness threshold, for every element of the scene and every traction kind.
 void analyse_level(const Scene& scene, const SceneMesh& sm, int level,
                    const SolveSettings& settings, PenaltyOutputs& out) {
-  const ConvergenceTable::Style sci{3, true}, count{6, false};
   const std::uint64_t seed = derive_seed(derive_seed(sm.seed, level), 0);
   const GeneratedMesh mesh = generate_mesh(sm.spec(scene.domain, level, seed));
   const auto problem = make_problem(settings, mesh.mesh.domain());
@@ -101,26 +133,32 @@ void analyse_level(const Scene& scene, const SceneMesh& sm, int level,
                                      false, kind, 1);
       const std::vector<double> eps = penalty.relative_to_h_avg();
       if (kind != TractionKind::mean)
-        for (std::size_t i = 0; i < eps.size(); ++i)
-          out.edges << sm.label << ',' << level << ',' << fmt(h, 6) << ',' << name << ','
-                    << traction_name(kind) << ',' << fmt(space.interfaces()[i].length / h, 6) << ','
-                    << fmt(eps[i], 6) << '\n';
+        for (std::size_t i = 0; i < eps.size(); ++i) {
+          ConvergenceTable& e = out.edges;
+          e.start_row();
+          e.add_text("mesh", sm.label);
+          e.add_value("level", level);
+          e.add_value("h_avg", h);
+          e.add_text("element", name);
+          e.add_text("traction", traction_name(kind));
+          e.add_value("edge_length_over_h_avg", space.interfaces()[i].length / h);
+          e.add_value("eps_over_E_per_h_avg", eps[i]);
+        }
       const double threshold = smallest_definite_kp(element, integrator, *problem, kind);
       const SampleStatistics spread = sample_statistics(eps);
-      out.thresholds << sm.label << ',' << level << ',' << mesh.mesh.num_cells() << ',' << fmt(h, 6)
-                     << ',' << name << ',' << traction_name(kind) << ',' << fmt(spread.median, 6)
-                     << ',' << fmt(spread.max, 6) << ',' << fmt(threshold, 6) << '\n';
-      ConvergenceTable& t = out.table;
+      ConvergenceTable& t = out.thresholds;
       t.start_row();
       t.add_text("mesh", sm.label);
-      t.add_value("level", level, std::nullopt, count);
-      t.add_value("cells", mesh.mesh.num_cells(), std::nullopt, count);
+      t.add_value("level", level);
+      t.add_value("cells", mesh.mesh.num_cells());
+      t.add_value("h_avg", h);
       t.add_text("element", name);
       t.add_text("traction", traction_name(kind));
-      t.add_value("auto eps h/E median", spread.median, std::nullopt, sci);
-      t.add_value("auto eps h/E max", spread.max, std::nullopt, sci);
+      t.add_value("auto eps h/E median", spread.median);
+      t.add_value("auto eps h/E max", spread.max);
+      t.add_value("smallest_definite_kp", threshold);
       if (std::isfinite(threshold))
-        t.add_value("smallest definite k_p", threshold, std::nullopt, sci);
+        t.add_value("smallest definite k_p", threshold);
       else
         t.add_text("smallest definite k_p", "> " + fmt(kMaxKp));
     }
@@ -131,11 +169,7 @@ void analyse_level(const Scene& scene, const SceneMesh& sm, int level,
 
 void write_penalty_analysis(const Scene& scene, const std::filesystem::path& out,
                             std::ostringstream& md) {
-  PenaltyOutputs outputs;
-  outputs.edges
-      << "mesh,level,h_avg,element,traction,edge_length_over_h_avg,eps_over_E_per_h_avg\n";
-  outputs.thresholds
-      << "mesh,level,cells,h_avg,element,traction,auto_median,auto_max,smallest_definite_kp\n";
+  PenaltyOutputs outputs = penalty_tables();
   SolveSettings settings;
   settings.problem = scene.problems.front();
   settings.E = scene.E;
@@ -145,15 +179,19 @@ void write_penalty_analysis(const Scene& scene, const std::filesystem::path& out
   for (const SceneMesh& sm : scene.meshes)
     for (int level = 0; level < static_cast<int>(sm.sizes.size()); ++level)
       analyse_level(scene, sm, level, settings, outputs);
-  write_file_atomically(out / "penalty_edges.csv", outputs.edges.str());
-  write_file_atomically(out / "penalty_thresholds.csv", outputs.thresholds.str());
+  for (const auto& [file, table] : {std::pair{"penalty_edges.csv", &outputs.edges},
+                                    std::pair{"penalty_thresholds.csv", &outputs.thresholds}}) {
+    std::ostringstream csv;
+    table->write_csv(csv, {.quote_names = false});
+    write_file_atomically(out / file, csv.str());
+  }
   md << "## The coercive penalty and the definiteness threshold\n\n"
      << "Realization 0 of each level, problem " << settings.problem
      << ". `auto eps h/E`: the proven coercive penalty (k_p = 1) of each interface relative to E / "
         "h_avg; `smallest definite k_p`: the smallest k_p with eps = k_p E / h_avg for which the "
         "symmetric SIPG matrix is positive definite (bisection to 1%). Per-edge values in "
         "penalty_edges.csv, plotted in penalty_edges.png.\n\n";
-  outputs.table.write_markdown(md);
+  outputs.thresholds.write_markdown(md);
   md << "\n";
 }
 

@@ -5,6 +5,7 @@
 
 #include "core/util/Format.hpp"
 #include "verification/cli/JsonOutput.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 #include "verification/study/TradeoffVerification.hpp"
 
 namespace vorodg {
@@ -26,6 +27,23 @@ std::string time_range(const TradeoffLevel& lv) {
   return fmt(lv.seconds_min, 3) + "-" + fmt(lv.seconds_max, 3);
 }
 
+/// One row of texts, each cell formatted here (the report's numbers carry their own digits).
+void add_row(ConvergenceTable& t, const std::vector<std::pair<std::string, std::string>>& cells) {
+  t.start_row();
+  for (const auto& [column, text] : cells) t.add_text(column, text);
+}
+
+/// The header of a table without rows.
+void add_header_only(ConvergenceTable& t, const std::vector<std::string>& columns) {
+  for (const std::string& c : columns) t.declare_column(c);
+}
+
+std::string markdown(const ConvergenceTable& t) {
+  std::ostringstream md;
+  t.write_markdown(md);
+  return md.str();
+}
+
 /// Which configurations converge, and why the others may not stand on the front.
 void write_admission(const TradeoffAnalysis& a, const TradeoffSettings& s, std::ostringstream& md) {
   md << "## Which configurations converge\n\nA configuration stands on the front only if its "
@@ -34,16 +52,17 @@ void write_admission(const TradeoffAnalysis& a, const TradeoffSettings& s, std::
      << fmt(kExpectedEnergyRate)
      << ", every realization's rate between consecutive levels is positive, its mean L2 error "
         "falls at every level, no run failed, and at least two levels take "
-     << fmt(s.min_seconds) << " s or more (the error-cost line).\n\n"
-     << "| configuration | L2 rate | energy rate | lowest L2 pair rate | verdict |\n"
-        "|---|---|---|---|---|\n";
+     << fmt(s.min_seconds) << " s or more (the error-cost line).\n\n";
+  ConvergenceTable t;
   for (const TradeoffConfig& c : a.configs) {
     const auto& pair = c.group->rate_l2;
-    md << "| " << c.variant << " | " << rate_text(c.group->rate_l2) << " | "
-       << rate_text(c.group->rate_energy) << " | "
-       << (pair && pair->pair_min ? fmt(*pair->pair_min, 3) : "-") << " | "
-       << (c.admitted() ? "admitted" : "**excluded**") << " |\n";
+    add_row(t, {{"configuration", c.variant},
+                {"L2 rate", rate_text(c.group->rate_l2)},
+                {"energy rate", rate_text(c.group->rate_energy)},
+                {"lowest L2 pair rate", pair && pair->pair_min ? fmt(*pair->pair_min, 3) : "-"},
+                {"verdict", c.admitted() ? "admitted" : "**excluded**"}});
   }
+  md << markdown(t);
   bool any = false;
   for (const TradeoffConfig& c : a.configs) {
     if (c.admitted()) continue;
@@ -62,37 +81,51 @@ void write_costs(const TradeoffAnalysis& a, const TradeoffSettings& s, std::ostr
      << fmt(s.min_seconds)
      << " s are timed. Seconds are the median of the realizations, with their range; the "
         "slope s is that of L2 error ~ time^-s over the timed levels: the larger, the faster "
-        "the error falls as the problem grows.\n\n"
-        "| configuration | timed levels | error-cost slope s | microseconds per DOF | finest: "
-        "median s | range s | spread |\n|---|---|---|---|---|---|---|\n";
+        "the error falls as the problem grows.\n\n";
+  ConvergenceTable t;
   for (const TradeoffConfig& c : a.configs) {
     if (!c.cost_fit) continue;
     int timed = 0;
     const TradeoffLevel* finest = nullptr;
     for (const TradeoffLevel& lv : c.levels)
       if (lv.timed) ++timed, finest = &lv;
-    md << "| " << c.variant << (c.admitted() ? "" : " (excluded)") << " | " << timed << " | "
-       << fmt(c.slope(), 3) << " | " << fmt(1e6 * *c.seconds_per_dof, 3) << " | "
-       << fmt(finest->seconds, 3) << " | " << time_range(*finest) << " | "
-       << fmt(100 * (finest->seconds_max - finest->seconds_min) / finest->seconds, 2) << "% |\n";
+    add_row(t,
+            {{"configuration", c.variant + (c.admitted() ? "" : " (excluded)")},
+             {"timed levels", std::to_string(timed)},
+             {"error-cost slope s", fmt(c.slope(), 3)},
+             {"microseconds per DOF", fmt(1e6 * *c.seconds_per_dof, 3)},
+             {"finest: median s", fmt(finest->seconds, 3)},
+             {"range s", time_range(*finest)},
+             {"spread",
+              fmt(100 * (finest->seconds_max - finest->seconds_min) / finest->seconds, 2) + "%"}});
   }
-  md << "\n";
+  if (t.rows() == 0)
+    add_header_only(t, {"configuration", "timed levels", "error-cost slope s",
+                        "microseconds per DOF", "finest: median s", "range s", "spread"});
+  md << markdown(t) << "\n";
 }
 
 void write_front(const TradeoffAnalysis& a, std::ostringstream& md) {
   md << "## Pareto front\n\nAdmitted configurations at their timed levels; no other point is "
-        "both cheaper and more accurate.\n\n"
-        "| L2 error | median s | range s | configuration | level | h_avg | DOFs |\n"
-        "|---|---|---|---|---|---|---|\n";
+        "both cheaper and more accurate.\n\n";
   std::cout << "\nPareto front (admitted configurations, timed levels):\n";
+  ConvergenceTable t;
   for (const TradeoffPoint& p : a.front) {
     const TradeoffLevel& lv = *p.level;
-    md << "| " << scientific(lv.l2_error) << " | " << fmt(lv.seconds, 3) << " | " << time_range(lv)
-       << " | " << p.config->variant << " | " << lv.level << " | " << fmt(lv.h_avg, 4) << " | "
-       << fmt(lv.dofs, 6) << " |\n";
+    add_row(t, {{"L2 error", scientific(lv.l2_error)},
+                {"median s", fmt(lv.seconds, 3)},
+                {"range s", time_range(lv)},
+                {"configuration", p.config->variant},
+                {"level", std::to_string(lv.level)},
+                {"h_avg", fmt(lv.h_avg, 4)},
+                {"DOFs", fmt(lv.dofs, 6)}});
     std::cout << "  " << scientific(lv.l2_error) << "  " << std::setw(9) << fmt(lv.seconds, 3)
               << " s  " << p.config->variant << ", level " << lv.level << "\n";
   }
+  if (a.front.empty())
+    add_header_only(t,
+                    {"L2 error", "median s", "range s", "configuration", "level", "h_avg", "DOFs"});
+  md << markdown(t);
   if (a.front.empty()) md << "(empty: no admitted configuration has a timed level)\n";
   md << "\n";
 }
@@ -133,12 +166,16 @@ void write_check(const std::optional<TradeoffCheck>& check, const std::string& w
     md << "Every check run failed.\n\n";
     return;
   }
-  md << "| | predicted | measured |\n|---|---|---|\n"
-     << "| seconds per run (median) | " << fmt(t.seconds, 3) << " | " << fmt(*check->seconds, 3)
-     << " (range " << fmt(*check->seconds_min, 3) << "-" << fmt(*check->seconds_max, 3)
-     << ") |\n| L2 error (mean) | " << scientific(t.error) << " | " << scientific(*check->l2_error)
-     << " |\n\nMeasured time / predicted - 1: " << fmt(100 * *check->time_deviation(), 3)
-     << "%.\n\n";
+  ConvergenceTable table;
+  add_row(table, {{"", "seconds per run (median)"},
+                  {"predicted", fmt(t.seconds, 3)},
+                  {"measured", fmt(*check->seconds, 3) + " (range " + fmt(*check->seconds_min, 3) +
+                                   "-" + fmt(*check->seconds_max, 3) + ")"}});
+  add_row(table, {{"", "L2 error (mean)"},
+                  {"predicted", scientific(t.error)},
+                  {"measured", scientific(*check->l2_error)}});
+  md << markdown(table)
+     << "\nMeasured time / predicted - 1: " << fmt(100 * *check->time_deviation(), 3) << "%.\n\n";
 }
 
 /// Per knob, its error and time at fixed level against the first configuration (times only
@@ -150,26 +187,25 @@ void write_knob_table(const TradeoffAnalysis& a, std::ostringstream& md) {
   const TradeoffConfig& base = a.configs.front();
   md << "What each knob adds at fixed level, against `" << base.variant
      << "` (ratios of mean L2 error and of median seconds; '-' where a level is missing or too "
-        "short to time):\n\n| configuration |";
-  for (int l = 0; l < levels; ++l) md << " level " << l << " error | level " << l << " time |";
-  md << "\n|---|";
-  for (int l = 0; l < levels; ++l) md << "---|---|";
-  md << "\n";
+        "short to time):\n\n";
   auto find = [](const TradeoffConfig& c, int l) -> const TradeoffLevel* {
     for (const TradeoffLevel& lv : c.levels)
       if (lv.level == l) return &lv;
     return nullptr;
   };
+  ConvergenceTable t;
   for (const TradeoffConfig& c : a.configs) {
-    md << "| " << c.variant << " |";
+    std::vector<std::pair<std::string, std::string>> cells = {{"configuration", c.variant}};
     for (int l = 0; l < levels; ++l) {
       const TradeoffLevel *p = find(c, l), *b = find(base, l);
-      md << " " << (p && b ? fmt(p->l2_error / b->l2_error, 3) : "-") << " | "
-         << (p && b && p->timed && b->timed ? fmt(p->seconds / b->seconds, 3) : "-") << " |";
+      const std::string level = "level " + std::to_string(l);
+      cells.push_back({level + " error", p && b ? fmt(p->l2_error / b->l2_error, 3) : "-"});
+      cells.push_back({level + " time",
+                       p && b && p->timed && b->timed ? fmt(p->seconds / b->seconds, 3) : "-"});
     }
-    md << "\n";
+    add_row(t, cells);
   }
-  md << "\n";
+  md << markdown(t) << "\n";
 }
 
 json level_json(const TradeoffConfig& c, const TradeoffLevel& lv) {

@@ -25,6 +25,7 @@
 #include "verification/kinds/dynamics/FragmentLevels.hpp"
 #include "verification/kinds/dynamics/FragmentationRun.hpp"
 #include "verification/kinds/dynamics/PerturbationReport.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -106,28 +107,62 @@ double worst(const std::vector<DynamicsRecord>& records, double DynamicsMeasures
   return w;
 }
 
-std::string report_row(const std::vector<ReportColumn>& columns, const DynamicsRecord& r) {
-  const DynamicsMeasures& m = r.measures;
-  std::ostringstream md;
-  md << "| " << r.run.id() << " | " << r.cells << " | " << fmt(r.h_avg, 4) << " | " << fmt(r.dt, 4)
-     << " | " << fmt(r.dt_lanczos, 4) << " / " << fmt(r.dt_cells, 4) << " | " << r.steps << " | "
-     << fmt(m.energy_balance_error, 2) << " | " << measure_text(m.momentum_drift, 2) << " |";
-  for (const ReportColumn& c : columns) md << " " << c.cell(m) << " |";
-  return md.str() + "\n";
+ColumnStyle digits(int precision) {
+  ColumnStyle s;
+  s.precision = precision;
+  return s;
 }
 
 /// The table of every run: the common columns, then the problem's.
 std::string runs_table(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result) {
   const std::vector<ReportColumn> columns = scene.problem->report_columns();
-  std::string md =
-      "| run | cells | h_avg | dt [s] | dt_crit Lanczos / cells [s] | steps | energy balance "
-      "error | momentum drift |";
-  for (const ReportColumn& c : columns) md += " " + c.header + " |";
-  md += "\n|";
-  for (std::size_t i = 0; i < 8 + columns.size(); ++i) md += "---|";
-  md += "\n";
-  for (const DynamicsRecord& r : result.records) md += report_row(columns, r);
-  return md;
+  ColumnStyle blank = digits(2);  // not measured: an empty cell
+  blank.missing = "";
+  ConvergenceTable t;
+  for (const DynamicsRecord& r : result.records) {
+    const DynamicsMeasures& m = r.measures;
+    t.start_row();
+    t.add_text("run", r.run.id());
+    t.add_value("cells", r.cells, {}, integer_style());
+    t.add_value("h_avg", r.h_avg, {}, digits(4));
+    t.add_value("dt [s]", r.dt, {}, digits(4));
+    t.add_text("dt_crit Lanczos / cells [s]", fmt(r.dt_lanczos, 4) + " / " + fmt(r.dt_cells, 4));
+    t.add_value("steps", static_cast<double>(r.steps), {}, integer_style());
+    t.add_value("energy balance error", m.energy_balance_error, {}, digits(2));
+    t.declare_column("momentum drift", blank);
+    if (std::isfinite(m.momentum_drift)) t.add_value("momentum drift", m.momentum_drift);
+    for (const ReportColumn& c : columns) t.add_text(c.header, c.cell(m));
+  }
+  std::ostringstream md;
+  t.write_markdown(md);
+  return md.str();
+}
+
+/// What the cracks did in each run of a fragmentation study.
+std::string fragments_table(const StudyRecords<DynamicsRecord>& result) {
+  ConvergenceTable t;
+  for (const DynamicsRecord& r : result.records) {
+    const DynamicsMeasures& m = r.measures;
+    t.start_row();
+    t.add_text("run", r.run.id());
+    t.add_value("fragments", m.fragments, {}, digits(6));
+    t.add_text("broken / cracked edges", fmt(m.broken_edges) + " / " + fmt(m.cracked_edges));
+    t.add_value("largest fragment (mass fraction)", m.max_fragment_mass_fraction, {}, digits(3));
+    t.add_value("dissipated [J/m]", m.dissipated_energy, {}, digits(4));
+    t.add_text(
+        "balance with the law's energies",
+        fmt(m.law_balance_error, 2) + (std::isfinite(m.law_balance_breach_time)
+                                           ? " (past " + fmt(100 * kLawBalanceLimit) + " % at " +
+                                                 fmt(m.law_balance_breach_time, 3) + " s)"
+                                           : ""));
+    t.add_text("largest cell rotation [rad] (first past " + fmt(kLargeRotation) + " at [s])",
+               fmt(m.max_rotation, 3) + (std::isfinite(m.large_rotation_time)
+                                             ? " (" + fmt(m.large_rotation_time, 3) + ")"
+                                             : ""));
+  }
+  std::ostringstream md;
+  t.write_markdown(md);
+  return md.str();
 }
 
 std::string report_md(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result) {
@@ -140,25 +175,7 @@ std::string report_md(const DynamicsScene& scene, const StudyRecords<DynamicsRec
      << (scene.fragmentation ? ", with the cohesive springs' share (docs/fragmentation.md)" : "")
      << ".\n\n"
      << runs_table(scene, result);
-  if (scene.fragmentation) {
-    md << "\n| run | fragments | broken / cracked edges | largest fragment (mass fraction) | "
-          "dissipated [J/m] | balance with the law's energies | largest cell rotation [rad] "
-          "(first past "
-       << fmt(kLargeRotation) << " at [s]) |\n|---|---|---|---|---|---|---|\n";
-    for (const DynamicsRecord& r : result.records) {
-      const DynamicsMeasures& m = r.measures;
-      md << "| " << r.run.id() << " | " << fmt(m.fragments) << " | " << fmt(m.broken_edges) << " / "
-         << fmt(m.cracked_edges) << " | " << fmt(m.max_fragment_mass_fraction, 3) << " | "
-         << fmt(m.dissipated_energy, 4) << " | " << fmt(m.law_balance_error, 2)
-         << (std::isfinite(m.law_balance_breach_time)
-                 ? " (past " + fmt(100 * kLawBalanceLimit) + " % at " +
-                       fmt(m.law_balance_breach_time, 3) + " s)"
-                 : "")
-         << " | " << fmt(m.max_rotation, 3)
-         << (std::isfinite(m.large_rotation_time) ? " (" + fmt(m.large_rotation_time, 3) + ")" : "")
-         << " |\n";
-    }
-  }
+  if (scene.fragmentation) md << "\n" << fragments_table(result);
   md << "\nEnergy balance error: |balance - balance(0)| over the input energy at the end "
         "(docs/dynamics.md). Momentum drift: max |P - P(0)| over sum m|v(0)|, only where no wall, "
         "prescribed velocity or damping acts.\n\nFiles: results.csv (one row per run), "

@@ -7,6 +7,7 @@
 
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 
 namespace fs = std::filesystem;
 
@@ -79,22 +80,71 @@ std::vector<FragmentLevel> fragment_levels(const std::vector<DynamicsRecord>& re
   return levels;
 }
 
+namespace {
+
+/// One table for levels.csv and the report: the report shows means with their spread and the
+/// KS distance with its p-value; the CSV has each number in a column of its own.
+ConvergenceTable levels_table(const std::vector<FragmentLevel>& levels) {
+  ColumnStyle plain, csv_only, text_only;
+  plain.csv_quoted = false;
+  csv_only.in_text = false, csv_only.csv_precision = 10;
+  text_only.in_csv = false;
+  const ColumnStyle count = integer_style();
+  ColumnStyle h{4}, seconds{3};
+  h.csv_name = "h_avg", h.csv_precision = 10;
+  seconds.csv_name = "median_seconds", seconds.csv_precision = 4;
+  ConvergenceTable t;
+  for (const auto& [name, style] :
+       std::vector<std::pair<std::string, ColumnStyle>>{{"mesh", plain},
+                                                        {"level", count},
+                                                        {"h_avg [m]", h},
+                                                        {"runs", count},
+                                                        {"fragments", text_only},
+                                                        {"fragments_mean", csv_only},
+                                                        {"fragments_sd", csv_only},
+                                                        {"largest fragment / mass", text_only},
+                                                        {"largest_mean", csv_only},
+                                                        {"largest_sd", csv_only},
+                                                        {"median run time [s]", seconds},
+                                                        {"fragments_pooled",
+                                                         [] {
+                                                           ColumnStyle s = integer_style();
+                                                           s.in_text = false;
+                                                           return s;
+                                                         }()},
+                                                        {"KS distance to coarser (p)", text_only},
+                                                        {"ks_distance", csv_only},
+                                                        {"ks_p_value", csv_only}})
+    t.declare_column(name, style);
+  for (const FragmentLevel& l : levels) {
+    t.start_row();
+    t.add_text("mesh", l.mesh);
+    t.add_value("level", l.level);
+    t.add_value("h_avg [m]", l.h_avg);
+    t.add_value("runs", static_cast<double>(l.fragments.values.size()));
+    t.add_text("fragments", spread(l.fragments, 4));
+    t.add_value("fragments_mean", l.fragments.mean);
+    if (l.fragments.std_dev) t.add_value("fragments_sd", *l.fragments.std_dev);
+    t.add_text("largest fragment / mass", spread(l.largest, 3));
+    t.add_value("largest_mean", l.largest.mean);
+    if (l.largest.std_dev) t.add_value("largest_sd", *l.largest.std_dev);
+    t.add_value("median run time [s]", l.median_seconds);
+    t.add_value("fragments_pooled", static_cast<double>(l.mass_fractions.size()));
+    if (const auto& ks = l.against_coarser) {
+      t.add_text("KS distance to coarser (p)",
+                 fmt(ks->distance, 3) + " (" + fmt(ks->p_value, 2) + ")");
+      t.add_value("ks_distance", ks->distance);
+      t.add_value("ks_p_value", ks->p_value);
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
 std::string fragment_levels_csv(const std::vector<FragmentLevel>& levels) {
   std::ostringstream csv;
-  csv << "mesh,level,h_avg,runs,fragments_mean,fragments_sd,largest_mean,largest_sd,"
-         "median_seconds,fragments_pooled,ks_distance,ks_p_value\n";
-  auto sd = [](const SampleStatistics& s) { return s.std_dev ? fmt(*s.std_dev, 10) : ""; };
-  for (const FragmentLevel& l : levels) {
-    csv << l.mesh << ',' << l.level << ',' << fmt(l.h_avg, 10) << ',' << l.fragments.values.size()
-        << ',' << fmt(l.fragments.mean, 10) << ',' << sd(l.fragments) << ','
-        << fmt(l.largest.mean, 10) << ',' << sd(l.largest) << ',' << fmt(l.median_seconds, 4) << ','
-        << l.mass_fractions.size() << ',';
-    if (l.against_coarser)
-      csv << fmt(l.against_coarser->distance, 10) << ',' << fmt(l.against_coarser->p_value, 10);
-    else
-      csv << ',';
-    csv << '\n';
-  }
+  levels_table(levels).write_csv(csv, {.quote_names = false});
   return csv.str();
 }
 
@@ -103,20 +153,8 @@ std::string fragment_levels_md(const std::vector<FragmentLevel>& levels) {
   md << "\n## Over the levels\n\nComplete realizations only, coarse to fine. KS: the two-sample "
         "Kolmogorov-Smirnov distance between the pooled fragment mass fractions of a level and "
         "of the next coarser one, with its p-value (levels.csv; "
-        "plots/largest_fragment_vs_h.png).\n\n| mesh | level | h_avg [m] | runs | fragments | "
-        "largest fragment / mass | median run time [s] | KS distance to coarser (p) "
-        "|\n|---|---|---|---|---|---|---|---|\n";
-  for (const FragmentLevel& l : levels) {
-    md << "| " << l.mesh << " | " << l.level << " | " << fmt(l.h_avg, 4) << " | "
-       << l.fragments.values.size() << " | " << spread(l.fragments, 4) << " | "
-       << spread(l.largest, 3) << " | " << fmt(l.median_seconds, 3) << " | ";
-    if (l.against_coarser)
-      md << fmt(l.against_coarser->distance, 3) << " (" << fmt(l.against_coarser->p_value, 2)
-         << ")";
-    else
-      md << "-";
-    md << " |\n";
-  }
+        "plots/largest_fragment_vs_h.png).\n\n";
+  levels_table(levels).write_markdown(md);
   if (levels.size() < 2) return md.str();
   const KsResult& finest = *levels.back().against_coarser;
   md << "\nThe two finest levels' fragment mass distributions are "

@@ -9,6 +9,7 @@
 #include "core/util/Format.hpp"
 #include "dynamics/Fragments.hpp"
 #include "verification/model/SettingsSchema.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 
 namespace fs = std::filesystem;
 
@@ -105,19 +106,34 @@ void FragmentationRun::finish(const fs::path& out, const std::string& id, const 
   m.law_balance_error = worst_balance_;
   m.law_balance_breach_time = breach_time_;
   const Eigen::Matrix2Xd v = pieces.velocities(run_->dofs(), run_->velocity());
-  std::ostringstream f;
-  f << "fragment,mass,cells,x,y,vx,vy\n";
-  for (int i = 0; i < pieces.num_fragments(); ++i)
-    f << i << ',' << exact_text(pieces.mass(i)) << ',' << pieces.num_cells(i) << ','
-      << exact_text(pieces.centres()(0, i)) << ',' << exact_text(pieces.centres()(1, i)) << ','
-      << exact_text(v(0, i)) << ',' << exact_text(v(1, i)) << '\n';
+  ConvergenceTable f;  // fragments/<run>.csv: what each fragment is and where it goes
+  for (const char* column : {"fragment", "mass", "cells", "x", "y", "vx", "vy"})
+    f.declare_column(column,
+                     std::string_view(column) == "fragment" || std::string_view(column) == "cells"
+                         ? integer_style()
+                         : shortest_csv_style());
+  for (int i = 0; i < pieces.num_fragments(); ++i) {
+    f.start_row();
+    for (const auto& [column, value] : {std::pair{"fragment", double(i)},
+                                        {"mass", pieces.mass(i)},
+                                        {"cells", double(pieces.num_cells(i))},
+                                        {"x", pieces.centres()(0, i)},
+                                        {"y", pieces.centres()(1, i)},
+                                        {"vx", v(0, i)},
+                                        {"vy", v(1, i)}})
+      f.add_value(column, value);
+  }
   fs::create_directories(out / "fragments");
-  write_file_atomically(out / "fragments" / (id + ".csv"), f.str());
-  std::ostringstream c;
-  c << "step,edge\n";
-  for (const DynamicFracture::Event& e : fracture_->events()) c << e.step << ',' << e.edge << '\n';
+  write_file_atomically(out / "fragments" / (id + ".csv"), csv_text(f));
+  ConvergenceTable c;  // cracks/<run>.csv: the step at which each edge cracked
+  for (const char* column : {"step", "edge"}) c.declare_column(column, integer_style());
+  for (const DynamicFracture::Event& e : fracture_->events()) {
+    c.start_row();
+    c.add_value("step", static_cast<double>(e.step));
+    c.add_value("edge", e.edge);
+  }
   fs::create_directories(out / "cracks");
-  write_file_atomically(out / "cracks" / (id + ".csv"), c.str());
+  write_file_atomically(out / "cracks" / (id + ".csv"), csv_text(c));
 }
 
 }  // namespace vorodg

@@ -10,6 +10,7 @@
 #include "core/util/Errors.hpp"
 #include "dynamics/CrackHistory.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,28 +38,16 @@ std::vector<DynamicFracture::Event> read_events(const fs::path& file) {
   return events;
 }
 
-/// A JSON value as one CSV field (quoted: arrays hold commas).
-std::string csv_field(const std::string& value) {
-  std::string quoted = "\"";
-  for (char c : value) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
 }  // namespace
 
 void write_perturbation_report(const DynamicsScene& scene, const fs::path& out) {
   if (scene.variants.size() < 2 || scene.perturb_values.size() != scene.variants.size())
     throw InputError("perturbation report: expected a perturb scene with two or more values");
-  std::ostringstream csv, md;
-  csv << "variant,value,run,step,distance\n";
-  md << "# " << scene.name << ": sensitivity to " << scene.perturb_key << "\n\n"
-     << "Hamming distance of each run's crack state to the same run of `perturb-0` ("
-     << scene.perturb_key << " = " << scene.perturb_values[0]
-     << "), after every step at which either cracked (perturbation.csv).\n\n"
-     << "| variant | " << scene.perturb_key
-     << " | run | cracks (this, reference) | first step that differs | largest distance | final "
-        "distance |\n"
-     << "|---|---|---|---|---|---|---|\n";
+  ColumnStyle plain, quoted;  // the value is JSON text: quoted, since arrays hold commas
+  plain.csv_quoted = false;
+  ConvergenceTable steps, runs;  // perturbation.csv: every step; the report: every run
+  for (const char* name : {"variant", "value", "run", "step", "distance"})
+    steps.declare_column(name, std::string(name) == "value" ? quoted : plain);
   const fs::path reference = out / scene.variants[0].label / "cracks";
   for (std::size_t i = 1; i < scene.variants.size(); ++i) {
     const DynamicsScene& v = scene.variants[i];
@@ -71,15 +60,33 @@ void write_perturbation_report(const DynamicsScene& scene, const fs::path& out) 
       int largest = 0;
       for (const DistanceAtStep& d : history) {
         largest = std::max(largest, d.distance);
-        csv << v.label << ',' << csv_field(scene.perturb_values[i]) << ',' << id.id() << ','
-            << d.step << ',' << d.distance << '\n';
+        steps.start_row();
+        steps.add_text("variant", v.label);
+        steps.add_text("value", scene.perturb_values[i]);
+        steps.add_text("run", id.id());
+        steps.add_value("step", static_cast<double>(d.step), {}, integer_style());
+        steps.add_value("distance", d.distance, {}, integer_style());
         if (first < 0 && d.distance > 0) first = d.step;
       }
-      md << "| " << v.label << " | " << scene.perturb_values[i] << " | " << id.id() << " | "
-         << mine.size() << ", " << ref.size() << " | " << (first < 0 ? "-" : std::to_string(first))
-         << " | " << largest << " | " << (history.empty() ? 0 : history.back().distance) << " |\n";
+      runs.start_row();
+      runs.add_text("variant", v.label);
+      runs.add_text(scene.perturb_key, scene.perturb_values[i]);
+      runs.add_text("run", id.id());
+      runs.add_text("cracks (this, reference)",
+                    std::to_string(mine.size()) + ", " + std::to_string(ref.size()));
+      runs.add_text("first step that differs", first < 0 ? "-" : std::to_string(first));
+      runs.add_value("largest distance", largest, {}, integer_style());
+      runs.add_value("final distance", history.empty() ? 0 : history.back().distance, {},
+                     integer_style());
     }
   }
+  std::ostringstream csv, md;
+  steps.write_csv(csv, {.quote_names = false});
+  md << "# " << scene.name << ": sensitivity to " << scene.perturb_key << "\n\n"
+     << "Hamming distance of each run's crack state to the same run of `perturb-0` ("
+     << scene.perturb_key << " = " << scene.perturb_values[0]
+     << "), after every step at which either cracked (perturbation.csv).\n\n";
+  runs.write_markdown(md);
   write_file_atomically(out / "perturbation.csv", csv.str());
   write_file_atomically(out / "perturbation.md", md.str());
 }

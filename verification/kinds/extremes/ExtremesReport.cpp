@@ -10,6 +10,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
 #include "dg/DgElasticity.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 
 namespace vorodg {
 namespace {
@@ -120,10 +121,7 @@ namespace {
 using Worst = std::map<std::pair<std::string, std::string>, std::map<double, Verdict>>;
 
 std::string trust_table(const Worst& worst, json& trust) {
-  std::ostringstream md;
-  md << "| axis | formulation | trusted (every run ok) | nearest failure below | nearest failure "
-        "above |\n"
-     << "|---|---|---|---|---|\n";
+  ConvergenceTable t;
   auto describe = [](double value, const Verdict& v) {
     return fmt(value, 8) + ": " + v.level + ", " + v.reason;
   };
@@ -145,34 +143,81 @@ std::string trust_table(const Worst& worst, json& trust) {
         if (v.level != "ok" && value > trusted.front() && above == "-") above = describe(value, v);
       }
     }
-    md << "| " << key.first << " | " << key.second << " | " << range << " | " << below << " | "
-       << above << " |\n";
+    t.start_row();
+    t.add_text("axis", key.first);
+    t.add_text("formulation", key.second);
+    t.add_text("trusted (every run ok)", range);
+    t.add_text("nearest failure below", below);
+    t.add_text("nearest failure above", above);
     trust.push_back({{"axis", key.first},
                      {"formulation", key.second},
                      {"trusted", trusted},
                      {"nearest_failure_below", below},
                      {"nearest_failure_above", above}});
   }
+  std::ostringstream md;
+  t.write_markdown(md);
   return md.str();
 }
 
-std::string csv_field(std::string s) {
-  std::replace(s.begin(), s.end(), ',', ';');
-  std::replace(s.begin(), s.end(), '"', '\'');
-  return s;
+/// The columns of extremes.csv, in order, with their digits.
+ConvergenceTable extremes_table() {
+  ColumnStyle plain;
+  plain.csv_quoted = false;
+  const auto digits = [&](int n) {
+    ColumnStyle s = plain;
+    s.csv_precision = n;
+    return s;
+  };
+  ConvergenceTable t;
+  for (const auto& [name, style] :
+       std::vector<std::pair<std::string, ColumnStyle>>{{"sweep", plain},
+                                                        {"axis", plain},
+                                                        {"value", digits(12)},
+                                                        {"formulation", plain},
+                                                        {"variant", plain},
+                                                        {"mesh", plain},
+                                                        {"level", plain},
+                                                        {"realization", plain},
+                                                        {"nu", digits(12)},
+                                                        {"kp", digits(6)},
+                                                        {"h_avg", digits(6)},
+                                                        {"l2_error", digits(6)},
+                                                        {"rcond", digits(3)},
+                                                        {"iterations", plain},
+                                                        {"stop_reason", plain},
+                                                        {"verdict", plain},
+                                                        {"reason", ColumnStyle{}}})
+    t.declare_column(name, style);
+  return t;
 }
 
 /// One run's row of extremes.csv and its entry of extremes.json.
 void add_case(const Scene& sweep, const RunRecord& r, const Verdict& v, double value,
-              std::ostringstream& csv, json& cases) {
+              ConvergenceTable& csv, json& cases) {
   const StudyRun& run = r.run;
   const auto& m = r.metrics;
-  csv << sweep.name << "," << sweep.axis << "," << fmt(value, 12) << "," << run.formulation_label
-      << "," << run.variant << "," << run.mesh_label << "," << run.level << "," << run.realization
-      << "," << fmt(run.nu, 12) << "," << fmt(run.kp.value_or(0.0), 6) << ","
-      << fmt(m ? m->h_avg : 0.0, 6) << "," << fmt(l2_error(r), 6) << ","
-      << fmt(m ? m->rcond : std::nan(""), 3) << "," << (m ? m->iterations() : 0) << ","
-      << (m ? m->stop_reason() : "") << "," << v.level << ",\"" << csv_field(v.reason) << "\"\n";
+  std::string reason = v.reason;  // one quoted cell: no commas or double quotes inside
+  std::replace(reason.begin(), reason.end(), ',', ';');
+  std::replace(reason.begin(), reason.end(), '"', '\'');
+  csv.start_row();
+  csv.add_text("sweep", sweep.name);
+  csv.add_text("axis", sweep.axis);
+  csv.add_value("value", value);
+  csv.add_text("formulation", run.formulation_label);
+  csv.add_text("variant", run.variant);
+  csv.add_text("mesh", run.mesh_label);
+  csv.add_text("level", std::to_string(run.level));
+  csv.add_text("realization", std::to_string(run.realization));
+  csv.add_value("nu", run.nu);
+  csv.add_value("kp", run.kp.value_or(0.0));
+  csv.add_value("h_avg", m ? m->h_avg : 0.0);
+  csv.add_value("l2_error", l2_error(r));
+  csv.add_value("rcond", m ? m->rcond : std::nan(""));
+  csv.add_text("iterations", std::to_string(m ? m->iterations() : 0));
+  csv.add_text("stop_reason", m ? m->stop_reason() : "");
+  csv.add_text("verdict", v.level);
+  csv.add_text("reason", reason);
   cases.push_back({{"sweep", sweep.name},
                    {"axis", sweep.axis},
                    {"value", value},
@@ -190,9 +235,7 @@ void add_case(const Scene& sweep, const RunRecord& r, const Verdict& v, double v
 int write_extremes_report(const Scene& scene, const std::vector<std::vector<RunRecord>>& results,
                           const std::filesystem::path& out, std::string& markdown) {
   static const std::map<std::string, int> rank = {{"ok", 0}, {"degraded", 1}, {"broken", 2}};
-  std::ostringstream csv;
-  csv << "sweep,axis,value,formulation,variant,mesh,level,realization,nu,kp,h_avg,l2_error,rcond,"
-         "iterations,stop_reason,verdict,reason\n";
+  ConvergenceTable csv = extremes_table();
   json cases = json::array();
   Worst worst;  // (axis, formulation) -> value -> the worst verdict there
   int broken = 0;
@@ -226,7 +269,9 @@ int write_extremes_report(const Scene& scene, const std::vector<std::vector<RunR
         "report is "
         "in its subfolder.\n\n";
   const json summary = {{"scene", scene.name}, {"trust", trust}, {"cases", cases}};
-  write_file_atomically(out / "extremes.csv", csv.str());
+  std::ostringstream csv_text;
+  csv.write_csv(csv_text, {.quote_names = false});
+  write_file_atomically(out / "extremes.csv", csv_text.str());
   write_file_atomically(out / "extremes.json", summary.dump(1) + "\n");
   markdown = md.str();
   std::cout << "\n" << table;

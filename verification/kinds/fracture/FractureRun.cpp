@@ -15,6 +15,7 @@
 #include "core/util/Stopwatch.hpp"
 #include "dg/CohesiveFracture.hpp"
 #include "dg/QuasiStaticPath.hpp"
+#include "verification/report/ConvergenceTable.hpp"
 
 namespace fs = std::filesystem;
 
@@ -58,8 +59,11 @@ void write_deformed(const fs::path& path, const CohesiveFracture& model, const E
 
 /// Faces past the strength (softening or open; not the notch) as segments x0,y0,x1,y1,state.
 std::string crack_faces(const CohesiveFracture& model, const std::vector<InterfacePoint>& points) {
-  std::ostringstream csv;
-  csv << "x0,y0,x1,y1,state\n";
+  ColumnStyle number, text;
+  number.csv_precision = 12, text.csv_quoted = false;
+  ConvergenceTable t;
+  for (const char* c : {"x0", "y0", "x1", "y1"}) t.declare_column(c, number);
+  t.declare_column("state", text);
   const CohesiveLaw& law = model.interfaces().law();
   for (int p = 0; p + 1 < static_cast<int>(points.size()); p += 2) {
     const Interface& f = model.interfaces().face(p);
@@ -69,11 +73,14 @@ std::string crack_faces(const CohesiveFracture& model, const std::vector<Interfa
       cracked |= law.dissipated_energy(points[q].history.max_opening) > 0.0;
       open &= points[q].state == PointState::open;
     }
-    if (cracked)
-      csv << fmt(f.a.x(), 12) << ',' << fmt(f.a.y(), 12) << ',' << fmt(f.b.x(), 12) << ','
-          << fmt(f.b.y(), 12) << ',' << (open ? "open" : "cohesive") << '\n';
+    if (!cracked) continue;
+    t.start_row();
+    for (const auto& [column, value] :
+         {std::pair{"x0", f.a.x()}, {"y0", f.a.y()}, {"x1", f.b.x()}, {"y1", f.b.y()}})
+      t.add_value(column, value);
+    t.add_text("state", open ? "open" : "cohesive");
   }
-  return csv.str();
+  return csv_text(t);
 }
 
 GeneratedMesh run_mesh(const FractureScene& scene, const EnsembleRunId& run) {

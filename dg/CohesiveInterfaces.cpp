@@ -5,6 +5,7 @@
 
 #include "core/quadrature/TriangleRule.hpp"
 #include "dg/SeriesShearLaw.hpp"
+#include "fracture/FacePoint.hpp"
 
 namespace vorodg {
 namespace {
@@ -117,15 +118,13 @@ void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, Inte
 void CohesiveInterfaces::face_law(int p, const Eigen::Vector2d& g, InterfacePoint& point,
                                   Eigen::Vector2d& tau, Eigen::Matrix2d& C) const {
   const double eps = penalty_.eps(p / 2);
-  tau.setZero();
-  C.setZero();
-  if (point.state == PointState::cohesive) cohesive_law(eps, g, point, tau, C);
+  FacePointResponse r;
+  if (point.state == PointState::cohesive) cohesive_law(eps, g, point, r.traction, r.tangent);
   if (point.state == PointState::open)
-    C += kOpenTangentFraction * eps * Eigen::Matrix2d::Identity();
-  if (g[0] < 0.0) {  // overclosure: the contact penalty
-    tau[0] += eps * g[0];
-    C(0, 0) += eps;
-  }
+    r.tangent += kOpenTangentFraction * eps * Eigen::Matrix2d::Identity();
+  add_closure(eps, g[0], r);  // overclosure: the contact penalty
+  tau = r.traction;
+  C = r.tangent;
 }
 
 Eigen::MatrixXd CohesiveInterfaces::intact_block(int p) const {
@@ -188,7 +187,7 @@ InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
     const double dmax = points[p].history.max_opening;
     if (law_.dissipated_energy(dmax) > 0.0) e.crack_length += w;
     const Eigen::Vector2d d = g - points[p].offset;
-    const double closure = 0.5 * eps * std::pow(std::min(g[0], 0.0), 2);
+    const double closure = closure_energy(eps, g[0]);
     if (points[p].state == PointState::cohesive && !law_.intrinsic() && dmax == 0.0) {
       // Inserted, not yet opened: the sticking branch's potential (see cohesive_law).
       const double dn = std::min(d[0], 0.0);

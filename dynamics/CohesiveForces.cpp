@@ -6,6 +6,7 @@
 
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
+#include "fracture/FacePoint.hpp"
 
 namespace vorodg {
 namespace {
@@ -151,8 +152,8 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
       QuadraturePoint& p = face.points[q];
       const Eigen::Vector2d d(g.dot(face.n), g.dot(face.t));
-      Eigen::Vector2d tau = law.respond(d, p.history).traction;
-      if (d[0] < 0.0) tau[0] += closure_stiffness() * d[0];  // overclosure
+      const Eigen::Vector2d tau =
+          face_point_response(law, d, closure_stiffness(), p.history).traction;
       work -= 0.5 * w * (p.traction + tau).dot(d - p.opening);
       p.opening = d;
       p.traction = tau;
@@ -216,11 +217,6 @@ double CohesiveForces::dissipated_energy() const {
   return sum;
 }
 
-double CohesiveForces::closure_energy(const Eigen::Vector2d& opening) const {
-  const double overlap = std::min(opening[0], 0.0);
-  return 0.5 * closure_stiffness() * overlap * overlap;
-}
-
 double CohesiveForces::stored_energy() const {
   const SegmentRule& rule = gauss2_segment();
   double sum = 0.0;
@@ -228,8 +224,8 @@ double CohesiveForces::stored_energy() const {
     for (int q = 0; q < 2; ++q) {
       const Face& face = faces_[slot];
       sum += rule.weights[q] * face.length *
-             (law_of(slot).stored_energy(face.points[q].opening, face.points[q].history) +
-              closure_energy(face.points[q].opening));
+             face_point_stored_energy(law_of(slot), face.points[q].opening, closure_stiffness(),
+                                      face.points[q].history);
     }
   return sum;
 }

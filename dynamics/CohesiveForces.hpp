@@ -1,6 +1,7 @@
 #pragma once
 // Cohesive tractions on the cracked edges of explicit dynamics (report sections 4 and 6): the
-// same CohesiveLaw as quasi-static fracture, acting between the nodes a crack has split.
+// same face kernel as quasi-static fracture (fracture/FacePoint: the CohesiveLaw with the closure
+// penalty), acting between the nodes a crack has split.
 //
 // Geometry. Edge e runs v0 -> v1 as cell0 traverses it; its normal n points from cell0 to
 // cell1 and its tangent is t = (v1 - v0) / L. Cell displacements are linear along an edge
@@ -138,8 +139,6 @@ class CohesiveForces {
   /// Spreads point q's traction tau over the face's four bound nodes.
   static void add_point_force(const Face& face, int q, const Eigen::Vector2d& tau,
                               Eigen::VectorXd& f);
-  /// The overclosure penalty's energy per unit area at an opening (normal, tangential).
-  double closure_energy(const Eigen::Vector2d& opening) const;
   /// The penalty against overclosure: a fraction of K0. At K0 itself a closing face is a
   /// spring whose contact lasts about one step at the stable step, and the switching of such a
   /// spring on and off feeds energy in (measured: half the initial energy on a stretched strip

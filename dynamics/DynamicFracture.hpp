@@ -23,7 +23,8 @@
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/CohesiveForces.hpp"
 #include "dynamics/CrackInsertion.hpp"
-#include "dynamics/CrackState.hpp"
+#include "fracture/CrackHistory.hpp"
+#include "fracture/CrackState.hpp"
 
 namespace vorodg {
 
@@ -38,10 +39,7 @@ class DynamicFracture {
   /// One step of the integrator, then the insertion check; returns the edges cracked after it.
   int step(int threads);
 
-  struct Event {
-    long step;
-    int edge;
-  };
+  using Event = CrackEvent;
   /// Every crack in the order it formed (the step after which it did).
   const std::vector<Event>& events() const { return events_; }
   /// Per mesh edge: 1 if cracked.

@@ -1,4 +1,4 @@
-// CrackGraph (dynamics/CrackGraph):
+// CrackGraph (fracture/CrackGraph):
 //   - quad strip [0,4] x [0,1] (h = 0.25): k full vertical cross-sections are k components,
 //     each touching the bottom and the top (they span the body vertically, not horizontally);
 //     a cross-section cut only up to y = 0.5 touches the bottom only and does not span;
@@ -12,7 +12,7 @@
 
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
-#include "dynamics/CrackGraph.hpp"
+#include "fracture/CrackGraph.hpp"
 
 namespace vorodg {
 namespace {

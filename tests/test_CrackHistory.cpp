@@ -1,4 +1,4 @@
-// The Hamming distance between two runs' crack histories (dynamics/CrackHistory): a worked
+// The Hamming distance between two runs' crack histories (fracture/CrackHistory): a worked
 // example by hand, identical runs at distance 0 throughout, agreement with a brute-force count of
 // the symmetric difference on random histories (fixed seed), and refusal of an edge that cracks
 // twice.
@@ -8,12 +8,12 @@
 #include <set>
 
 #include "core/util/Errors.hpp"
-#include "dynamics/CrackHistory.hpp"
+#include "fracture/CrackHistory.hpp"
 
 namespace vorodg {
 namespace {
 
-using Events = std::vector<DynamicFracture::Event>;
+using Events = std::vector<CrackEvent>;
 
 TEST(CrackHistory, AWorkedExample) {
   const Events a{{1, 5}, {3, 7}, {3, 8}}, b{{1, 5}, {2, 7}, {4, 9}};

@@ -1,4 +1,4 @@
-// CrackState (dynamics/CrackState) on an rcp mesh of [0,2] x [0,1] (d = 0.1, seed 17):
+// CrackState (fracture/CrackState) on an rcp mesh of [0,2] x [0,1] (d = 0.1, seed 17):
 //   - the Hamming distance is a metric on random states (seed 5): symmetric, zero iff the
 //     states are equal, triangle inequality over every triple;
 //   - the opening distance is zero iff the openings are equal, symmetric, obeys the triangle
@@ -14,7 +14,7 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Random.hpp"
-#include "dynamics/CrackState.hpp"
+#include "fracture/CrackState.hpp"
 
 namespace vorodg {
 namespace {

@@ -30,7 +30,7 @@
 
 #include "core/util/Errors.hpp"
 #include "dynamics/DynamicFracture.hpp"
-#include "dynamics/Fragments.hpp"
+#include "fracture/Fragments.hpp"
 #include "support/DynamicsModel.hpp"
 
 namespace vorodg {
@@ -60,7 +60,7 @@ struct Outcome {
       : dofs(std::move(map)), broken_state(std::move(broken_edges)) {}
   SplitDofMap dofs;
   CrackState broken_state;
-  std::vector<DynamicFracture::Event> events;
+  std::vector<CrackEvent> events;
   Eigen::VectorXd u, v;
   StepRecord record;
   double dissipated = 0.0, stored = 0.0, broken_error = 0.0;
@@ -131,7 +131,7 @@ Outcome stretch(const Strip& strip, double safety, int threads) {
 TEST(DynamicFracture, BrittleStripFragmentsKeepTheirVelocity) {
   const Strip strip(0.01, 1e3, 1e7);
   const Outcome out = stretch(strip, 0.9, 1);
-  const Fragments fragments(out.broken_state, strip.model.mass);
+  const Fragments fragments(out.broken_state, strip.model.mass.pair_masses());
   const Eigen::Matrix2Xd velocity = fragments.velocities(out.dofs, out.v);
   // Fragments within the release length l = c t_c of an end (c = sqrt(E / rho), t_c the time
   // the stress takes to reach the strength) are left out: before anything broke, the unloading

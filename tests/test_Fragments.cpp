@@ -1,4 +1,4 @@
-// Fragments (dynamics/Fragments) with lumped masses (dynamics/LumpedMass), rho = 7800:
+// Fragments (fracture/Fragments) with lumped masses (dynamics/LumpedMass), rho = 7800:
 //   - a quad strip [0,4] x [0,1] (h = 0.25) with every edge of k vertical cross-sections cracked
 //     falls into k + 1 fragments whose masses are the column areas x rho, to 1e-12 relative,
 //     with lumped masses and with density x area;
@@ -19,7 +19,8 @@
 #include "core/element/ElementTable.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
-#include "dynamics/Fragments.hpp"
+#include "dynamics/LumpedMass.hpp"
+#include "fracture/Fragments.hpp"
 
 namespace vorodg {
 namespace {
@@ -119,7 +120,8 @@ TEST(Fragments, CrossSectionsMakeColumns) {
     for (int i = 1; i <= k; ++i) xs.push_back(4.0 * i / (k + 1));
     const CrackState cracks(b.mesh, cross_sections(b.mesh, xs));
     const double column = kDensity * 4.0 / (k + 1);
-    for (const Fragments& f : {Fragments(cracks, *b.mass), Fragments(cracks, kDensity)}) {
+    for (const Fragments& f :
+         {Fragments(cracks, b.mass->pair_masses()), Fragments(cracks, kDensity)}) {
       ASSERT_EQ(f.num_fragments(), k + 1);
       for (int i = 0; i < f.num_fragments(); ++i) {
         EXPECT_NEAR(f.mass(i), column, 1e-12 * column) << "k " << k << " fragment " << i;
@@ -133,13 +135,14 @@ TEST(Fragments, CrossSectionsMakeColumns) {
 
 TEST(Fragments, TotalMassIsConserved) {
   for (const Body* b : {&strip(), &rcp()}) {
-    const Fragments one(CrackState(b->mesh, std::vector<char>(b->mesh.num_edges(), 0)), *b->mass);
+    const Fragments one(CrackState(b->mesh, std::vector<char>(b->mesh.num_edges(), 0)),
+                        b->mass->pair_masses());
     ASSERT_EQ(one.num_fragments(), 1);
     EXPECT_EQ(one.total_mass(), b->mass->total());
     EXPECT_EQ(one.mass(0), b->mass->total());
     for (const auto& cut :
          {centroid_cuts(b->mesh, {0.5, 1.0, 1.5}), std::vector<char>(b->mesh.num_edges(), 1)}) {
-      const Fragments f(CrackState(b->mesh, cut), *b->mass);
+      const Fragments f(CrackState(b->mesh, cut), b->mass->pair_masses());
       EXPECT_EQ(f.total_mass(), b->mass->total());
       const double error = std::abs(f.masses().sum() - f.total_mass()) / f.total_mass();
       std::printf("%5d fragments of %5d cells: |sum of masses - total| / total = %.2e\n",
@@ -152,7 +155,7 @@ TEST(Fragments, TotalMassIsConserved) {
 TEST(Fragments, LumpedCentresAreCentroids) {
   for (const Body* b : {&strip(), &rcp()}) {
     const CrackState cracks(b->mesh, centroid_cuts(b->mesh, {0.7, 1.4}));
-    const Fragments lumped(cracks, *b->mass), areas(cracks, kDensity);
+    const Fragments lumped(cracks, b->mass->pair_masses()), areas(cracks, kDensity);
     ASSERT_EQ(lumped.num_fragments(), 3);
     const Eigen::Matrix2Xd exact = centroids(b->mesh, lumped);
     const double error = (lumped.centres() - exact).cwiseAbs().maxCoeff();
@@ -170,7 +173,7 @@ TEST(Fragments, RigidAndLinearVelocities) {
     const PolygonMesh& mesh = b->mesh;
     const Point mid = 0.5 * (mesh.domain().lo() + mesh.domain().hi());
     const std::vector<char> cut = centroid_cuts(mesh, {0.7, 1.4});
-    const Fragments f(CrackState(mesh, cut), *b->mass);
+    const Fragments f(CrackState(mesh, cut), b->mass->pair_masses());
     const Eigen::Matrix2Xd exact = centroids(mesh, f);
     for (const SplitDofMap& dofs : {SplitDofMap::continuous(mesh), SplitDofMap(mesh, negated(cut)),
                                     SplitDofMap::discontinuous(mesh)}) {
@@ -195,7 +198,8 @@ TEST(Fragments, RigidAndLinearVelocities) {
 
 TEST(Fragments, MassFractionsAndTheirCdf) {
   const Body& b = strip();
-  const Fragments f(CrackState(b.mesh, cross_sections(b.mesh, {1.0, 1.5, 3.0})), *b.mass);
+  const Fragments f(CrackState(b.mesh, cross_sections(b.mesh, {1.0, 1.5, 3.0})),
+                    b.mass->pair_masses());
   ASSERT_EQ(f.num_fragments(), 4);
   const Eigen::Vector4d expected(0.125, 0.25, 0.25, 0.375);
   const Eigen::VectorXd sorted = f.sorted_mass_fractions();
@@ -214,10 +218,11 @@ TEST(Fragments, RefusesBadInput) {
   EXPECT_THROW(Fragments(none, 0.0), InputError);
   EXPECT_THROW(Fragments(none, kDensity).velocities(dofs, Eigen::VectorXd::Zero(dofs.num_dofs())),
                InputError);
-  EXPECT_THROW(Fragments(none, *b.mass).velocities(dofs, Eigen::VectorXd::Zero(3)), InputError);
-  EXPECT_THROW(
-      Fragments(CrackState(rcp().mesh, std::vector<char>(rcp().mesh.num_edges(), 0)), *b.mass),
-      InputError);
+  EXPECT_THROW(Fragments(none, b.mass->pair_masses()).velocities(dofs, Eigen::VectorXd::Zero(3)),
+               InputError);
+  EXPECT_THROW(Fragments(CrackState(rcp().mesh, std::vector<char>(rcp().mesh.num_edges(), 0)),
+                         b.mass->pair_masses()),
+               InputError);
 }
 
 }  // namespace

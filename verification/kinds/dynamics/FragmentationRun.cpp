@@ -7,7 +7,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "dynamics/Fragments.hpp"
+#include "fracture/Fragments.hpp"
 #include "verification/model/SettingsSchema.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 
@@ -81,7 +81,7 @@ void FragmentationRun::check_balance(const StepRecord& r) {
 }
 
 std::vector<VtuField> FragmentationRun::cell_fields(const LumpedMass& mass) const {
-  const Fragments pieces(fracture_->broken_state(), mass);
+  const Fragments pieces(fracture_->broken_state(), mass.pair_masses());
   VtuField fragment{"fragment", 1, {}}, cracked{"cracked_edges", 1, {}};
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     fragment.values.push_back(pieces.fragment(c));
@@ -94,7 +94,7 @@ std::vector<VtuField> FragmentationRun::cell_fields(const LumpedMass& mass) cons
 
 void FragmentationRun::finish(const fs::path& out, const std::string& id, const LumpedMass& mass,
                               DynamicsMeasures& m) const {
-  const Fragments pieces(fracture_->broken_state(), mass);
+  const Fragments pieces(fracture_->broken_state(), mass.pair_masses());
   m.fragments = pieces.num_fragments();
   m.max_fragment_mass_fraction = pieces.largest_mass_fraction();
   m.dissipated_energy = cohesive_->dissipated_energy();
@@ -127,7 +127,7 @@ void FragmentationRun::finish(const fs::path& out, const std::string& id, const 
   write_file_atomically(out / "fragments" / (id + ".csv"), csv_text(f));
   ConvergenceTable c;  // cracks/<run>.csv: the step at which each edge cracked
   for (const char* column : {"step", "edge"}) c.declare_column(column, integer_style());
-  for (const DynamicFracture::Event& e : fracture_->events()) {
+  for (const CrackEvent& e : fracture_->events()) {
     c.start_row();
     c.add_value("step", static_cast<double>(e.step));
     c.add_value("edge", e.edge);

@@ -8,7 +8,7 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
-#include "dynamics/CrackHistory.hpp"
+#include "fracture/CrackHistory.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 
@@ -18,17 +18,17 @@ namespace vorodg {
 namespace {
 
 /// A run's crack events from its cracks/<id>.csv (header step,edge).
-std::vector<DynamicFracture::Event> read_events(const fs::path& file) {
+std::vector<CrackEvent> read_events(const fs::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(file.string() + ": cannot read (did the run finish?)");
   std::string line;
   std::getline(in, line);
   if (line != "step,edge")
     throw InputError(file.string() + ": expected the header step,edge, found '" + line + "'");
-  std::vector<DynamicFracture::Event> events;
+  std::vector<CrackEvent> events;
   for (int row = 2; std::getline(in, line); ++row) {
     std::istringstream fields(line);
-    DynamicFracture::Event e{};
+    CrackEvent e{};
     char comma = 0;
     if (!(fields >> e.step >> comma >> e.edge) || comma != ',' || e.step < 0 || e.edge < 0)
       throw InputError(file.string() + ":" + std::to_string(row) + ": expected step,edge, found '" +

@@ -2,7 +2,7 @@
 // The report of a `perturb` study (report section 7, Figures 21 and 22): every run of every
 // variant perturb-<i> against the same run (same mesh, level, realization) of perturb-0, by the
 // Hamming distance of their crack states after every step at which either cracked
-// (dynamics/CrackHistory). Written to DIR/perturbation.csv (variant, value, run, step, distance)
+// (fracture/CrackHistory). Written to DIR/perturbation.csv (variant, value, run, step, distance)
 // and DIR/perturbation.md (per variant and run: the final distance and the first step at which
 // the states differ), both atomically, from the variants' cracks/<run id>.csv.
 #include <filesystem>

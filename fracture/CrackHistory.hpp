@@ -6,9 +6,13 @@
 // so runs can be compared after they finished, without their meshes.
 #include <vector>
 
-#include "dynamics/DynamicFracture.hpp"
-
 namespace vorodg {
+
+/// A crack formed: edge `edge` cracked after step `step`.
+struct CrackEvent {
+  long step;
+  int edge;
+};
 
 struct DistanceAtStep {
   long step;
@@ -18,7 +22,7 @@ struct DistanceAtStep {
 /// The Hamming distance between the crack states of runs `a` and `b` after every step at which
 /// either gained a crack, in step order (one entry per such step; empty if neither cracked).
 /// Events need not be sorted. An edge listed twice in one run is refused with an InputError.
-std::vector<DistanceAtStep> hamming_history(const std::vector<DynamicFracture::Event>& a,
-                                            const std::vector<DynamicFracture::Event>& b);
+std::vector<DistanceAtStep> hamming_history(const std::vector<CrackEvent>& a,
+                                            const std::vector<CrackEvent>& b);
 
 }  // namespace vorodg

@@ -1,4 +1,4 @@
-#include "dynamics/Fragments.hpp"
+#include "fracture/Fragments.hpp"
 
 #include <algorithm>
 #include <string>
@@ -8,13 +8,13 @@
 
 namespace vorodg {
 
-Fragments::Fragments(const CrackState& cracks, const LumpedMass& mass)
-    : mesh_(&cracks.mesh()), lumped_(&mass) {
-  if (mass.num_pairs() != mesh_->offsets().back())
-    throw InputError("fragments: lumped masses of " + std::to_string(mass.num_pairs()) +
+Fragments::Fragments(const CrackState& cracks, const std::vector<double>& pair_masses)
+    : mesh_(&cracks.mesh()), lumped_(&pair_masses) {
+  if (static_cast<int>(pair_masses.size()) != mesh_->offsets().back())
+    throw InputError("fragments: lumped masses of " + std::to_string(pair_masses.size()) +
                      " pairs for a mesh of " + std::to_string(mesh_->offsets().back()));
   label_cells(cracks);
-  accumulate_lumped(mass);
+  accumulate_lumped();
 }
 
 Fragments::Fragments(const CrackState& cracks, double density) : mesh_(&cracks.mesh()) {
@@ -36,15 +36,20 @@ void Fragments::label_cells(const CrackState& cracks) {
   centre_ = Eigen::Matrix2Xd::Zero(2, num_fragments_);
 }
 
-void Fragments::accumulate_lumped(const LumpedMass& mass) {
-  // One pass in pair order: every fragment's sums, and the total, in the order LumpedMass uses.
+double Fragments::pair_mass(int c, int k) const {
+  return (*lumped_)[mesh_->offsets()[c] + k];
+}
+
+void Fragments::accumulate_lumped() {
+  // One pass in pair order: every fragment's sums, and the total, in the order the lumped
+  // masses' own total is summed.
   for (int c = 0; c < mesh_->num_cells(); ++c) {
     const auto loop = mesh_->cell_vertices(c);
-    const auto m = mass.cell(c);
     for (std::size_t k = 0; k < loop.size(); ++k) {
-      mass_[fragment_[c]] += m[k];
-      centre_.col(fragment_[c]) += m[k] * mesh_->vertex(loop[k]);
-      total_ += m[k];
+      const double m = pair_mass(c, static_cast<int>(k));
+      mass_[fragment_[c]] += m;
+      centre_.col(fragment_[c]) += m * mesh_->vertex(loop[k]);
+      total_ += m;
     }
   }
   for (int f = 0; f < num_fragments_; ++f) centre_.col(f) /= mass_[f];
@@ -66,11 +71,9 @@ Eigen::Matrix2Xd Fragments::velocities(const SplitDofMap& dofs, const Eigen::Vec
     throw InputError("fragments: " + std::to_string(v.size()) + " velocity entries for a map of " +
                      std::to_string(dofs.num_dofs()) + " DOFs");
   Eigen::Matrix2Xd momentum = Eigen::Matrix2Xd::Zero(2, num_fragments_);
-  for (int c = 0; c < mesh_->num_cells(); ++c) {
-    const auto m = lumped_->cell(c);
+  for (int c = 0; c < mesh_->num_cells(); ++c)
     for (int k = 0; k < mesh_->cell_size(c); ++k)
-      momentum.col(fragment_[c]) += m[k] * v.segment<2>(2 * dofs.node(c, k));
-  }
+      momentum.col(fragment_[c]) += pair_mass(c, k) * v.segment<2>(2 * dofs.node(c, k));
   for (int f = 0; f < num_fragments_; ++f) momentum.col(f) /= mass_[f];
   return momentum;
 }

@@ -1,4 +1,4 @@
-#include "dynamics/CrackGraph.hpp"
+#include "fracture/CrackGraph.hpp"
 
 #include "core/util/Errors.hpp"
 #include "core/util/UnionFind.hpp"

@@ -1,4 +1,4 @@
-#include "dynamics/CrackState.hpp"
+#include "fracture/CrackState.hpp"
 
 #include <cmath>
 #include <string>

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/geometry/Rectangle.hpp"
-#include "dynamics/CrackState.hpp"
+#include "fracture/CrackState.hpp"
 
 namespace vorodg {
 

@@ -20,15 +20,15 @@
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
-#include "dynamics/CrackState.hpp"
-#include "dynamics/LumpedMass.hpp"
+#include "fracture/CrackState.hpp"
 
 namespace vorodg {
 
 class Fragments {
  public:
-  /// Masses from `mass` (lumped masses of the crack state's mesh; must outlive this object).
-  Fragments(const CrackState& cracks, const LumpedMass& mass);
+  /// Masses from the lumped mass of every (cell, vertex) pair of the crack state's mesh, in its
+  /// pair order (LumpedMass::pair_masses(); must outlive this object).
+  Fragments(const CrackState& cracks, const std::vector<double>& pair_masses);
   /// Masses as density x cell area (no velocities). Throws InputError unless density > 0.
   Fragments(const CrackState& cracks, double density);
 
@@ -62,11 +62,12 @@ class Fragments {
 
  private:
   void label_cells(const CrackState& cracks);
-  void accumulate_lumped(const LumpedMass& mass);
+  void accumulate_lumped();
+  double pair_mass(int c, int k) const;
   void accumulate_areas(double density);
 
   const PolygonMesh* mesh_;
-  const LumpedMass* lumped_ = nullptr;
+  const std::vector<double>* lumped_ = nullptr;  // per pair; null: masses from areas
   std::vector<int> fragment_;
   int num_fragments_ = 0;
   std::vector<int> cells_;

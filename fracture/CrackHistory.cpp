@@ -1,4 +1,4 @@
-#include "dynamics/CrackHistory.hpp"
+#include "fracture/CrackHistory.hpp"
 
 #include <algorithm>
 #include <string>
@@ -10,10 +10,10 @@ namespace vorodg {
 namespace {
 
 /// Per edge, the step at which the run cracked it; a second event on one edge is refused.
-std::unordered_map<int, long> crack_steps(const std::vector<DynamicFracture::Event>& events,
+std::unordered_map<int, long> crack_steps(const std::vector<CrackEvent>& events,
                                           const char* which) {
   std::unordered_map<int, long> steps;
-  for (const DynamicFracture::Event& e : events)
+  for (const CrackEvent& e : events)
     if (!steps.emplace(e.edge, e.step).second)
       throw InputError(std::string("crack history of run ") + which + ": edge " +
                        std::to_string(e.edge) + " cracks twice");
@@ -22,8 +22,8 @@ std::unordered_map<int, long> crack_steps(const std::vector<DynamicFracture::Eve
 
 }  // namespace
 
-std::vector<DistanceAtStep> hamming_history(const std::vector<DynamicFracture::Event>& a,
-                                            const std::vector<DynamicFracture::Event>& b) {
+std::vector<DistanceAtStep> hamming_history(const std::vector<CrackEvent>& a,
+                                            const std::vector<CrackEvent>& b) {
   const std::unordered_map<int, long> in_a = crack_steps(a, "a"), in_b = crack_steps(b, "b");
   // An edge cracked in one run at step s and in the other at step t (or never) differs over
   // [min(s, t), max(s, t)): +1 at the first, -1 at the second.

@@ -1,0 +1,78 @@
+// The crack-face kernel (fracture/FacePoint), which dg and dynamics share:
+//   - the closure penalty acts on overclosure only: k g_n on the normal traction and k on the
+//     normal tangent where g_n < 0, nothing where the face is open; its energy k g_n^2 / 2 has
+//     the traction as its derivative (central differences, 1e-7 relative);
+//   - an intrinsic law's point is the law plus the closure: on the elastic branch the stored
+//     energy's gradient is the traction (1e-7 relative), the tangent is K0 diag(1, beta^2) plus
+//     k on the normal in closure, and loading past the peak advances the history while the
+//     energy stays the unloading line's.
+#include <gtest/gtest.h>
+
+#include "fracture/FacePoint.hpp"
+
+namespace vorodg {
+namespace {
+
+CohesiveLaw intrinsic_law() {
+  CohesiveParameters p;
+  p.strength = 3e6;
+  p.fracture_energy = 100.0;
+  p.initial_stiffness = 1e12;
+  p.shear_factor = 0.5;
+  return CohesiveLaw(p);
+}
+
+TEST(FacePoint, ClosureActsOnOverclosureOnly) {
+  const double k = 2e11;
+  FacePointResponse open, closed;
+  add_closure(k, 1e-6, open);
+  EXPECT_EQ(open.traction, Eigen::Vector2d::Zero());
+  EXPECT_EQ(open.tangent, Eigen::Matrix2d::Zero());
+  add_closure(k, -1e-6, closed);
+  EXPECT_EQ(closed.traction[0], -k * 1e-6);
+  EXPECT_EQ(closed.tangent(0, 0), k);
+  EXPECT_EQ(closed.traction[1], 0.0);
+  EXPECT_EQ(closure_energy(k, 1e-6), 0.0);
+  const double g = -3e-6, h = 1e-10;
+  const double slope = (closure_energy(k, g + h) - closure_energy(k, g - h)) / (2 * h);
+  EXPECT_NEAR(slope, k * g, 1e-7 * std::abs(k * g));
+}
+
+TEST(FacePoint, AnIntrinsicPointIsTheLawPlusTheClosure) {
+  const CohesiveLaw law = intrinsic_law();
+  const double k = 0.1 * law.parameters().initial_stiffness;
+  const Eigen::Vector2d d(-1e-7, 2e-7);  // closing and sliding, below the peak
+  CohesiveLaw::State history, alone;
+  const FacePointResponse r = face_point_response(law, d, k, history);
+  const CohesiveLaw::Response l = law.respond(d, alone);
+  EXPECT_EQ(r.traction[0], l.traction[0] + k * d[0]);
+  EXPECT_EQ(r.traction[1], l.traction[1]);
+  EXPECT_EQ(r.tangent(0, 0), l.tangent(0, 0) + k);
+  for (int i = 0; i < 2; ++i) {  // the stored energy's gradient is the traction
+    const double h = 1e-12;
+    Eigen::Vector2d up = d, down = d;
+    up[i] += h, down[i] -= h;
+    const double slope = (face_point_stored_energy(law, up, k, history) -
+                          face_point_stored_energy(law, down, k, history)) /
+                         (2 * h);
+    EXPECT_NEAR(slope, r.traction[i], 1e-6 * r.traction.norm()) << i;
+  }
+}
+
+TEST(FacePoint, LoadingPastThePeakAdvancesTheHistory) {
+  const CohesiveLaw law = intrinsic_law();
+  CohesiveLaw::State history;
+  const double peak = law.parameters().strength / law.parameters().initial_stiffness;
+  const Eigen::Vector2d d(3 * peak, 0.0);
+  const FacePointResponse r = face_point_response(law, d, 1e11, history);
+  EXPECT_NEAR(history.max_opening, d[0], 1e-15);
+  EXPECT_LT(r.traction[0], law.parameters().strength);
+  EXPECT_GT(r.traction[0], 0.0);
+  // On the unloading line: the secant's triangle, no closure energy for an open face.
+  const double secant = r.traction[0] / d[0];
+  EXPECT_NEAR(face_point_stored_energy(law, d, 1e11, history), 0.5 * secant * d[0] * d[0],
+              1e-9 * secant * d[0] * d[0]);
+}
+
+}  // namespace
+}  // namespace vorodg

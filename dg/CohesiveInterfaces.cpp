@@ -5,6 +5,7 @@
 
 #include "core/quadrature/TriangleRule.hpp"
 #include "dg/SeriesShearLaw.hpp"
+#include "fracture/FaceInsertion.hpp"
 #include "fracture/FacePoint.hpp"
 
 namespace vorodg {
@@ -74,8 +75,7 @@ Eigen::Vector2d CohesiveInterfaces::flux_traction(const Eigen::VectorXd& u, int 
 }
 
 double CohesiveInterfaces::utilization(const Eigen::VectorXd& u, int p) const {
-  const Eigen::Vector2d t = flux_traction(u, p);
-  return criterion_.utilization(t[0], t[1]);
+  return face_utilization(criterion_, flux_traction(u, p));
 }
 
 void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, InterfacePoint& point,

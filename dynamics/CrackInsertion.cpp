@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
+#include "fracture/FaceInsertion.hpp"
 
 namespace vorodg {
 
@@ -65,9 +66,7 @@ Eigen::Vector2d CrackInsertion::traction(const Eigen::Matrix3Xd& stresses, int e
   const MeshEdge& edge = mesh_.edge(e);
   const Eigen::Vector3d s = 0.5 * (stresses.col(edge.cell0) + stresses.col(edge.cell1));
   const Eigen::Vector2d& t = tangent_[e];
-  const Eigen::Vector2d n(t.y(), -t.x());
-  const Eigen::Vector2d sn(s[0] * n.x() + s[2] * n.y(), s[2] * n.x() + s[1] * n.y());
-  return {sn.dot(n), sn.dot(t)};
+  return face_traction(s, Eigen::Vector2d(t.y(), -t.x()), t);
 }
 
 std::vector<CrackInsertion::Failure> CrackInsertion::failing_edges(const SplitDofMap& dofs,
@@ -79,9 +78,8 @@ std::vector<CrackInsertion::Failure> CrackInsertion::failing_edges(const SplitDo
   for (int e = 0; e < mesh_.num_edges(); ++e) {
     if (!eligible_[e] || cracked[e] || mesh_.edge(e).cell1 < 0) continue;
     const Eigen::Vector2d t = traction(sigma, e);
-    // c and sigma_o scaled by f: the utilization of t / f under the scene's criterion.
     const double f = edge_strength_.empty() ? 1.0 : edge_strength_[e];
-    if (criterion_.utilization(t[0] / f, t[1] / f) >= 1.0) failing.push_back({e, t});
+    if (face_utilization(criterion_, t, f) >= 1.0) failing.push_back({e, t});
   }
   return failing;
 }

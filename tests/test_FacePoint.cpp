@@ -5,9 +5,16 @@
 //   - an intrinsic law's point is the law plus the closure: on the elastic branch the stored
 //     energy's gradient is the traction (1e-7 relative), the tangent is K0 diag(1, beta^2) plus
 //     k on the normal in closure, and loading past the peak advances the history while the
-//     energy stays the unloading line's.
+//     energy stays the unloading line's;
+//   - the insertion check (fracture/FaceInsertion): a uniaxial stress sigma along x on a face
+//     turned by theta carries sigma cos^2 theta normal and sigma sin theta cos theta shear (1e-15
+//     relative), and a face of strength factor f fails where t / f fails (cutoff and cohesion
+//     scale with f).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "fracture/FaceInsertion.hpp"
 #include "fracture/FacePoint.hpp"
 
 namespace vorodg {
@@ -72,6 +79,19 @@ TEST(FacePoint, LoadingPastThePeakAdvancesTheHistory) {
   const double secant = r.traction[0] / d[0];
   EXPECT_NEAR(face_point_stored_energy(law, d, 1e11, history), 0.5 * secant * d[0] * d[0],
               1e-9 * secant * d[0] * d[0]);
+}
+
+TEST(FaceInsertion, TractionOfAUniaxialStressAndScaledStrength) {
+  const double sigma = 5e6, theta = 0.3;
+  const Eigen::Vector2d n(std::cos(theta), std::sin(theta)), t(-n.y(), n.x());
+  const Eigen::Vector2d tr = face_traction(Eigen::Vector3d(sigma, 0.0, 0.0), n, t);
+  EXPECT_NEAR(tr[0], sigma * std::cos(theta) * std::cos(theta), 1e-15 * sigma);
+  EXPECT_NEAR(tr[1], -sigma * std::sin(theta) * std::cos(theta), 1e-15 * sigma);
+  const MohrCoulomb criterion({3e6, 0.5, 2e6});
+  const Eigen::Vector2d at_cutoff(2e6, 0.0);
+  EXPECT_DOUBLE_EQ(face_utilization(criterion, at_cutoff), 1.0);
+  EXPECT_DOUBLE_EQ(face_utilization(criterion, at_cutoff, 2.0), 0.5);  // twice as strong
+  EXPECT_DOUBLE_EQ(face_utilization(criterion, Eigen::Vector2d(0.0, 1.5e6), 0.5), 1.0);
 }
 
 }  // namespace

@@ -60,6 +60,12 @@ void CohesiveForces::set_edge_strength(std::vector<double> factor) {
   edge_strength_ = std::move(factor);
 }
 
+void CohesiveForces::set_friction(double mu) {
+  require_parameter(std::isfinite(mu) && mu >= 0.0 && mu <= 10.0, "cohesive forces: friction", mu,
+                    "0 <= mu <= 10");
+  friction_ = mu;
+}
+
 void CohesiveForces::add_edge(int e) {
   Face f = make_face(mesh_, e);
   if (slot_[e] >= 0)
@@ -80,10 +86,13 @@ void CohesiveForces::add_edge(int e) {
 }
 
 double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
-                                        const CohesiveLaw& law, const std::vector<char>& eligible) {
+                                        const CohesiveLaw& law, const std::vector<char>& eligible,
+                                        double friction) {
   const double beta = law.parameters().shear_factor;
-  // The law's tangent never exceeds K0 diag(1, beta^2) on any branch.
-  const double k0 = law.parameters().initial_stiffness * std::max(1.0, beta * beta);
+  // The law's tangent never exceeds K0 diag(1, beta^2) on any branch; a sticking face adds the
+  // closure stiffness to the shear.
+  const double shear = beta * beta + (friction > 0.0 ? kClosureFraction : 0.0);
+  const double k0 = law.parameters().initial_stiffness * std::max(1.0, shear);
   std::vector<std::vector<double>> row(mesh.num_cells());
   for (int c = 0; c < mesh.num_cells(); ++c) row[c].assign(mesh.cell_size(c), 0.0);
   const SegmentRule& rule = gauss2_segment();
@@ -111,9 +120,10 @@ double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMas
 
 double CohesiveForces::stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
                                    const LumpedMass& mass, const CohesiveLaw& law,
-                                   const std::vector<char>& eligible, double safety) {
+                                   const std::vector<char>& eligible, double safety,
+                                   double friction) {
   return safety * 2.0 /
-         std::sqrt(cells.max_eigenvalue() + eigenvalue_bound(mesh, mass, law, eligible));
+         std::sqrt(cells.max_eigenvalue() + eigenvalue_bound(mesh, mass, law, eligible, friction));
 }
 
 void CohesiveForces::bind(const SplitDofMap& dofs) {
@@ -152,8 +162,9 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
       QuadraturePoint& p = face.points[q];
       const Eigen::Vector2d d(g.dot(face.n), g.dot(face.t));
-      const Eigen::Vector2d tau =
-          face_point_response(law, d, closure_stiffness(), p.history).traction;
+      FacePointResponse r = face_point_response(law, d, closure_stiffness(), p.history);
+      add_friction(friction_, closure_stiffness(), d[0], d[1], p.friction, r);
+      const Eigen::Vector2d tau = r.traction;
       work -= 0.5 * w * (p.traction + tau).dot(d - p.opening);
       p.opening = d;
       p.traction = tau;
@@ -224,9 +235,20 @@ double CohesiveForces::stored_energy() const {
     for (int q = 0; q < 2; ++q) {
       const Face& face = faces_[slot];
       sum += rule.weights[q] * face.length *
-             face_point_stored_energy(law_of(slot), face.points[q].opening, closure_stiffness(),
-                                      face.points[q].history);
+             (face_point_stored_energy(law_of(slot), face.points[q].opening, closure_stiffness(),
+                                       face.points[q].history) +
+              friction_stored_energy(friction_, closure_stiffness(), face.points[q].opening[0],
+                                     face.points[q].opening[1], face.points[q].friction));
     }
+  return sum;
+}
+
+double CohesiveForces::friction_dissipated_energy() const {
+  const SegmentRule& rule = gauss2_segment();
+  double sum = 0.0;
+  for (const Face& face : faces_)
+    for (int q = 0; q < 2; ++q)
+      sum += rule.weights[q] * face.length * face.points[q].friction.dissipated;
   return sum;
 }
 

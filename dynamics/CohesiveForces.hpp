@@ -51,6 +51,7 @@
 #include "core/mesh/PolygonMesh.hpp"
 #include "dynamics/LumpedMass.hpp"
 #include "dynamics/StableTimeStep.hpp"
+#include "fracture/FacePoint.hpp"
 
 namespace vorodg {
 
@@ -64,6 +65,11 @@ class CohesiveForces {
   /// strength factor[e] x sigma_c, with G and K0 unchanged. Call before the first add_edge.
   /// Throws InputError naming the edge where the scaled law is invalid, or if edges cracked.
   void set_edge_strength(std::vector<double> factor);
+  /// Coulomb friction mu on the closed faces (fracture/FacePoint: a stick spring of the closure
+  /// stiffness, slipping at mu times the closure's pressure). Throws InputError unless
+  /// 0 <= mu <= 10 (finite). 0, the default, is frictionless.
+  void set_friction(double mu);
+  double friction() const { return friction_; }
   /// Interior edge e cracks: its points start from zero opening. Throws InputError for a
   /// boundary edge or an edge already cracked.
   void add_edge(int e);
@@ -72,13 +78,16 @@ class CohesiveForces {
   /// it). Gershgorin on M^-1/2 K_s M^-1/2. Adding it to the cells' bound (StableTimeStep)
   /// bounds the whole system's eigenvalue, since lambda_max(A + B) <= lambda_max(A) +
   /// lambda_max(B).
+  /// With friction the stick spring adds the closure stiffness to the shear.
   static double eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
-                                 const CohesiveLaw& law, const std::vector<char>& eligible);
+                                 const CohesiveLaw& law, const std::vector<char>& eligible,
+                                 double friction = 0.0);
   /// safety x the critical step of the cells (`cells`, the cell-by-cell bound, valid for every
   /// split) and the springs together: stable for every crack pattern a run can reach.
   static double stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
                             const LumpedMass& mass, const CohesiveLaw& law,
-                            const std::vector<char>& eligible, double safety);
+                            const std::vector<char>& eligible, double safety,
+                            double friction = 0.0);
   /// The cracked edges, in the order they cracked.
   const std::vector<int>& edges() const { return edges_; }
   bool cracked(int e) const { return slot_[e] >= 0; }
@@ -106,6 +115,9 @@ class CohesiveForces {
   /// The same for cracked edge e alone (0 if not cracked).
   double dissipated_energy(int e) const;
   double stored_energy() const;
+  /// The energy friction has dissipated on the faces (per unit thickness): sum of w mu p |slip
+  /// increment|, the closed form beside work().
+  double friction_dissipated_energy() const;
   /// Per mesh edge, the mean largest effective opening of its two points (0 if not cracked).
   Eigen::VectorXd max_openings() const;
   /// Whether cracked edge e is fully broken: both its points past the critical opening.
@@ -122,6 +134,7 @@ class CohesiveForces {
  private:
   struct QuadraturePoint {
     CohesiveLaw::State history;
+    FrictionState friction;
     Eigen::Vector2d opening = Eigen::Vector2d::Zero();  // (normal, tangential), last evaluation
     Eigen::Vector2d traction = Eigen::Vector2d::Zero();
   };
@@ -147,6 +160,7 @@ class CohesiveForces {
     return kClosureFraction * law_.parameters().initial_stiffness;
   }
   static constexpr double kClosureFraction = 0.1;
+  double friction_ = 0.0;  // Coulomb's mu on closed faces
   /// The law of face `slot` (the shared one unless the strength varies).
   const CohesiveLaw& law_of(std::size_t slot) const {
     return face_laws_.empty() ? law_ : face_laws_[slot];

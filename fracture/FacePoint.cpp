@@ -1,6 +1,7 @@
 #include "fracture/FacePoint.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vorodg {
 
@@ -13,6 +14,35 @@ void add_closure(double k, double gn, FacePointResponse& r) {
 double closure_energy(double k, double gn) {
   const double overlap = std::min(gn, 0.0);
   return 0.5 * k * overlap * overlap;
+}
+
+void add_friction(double mu, double k, double gn, double gt, FrictionState& friction,
+                  FacePointResponse& r) {
+  if (mu == 0.0) return;
+  if (gn >= 0.0) {  // open: no pressure, no friction; it closes again unstressed
+    friction.slip = gt;
+    return;
+  }
+  const double limit = mu * k * -gn;  // mu p
+  const double trial = k * (gt - friction.slip);
+  if (std::abs(trial) <= limit) {  // sticking
+    r.traction[1] += trial;
+    r.tangent(1, 1) += k;
+    return;
+  }
+  const double shear = std::copysign(limit, trial);  // slipping: the spring carries mu p
+  const double slip = gt - shear / k;
+  friction.dissipated += limit * std::abs(slip - friction.slip);
+  friction.slip = slip;
+  r.traction[1] += shear;
+  r.tangent(1, 0) -= std::copysign(mu * k, trial);  // d(mu k (-gn)) / d gn, signed
+}
+
+double friction_stored_energy(double mu, double k, double gn, double gt,
+                              const FrictionState& friction) {
+  if (mu == 0.0 || gn >= 0.0) return 0.0;
+  const double stretch = gt - friction.slip;
+  return 0.5 * k * stretch * stretch;
 }
 
 FacePointResponse face_point_response(const CohesiveLaw& law, const Eigen::Vector2d& d, double k,

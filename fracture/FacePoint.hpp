@@ -9,6 +9,15 @@
 //     (the law puts no normal traction on a closing face): a spring, its energy k <g_n>_-^2 / 2
 //     stored, not dissipated.
 //
+//   - Coulomb friction on a closed face (Camacho and Ortiz's crack faces in compression): the
+//     shear the face carries beyond the law's is at most mu p, p = k <g_n>_- the closure's
+//     pressure. It is regularized as explicit codes do (a return mapping, as in plasticity): a
+//     stick spring of the closure's stiffness k on the tangential opening less the slip so far;
+//     where its force passes mu p the face slips, the slip grows until the spring carries mu p,
+//     and mu p |slip increment| is dissipated. An open face carries no friction, and its slip
+//     follows the tangential opening, so that it closes again unstressed. The spring's energy
+//     tau^2 / (2 k) is stored; as p -> 0 it goes to 0 with the limit, so opening loses none.
+//
 // A driver supplies k (dg: the interface's eps; dynamics: a fraction of K0) and, for the law,
 // its own opening (dg measures it from the jump at insertion; dynamics from zero).
 #include <Eigen/Core>
@@ -27,6 +36,22 @@ struct FacePointResponse {
 void add_closure(double k, double gn, FacePointResponse& r);
 /// Its energy per unit area: k <gn>_-^2 / 2.
 double closure_energy(double k, double gn);
+
+/// What friction remembers at a point: how far the face has slid, and the energy that took.
+struct FrictionState {
+  double slip = 0.0;        // the tangential opening at which the stick spring is unstressed
+  double dissipated = 0.0;  // sum of mu p |slip increment|, per unit area
+};
+
+/// Coulomb friction mu on the face at opening (gn, gt), the closure stiffness k also the stick
+/// spring's: adds the friction shear to the tangential traction (and, sticking, k to the
+/// tangential tangent) and advances `friction`. Nothing where mu = 0.
+void add_friction(double mu, double k, double gn, double gt, FrictionState& friction,
+                  FacePointResponse& r);
+/// The stick spring's energy per unit area: k (gt - slip)^2 / 2 (0 where the face is open or
+/// has no friction).
+double friction_stored_energy(double mu, double k, double gn, double gt,
+                              const FrictionState& friction);
 
 /// An intrinsic law's point: the law at opening d (advancing `history`), plus the closure
 /// penalty k on d's normal component.

@@ -6,6 +6,10 @@
 //     energy's gradient is the traction (1e-7 relative), the tangent is K0 diag(1, beta^2) plus
 //     k on the normal in closure, and loading past the peak advances the history while the
 //     energy stays the unloading line's;
+//   - Coulomb friction at a point: sticking, the shear is k (g_t - slip) with tangent k; past mu p
+//     it slips at mu p exactly, dissipating mu p times the slip, and on reversal it sticks again
+//     until the shear reaches -mu p; an open face carries none and its slip follows g_t, so it
+//     closes unstressed; mu = 0 adds nothing at all;
 //   - the insertion check (fracture/FaceInsertion): a uniaxial stress sigma along x on a face
 //     turned by theta carries sigma cos^2 theta normal and sigma sin theta cos theta shear (1e-15
 //     relative), and a face of strength factor f fails where t / f fails (cutoff and cohesion
@@ -92,6 +96,38 @@ TEST(FaceInsertion, TractionOfAUniaxialStressAndScaledStrength) {
   EXPECT_DOUBLE_EQ(face_utilization(criterion, at_cutoff), 1.0);
   EXPECT_DOUBLE_EQ(face_utilization(criterion, at_cutoff, 2.0), 0.5);  // twice as strong
   EXPECT_DOUBLE_EQ(face_utilization(criterion, Eigen::Vector2d(0.0, 1.5e6), 0.5), 1.0);
+}
+
+TEST(FacePoint, CoulombFrictionSticksSlipsAndReverses) {
+  const double mu = 0.5, k = 1e11, gn = -2e-7, p = k * -gn, limit = mu * p;
+  FrictionState state;
+  FacePointResponse stick;
+  add_friction(mu, k, gn, 0.5 * limit / k, state, stick);
+  EXPECT_EQ(stick.traction[1], 0.5 * limit);
+  EXPECT_EQ(stick.tangent(1, 1), k);
+  EXPECT_EQ(state.dissipated, 0.0);
+  FacePointResponse slip;
+  const double gt = 3 * limit / k;  // past the limit by 2 limit / k
+  add_friction(mu, k, gn, gt, state, slip);
+  EXPECT_NEAR(slip.traction[1], limit, 1e-15 * limit);
+  EXPECT_NEAR(state.slip, gt - limit / k, 1e-15 * gt);
+  EXPECT_NEAR(state.dissipated, limit * 2 * limit / k, 1e-12 * limit * limit / k);
+  EXPECT_NEAR(friction_stored_energy(mu, k, gn, gt, state), 0.5 * limit * limit / k,
+              1e-12 * limit * limit / k);
+  FacePointResponse back;  // reversed by limit / k: sticks, the spring unloaded to zero
+  add_friction(mu, k, gn, gt - limit / k, state, back);
+  EXPECT_NEAR(back.traction[1], 0.0, 1e-12 * limit);
+  FacePointResponse open;
+  add_friction(mu, k, 1e-9, 5 * limit / k, state, open);
+  EXPECT_EQ(open.traction[1], 0.0);
+  EXPECT_EQ(state.slip, 5 * limit / k);
+  EXPECT_EQ(friction_stored_energy(mu, k, 1e-9, 5 * limit / k, state), 0.0);
+  FacePointResponse none;
+  FrictionState untouched;
+  add_friction(0.0, k, gn, gt, untouched, none);
+  EXPECT_EQ(none.traction, Eigen::Vector2d::Zero());
+  EXPECT_EQ(untouched.slip, 0.0);
+  EXPECT_EQ(friction_stored_energy(0.0, k, gn, gt, untouched), 0.0);
 }
 
 }  // namespace

@@ -195,6 +195,12 @@ std::vector<SceneKey> make_keys() {
                                    "dynamics needs an initially elastic law; its springs share "
                                    "the stable step",
                                    "fragmentation: "}));
+  keys.push_back(bounded(
+      "cohesive.face_friction", "number", "0", "0 <= mu <= 10",
+      "fragmentation: Coulomb friction of closed crack faces (Camacho and Ortiz): a face in "
+      "compression slides at mu times the closure's pressure, and that work is dissipated "
+      "(docs/fragmentation.md); 0: frictionless",
+      0.0, false, 10.0));
   append_keys(keys, body_keys());
   append_keys(keys, elastic_keys("2e11", "0.3"));
   append_keys(keys, material_keys());

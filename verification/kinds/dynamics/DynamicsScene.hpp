@@ -78,6 +78,7 @@ struct DynamicsScene {
   bool fragmentation = false;
   CohesiveParameters cohesive;
   double stiffness_factor = 0.0;  // K0 in units of E / h_avg
+  double face_friction = 0.0;     // Coulomb's mu on closed crack faces
   MohrCoulombParameters criterion;
   std::vector<SceneMesh> meshes;
   /// Every key and the value used, in the table's order (the echo and summary.json).

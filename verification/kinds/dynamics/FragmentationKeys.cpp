@@ -18,6 +18,7 @@ void DynamicsSceneReader::read_fracture() {
   law.fracture_energy = number(c, "cohesive.fracture_energy");
   law.shear_factor = number(c, "cohesive.shear_factor");
   s_.stiffness_factor = number(c, "cohesive.initial_stiffness");
+  s_.face_friction = number(c, "cohesive.face_friction");
   c.finish();
   SceneObject m = object("criterion");
   s_.criterion.cohesion = number(m, "criterion.cohesion", law.strength);

@@ -38,11 +38,12 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
     : mesh_(mesh),
       law_(make_law(scene, h_avg)),
       criterion_(scene.criterion),
-      eligible_(mesh.num_edges(), 1) {}
+      eligible_(mesh.num_edges(), 1),
+      friction_(scene.face_friction) {}
 
 double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
                                      double safety) const {
-  return CohesiveForces::stable_step(cells, mesh_, mass, law_, eligible_, safety);
+  return CohesiveForces::stable_step(cells, mesh_, mass, law_, eligible_, safety, friction_);
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,
@@ -52,6 +53,7 @@ void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator
   contact_ = contact;
   cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
   cohesive_->set_edge_strength(variation.edge_strength(mesh_));
+  cohesive_->set_friction(friction_);
   insertion_ = std::make_unique<CrackInsertion>(mesh_, integrator, criterion_, eligible_, threads);
   insertion_->vary(variation);
   insertion_->turn_with(run.force().frames());
@@ -73,7 +75,8 @@ void FragmentationRun::check_balance(const StepRecord& r) {
   // taken. Its booked work would hide energy that a penalty switching on at depth creates.
   const double contact = contact_ ? contact_->report().potential + contact_damped_ : 0.0;
   const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
-                      cohesive_->stored_energy() + r.damping_dissipation + contact;
+                      cohesive_->stored_energy() + r.damping_dissipation + contact +
+                      cohesive_->friction_dissipated_energy();
   const double put_in = start_ + r.external_work + r.reaction_work;
   const double balance = std::abs(held - put_in) / std::max(r.input_energy(), 1e-300);
   worst_balance_ = std::max(worst_balance_, balance);

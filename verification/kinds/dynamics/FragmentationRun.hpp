@@ -55,6 +55,7 @@ class FragmentationRun {
   CohesiveLaw law_;
   MohrCoulomb criterion_;
   std::vector<char> eligible_;
+  double friction_;  // on closed faces
   std::unique_ptr<CohesiveForces> cohesive_;
   std::unique_ptr<CrackInsertion> insertion_;
   std::unique_ptr<DynamicFracture> fracture_;

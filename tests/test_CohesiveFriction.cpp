@@ -1,0 +1,125 @@
+// Coulomb friction on closed crack faces in explicit dynamics (dynamics/CohesiveForces with the
+// kernel of fracture/FacePoint), on two quads sharing one cracked edge of length L. The face is
+// broken first (opened past the critical opening, so the law carries nothing), then closed by
+// delta and sheared monotonically to S, one cell moving rigidly against the other:
+//   - it sticks while the shear is below mu p (p = k delta, k the closure stiffness): the shear
+//     force is k s L, nothing is dissipated;
+//   - it slips beyond: the shear force is mu p L, and the energy dissipated is
+//     mu p L (S - mu delta), Coulomb's slip work, to 1e-12 relative;
+//   - the work the forces booked over the shear equals what friction dissipated plus what its
+//     stick spring stores, to 1e-10 relative (the transition falls on a step; round-off of 400
+//     steps of booking);
+//   - without friction (mu = 0) a closed face carries no shear and stores no friction energy;
+//   - a negative or non-finite mu is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/util/Errors.hpp"
+#include "dynamics/CohesiveForces.hpp"
+#include "support/DynamicsModel.hpp"
+
+namespace vorodg {
+namespace {
+
+using namespace vorodg::testing;
+
+constexpr double kE = 30e9, kH = 0.01;
+
+struct Pair {
+  DynamicsModel model{mesh_spec(MeshFamily::quad, Rectangle(0, 0, 2 * kH, kH), kH),
+                      IsotropicElasticity(kE, 0.2, PlaneModel::strain), 2400.0};
+  CohesiveLaw law{CohesiveParameters{3e6, 50.0, 1.0, SofteningShape::linear, 10 * kE / kH}};
+  int edge = -1;
+  Eigen::Vector2d n, t;
+  double length = 0.0;
+
+  Pair() {
+    for (int e = 0; e < model.mesh.num_edges(); ++e)
+      if (!model.mesh.edge(e).on_boundary()) edge = e;
+    const MeshEdge& me = model.mesh.edge(edge);
+    const Eigen::Vector2d d = model.mesh.vertex(me.v1) - model.mesh.vertex(me.v0);
+    length = d.norm();
+    t = d / length;
+    n = Eigen::Vector2d(t.y(), -t.x());
+  }
+  /// Cell1 moved rigidly by the opening (gn, gt) against cell0, on a map split at the edge.
+  Eigen::VectorXd displacement(const SplitDofMap& dofs, double gn, double gt) const {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs.num_dofs());
+    const int cell1 = model.mesh.edge(edge).cell1;
+    for (int k = 0; k < model.mesh.cell_size(cell1); ++k)
+      u.segment<2>(2 * dofs.node(cell1, k)) = gn * n + gt * t;
+    return u;
+  }
+  /// The shear force on cell1 (along t) at the last evaluation.
+  double shear_force(const SplitDofMap& dofs, const Eigen::VectorXd& f) const {
+    const int cell1 = model.mesh.edge(edge).cell1;
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (int k = 0; k < model.mesh.cell_size(cell1); ++k)
+      sum += f.segment<2>(2 * dofs.node(cell1, k));
+    return -sum.dot(t);  // the force resists the slide
+  }
+};
+
+struct ShearRun {
+  double stick_force = 0.0, slip_force = 0.0, work = 0.0, dissipated = 0.0, stored = 0.0;
+};
+
+ShearRun shear(Pair& p, double mu, double delta, double total, int steps, int stick_steps) {
+  CohesiveForces faces(p.model.mesh, p.law);
+  faces.set_friction(mu);
+  faces.add_edge(p.edge);
+  std::vector<char> connected(p.model.mesh.num_edges(), 1);
+  connected[p.edge] = 0;
+  const SplitDofMap dofs(p.model.mesh, connected);
+  faces.bind(dofs);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.num_dofs());
+  faces.evaluate(p.displacement(dofs, 3.0 * p.law.critical_opening(), 0.0), f);  // broken
+  EXPECT_TRUE(faces.broken(p.edge));
+  f.setZero();
+  faces.evaluate(p.displacement(dofs, -delta, 0.0), f);  // closed, not yet sheared
+  ShearRun r;
+  const double before = faces.work(), stored_before = faces.stored_energy();
+  for (int i = 1; i <= steps; ++i) {
+    f.setZero();
+    faces.evaluate(p.displacement(dofs, -delta, total * i / steps), f);
+    if (i == stick_steps / 2) r.stick_force = p.shear_force(dofs, f);
+  }
+  r.slip_force = p.shear_force(dofs, f);
+  r.work = -(faces.work() - before);
+  r.dissipated = faces.friction_dissipated_energy();
+  r.stored = faces.stored_energy() - stored_before;
+  return r;
+}
+
+TEST(CohesiveFriction, SticksThenSlipsWithCoulombsWork) {
+  Pair p;
+  const double mu = 0.6, k = 0.1 * p.law.parameters().initial_stiffness;
+  const double delta = 1e-7, pressure = k * delta, stick = mu * delta;
+  const int steps = 400, stick_steps = 40;  // the shear reaches mu delta at step 40
+  const double total = stick * steps / stick_steps;
+  const ShearRun r = shear(p, mu, delta, total, steps, stick_steps);
+  EXPECT_NEAR(r.stick_force, k * (stick / 2) * p.length, 1e-12 * k * stick * p.length);
+  EXPECT_NEAR(r.slip_force, mu * pressure * p.length, 1e-12 * mu * pressure * p.length);
+  const double coulomb = mu * pressure * p.length * (total - stick);
+  EXPECT_NEAR(r.dissipated, coulomb, 1e-12 * coulomb);
+  EXPECT_NEAR(r.work, r.dissipated + r.stored, 1e-10 * r.work);
+}
+
+TEST(CohesiveFriction, WithoutFrictionAClosedFaceCarriesNoShear) {
+  Pair p;
+  const ShearRun r = shear(p, 0.0, 1e-7, 6e-7, 40, 4);
+  EXPECT_EQ(r.slip_force, 0.0);
+  EXPECT_EQ(r.dissipated, 0.0);
+  EXPECT_EQ(r.work, 0.0);
+}
+
+TEST(CohesiveFriction, RefusesABadCoefficient) {
+  Pair p;
+  CohesiveForces faces(p.model.mesh, p.law);
+  EXPECT_THROW(faces.set_friction(-0.1), InputError);
+  EXPECT_THROW(faces.set_friction(std::nan("")), InputError);
+}
+
+}  // namespace
+}  // namespace vorodg

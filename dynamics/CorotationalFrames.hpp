@@ -45,6 +45,11 @@ class CorotationalFrames {
   /// G = F - I = sum_k w_k (x) b_k of cell c from displacements relative to vertex 0 (w_0 = 0;
   /// absolute displacements give the same, since sum_k b_k = 0).
   Eigen::Matrix2d displacement_gradient(int c, const double* w) const;
+  /// G of cell c at node displacements u of `dofs`.
+  Eigen::Matrix2d displacement_gradient(int c, const SplitDofMap& dofs,
+                                        const Eigen::VectorXd& u) const {
+    return displacement_gradient(c, relative(c, dofs, u));
+  }
   /// The small-strain rotation of cell c, (G21 - G12) / 2, at node displacements u of `dofs`.
   double mean_rotation(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u) const;
   /// The largest |mean_rotation| over the cells.

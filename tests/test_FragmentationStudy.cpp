@@ -8,12 +8,16 @@
 //     K0 = 10 E / h): fragments = broken edges + 1, the discrete energy balance to 1e-10 of the
 //     input, the balance with the law's closed forms within 1 % (measured 1.1e-3: the step's
 //     error at the law's kinks, docs/fragmentation.md), fragments/<id>.csv masses summing to
-//     rho x area to 1e-12, and cracks/<id>.csv with one row per cracked edge.
+//     rho x area to 1e-12, and cracks/<id>.csv with one row per cracked edge; the mass in
+//     single-cell fragments is what fragments/<id>.csv gives for the one-cell rows;
+//   - a body too strong to crack, spun at 10 rad/s for 50 ms with corotational kinematics: one
+//     fragment, no sand, and the main body's turn is 0.5 rad to 1e-3 (its elastic wobble).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "core/util/Errors.hpp"
@@ -72,13 +76,19 @@ TEST(FragmentationStudy, StretchedStripRun) {
   std::string line;
   std::getline(fragments, line);
   EXPECT_EQ(line, "fragment,mass,cells,x,y,vx,vy");
-  double mass = 0.0;
+  double mass = 0.0, sand = 0.0;
   int rows = 0;
   while (std::getline(fragments, line)) {
-    mass += std::stod(line.substr(line.find(',') + 1));
+    std::istringstream row(line);
+    std::string id_text, mass_text, cells_text;
+    std::getline(row, id_text, ','), std::getline(row, mass_text, ','),
+        std::getline(row, cells_text, ',');
+    mass += std::stod(mass_text);
+    if (std::stoi(cells_text) == 1) sand += std::stod(mass_text);
     ++rows;
   }
   EXPECT_EQ(rows, m.fragments);
+  EXPECT_NEAR(m.single_cell_mass_fraction, sand / mass, 1e-12);
   EXPECT_NEAR(mass, 2750.0 * 0.002 * 1e-5, 1e-12 * 2750.0 * 0.002 * 1e-5);
   std::ifstream cracks(out / "cracks" / (id.id() + ".csv"));
   std::getline(cracks, line);
@@ -86,6 +96,23 @@ TEST(FragmentationStudy, StretchedStripRun) {
   rows = 0;
   while (std::getline(cracks, line)) ++rows;
   EXPECT_EQ(rows, m.cracked_edges);
+  fs::remove_all(out);
+}
+
+TEST(FragmentationStudy, TheMainBodysTurnOfASpinningBody) {
+  const DynamicsScene s = parse_dynamics_scene(R"({"study": "fragmentation", "problem": "free-body",
+    "initial_velocity": [0, 0], "angular_velocity": 10, "kinematics": "corotational",
+    "material": {"E": 2e11, "nu": 0.3, "density": 7800}, "cohesive": {"strength": 1e9, "fracture_energy": 1e7},
+    "contact": {"enabled": false}, "outputs": {"vtu": false}, "time": {"end": 0.05},
+    "meshes": [{"family": "quad", "sizes": [0.25]}]})",
+                                               "test");
+  const fs::path out = fs::temp_directory_path() / ("vorodg_frag_spin_" + std::to_string(getpid()));
+  fs::remove_all(out);
+  const DynamicsRecord r = run_dynamics(s, ensemble_runs(s.meshes).front(), out);
+  ASSERT_TRUE(r.complete) << r.failure;
+  EXPECT_EQ(r.measures.fragments, 1);
+  EXPECT_EQ(r.measures.single_cell_mass_fraction, 0.0);
+  EXPECT_NEAR(r.measures.main_body_rotation, 10.0 * r.end_time, 1e-3);
   fs::remove_all(out);
 }
 

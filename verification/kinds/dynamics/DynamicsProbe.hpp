@@ -34,6 +34,10 @@ struct DynamicsMeasures {
   double impact_velocity = NAN, rebound_velocity = NAN, rebound_estimate = NAN;
   // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
   double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
+  double single_cell_mass_fraction = NAN;  // the mass in fragments of one cell, of the total
+  // The largest fragment's turn at the end, rad: the polar angle of its mass-weighted mean
+  // deformation gradient (exact for a rigid turn of any size, whatever the kinematics)
+  double main_body_rotation = NAN;
   double cracked_edges = NAN, broken_edges = NAN;
   double released_edges = NAN;  // broken faces let go to surface contact (CohesiveForces)
   // wall seconds in the insertion check and in the rebuilds after cracks (DynamicFracture)

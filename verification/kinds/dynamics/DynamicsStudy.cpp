@@ -57,6 +57,8 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"contact_time_estimate", &M::contact_time_estimate},
       {"fragments", &M::fragments},
       {"max_fragment_mass_fraction", &M::max_fragment_mass_fraction},
+      {"single_cell_mass_fraction", &M::single_cell_mass_fraction},
+      {"main_body_rotation", &M::main_body_rotation},
       {"dissipated_energy", &M::dissipated_energy},
       {"cracked_edges", &M::cracked_edges},
       {"broken_edges", &M::broken_edges},
@@ -148,6 +150,8 @@ std::string fragments_table(const StudyRecords<DynamicsRecord>& result) {
     t.add_value("fragments", m.fragments, {}, digits(6));
     t.add_text("broken / cracked edges", fmt(m.broken_edges) + " / " + fmt(m.cracked_edges));
     t.add_value("largest fragment (mass fraction)", m.max_fragment_mass_fraction, {}, digits(3));
+    t.add_value("mass in single cells", m.single_cell_mass_fraction, {}, digits(3));
+    t.add_value("main body's turn [rad]", m.main_body_rotation, {}, digits(3));
     t.add_value("dissipated [J/m]", m.dissipated_energy, {}, digits(4));
     t.add_text(
         "balance with the law's energies",

@@ -7,6 +7,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "dynamics/CorotationalFrames.hpp"
 #include "fracture/Fragments.hpp"
 #include "verification/model/SettingsSchema.hpp"
 #include "verification/report/ConvergenceTable.hpp"
@@ -31,7 +32,31 @@ CohesiveLaw make_law(const DynamicsScene& scene, double h_avg) {
   }
 }
 
+/// The mass in fragments of a single cell over the total: the sand.
+double single_cell_mass_fraction(const Fragments& pieces) {
+  double sand = 0.0;
+  for (int f = 0; f < pieces.num_fragments(); ++f)
+    if (pieces.num_cells(f) == 1) sand += pieces.mass(f);
+  return sand / pieces.total_mass();
+}
+
 }  // namespace
+
+double FragmentationRun::main_body_rotation(const Fragments& pieces, const LumpedMass& mass) const {
+  const Eigen::VectorXd& masses = pieces.masses();
+  Eigen::Index largest = 0;
+  masses.maxCoeff(&largest);
+  const CorotationalFrames frames(mesh_);
+  Eigen::Matrix2d F = Eigen::Matrix2d::Zero();  // mass-weighted sum over the fragment's cells
+  for (int c = 0; c < mesh_.num_cells(); ++c) {
+    if (pieces.fragment(c) != largest) continue;
+    double cell_mass = 0.0;
+    for (double m : mass.cell(c)) cell_mass += m;
+    F += cell_mass * (Eigen::Matrix2d::Identity() +
+                      frames.displacement_gradient(c, run_->dofs(), run_->displacement()));
+  }
+  return std::atan2(F(1, 0) - F(0, 1), F(0, 0) + F(1, 1));
+}
 
 FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh& mesh,
                                    double h_avg)
@@ -100,6 +125,8 @@ void FragmentationRun::finish(const fs::path& out, const std::string& id, const 
   const Fragments pieces(fracture_->broken_state(), mass.pair_masses());
   m.fragments = pieces.num_fragments();
   m.max_fragment_mass_fraction = pieces.largest_mass_fraction();
+  m.single_cell_mass_fraction = single_cell_mass_fraction(pieces);
+  m.main_body_rotation = main_body_rotation(pieces, mass);
   m.dissipated_energy = cohesive_->dissipated_energy();
   m.cracked_edges = static_cast<double>(cohesive_->edges().size());
   m.broken_edges = cohesive_->num_broken();

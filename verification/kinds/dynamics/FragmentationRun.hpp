@@ -11,6 +11,7 @@
 #include "dynamics/DynamicFracture.hpp"
 #include "dynamics/MaterialVariation.hpp"
 #include "dynamics/StableTimeStep.hpp"
+#include "fracture/Fragments.hpp"
 #include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 
@@ -47,6 +48,8 @@ class FragmentationRun {
   /// number of cracked edges.
   std::vector<VtuField> cell_fields(const LumpedMass& mass) const;
   /// Fills the fragmentation figures of `m` and writes fragments/<id>.csv and cracks/<id>.csv.
+  /// The largest fragment's turn (DynamicsMeasures::main_body_rotation).
+  double main_body_rotation(const Fragments& pieces, const LumpedMass& mass) const;
   void finish(const std::filesystem::path& out, const std::string& id, const LumpedMass& mass,
               DynamicsMeasures& m) const;
 

@@ -20,10 +20,10 @@ struct ColumnStyle {
   int spread_precision = 1;  // of the "± spread" part
   // CSV
   int csv_precision = 17;  // significant digits (17: exact; 0: the shortest text that reads back)
-  std::string csv_name;    // its header in the CSV, if not the column's name
-  bool csv_quoted = true;  // texts in double quotes (theirs doubled)
-  bool in_csv = true;      // false: only in the text and Markdown tables
-  bool in_text = true;     // false: only in the CSV
+  std::string csv_name = "";  // its header in the CSV, if not the column's name
+  bool csv_quoted = true;     // texts in double quotes (theirs doubled)
+  bool in_csv = true;         // false: only in the text and Markdown tables
+  bool in_text = true;        // false: only in the CSV
   std::string missing = "-";  // an empty cell in the text and Markdown tables
 };
 

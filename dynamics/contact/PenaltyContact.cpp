@@ -27,7 +27,7 @@ void PenaltyContact::check(const PairState& state, const char* what) const {
                      "): found none");
   if (needs_velocity() && state.velocity.empty())
     throw InputError(where + ": contact damping needs the velocity of every pair: found none");
-  if (p_.stiffness == 0.0 && !(std::isfinite(state.dt) && state.dt > 0.0))
+  if ((p_.stiffness == 0.0 || p_.plastic) && !(std::isfinite(state.dt) && state.dt > 0.0))
     throw InputError(where + ": the mass-scaled contact stiffness needs dt > 0: found " +
                      std::to_string(state.dt));
 }
@@ -49,7 +49,7 @@ PenaltyContact::Response PenaltyContact::respond(double depth, double approach_r
                                                  double dt) const {
   const double k = stiffness(mass, dt);
   const double rate = std::max(approach_rate, 0.0);
-  const double c = p_.damping_ratio > 0.0 ? damping(k, mass) : 0.0;
+  const double c = p_.plastic ? mass / dt : p_.damping_ratio > 0.0 ? damping(k, mass) : 0.0;
   return {k * depth + c * rate, 0.5 * k * depth * depth, c * rate * rate};
 }
 

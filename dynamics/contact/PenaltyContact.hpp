@@ -28,7 +28,9 @@
 // with the half-step velocities of central differences (k_v dt / m = 2 zeta sqrt(alpha) < 2).
 // **Choice: zeta = 0 by default,** so that impacts are elastic and the energy balance shows only
 // the integrator's error; zeta = 0.1 calms contact ringing and gives a rebound of about 0.85 of
-// the impact speed (damping acts on approach only).
+// the impact speed (damping acts on approach only). The report's own choice is selectable:
+// `plastic`, k_v = m / dt, removes a pair's approach velocity in one step (a plastic impact of
+// the pair; a body still rebounds by its own elastic waves).
 //
 // Energy: with k_d constant along a contact, the spring force is the gradient of k_d d^2 / 2
 // (PolygonPenetration), and the damping dissipates k_v <-v_n>^2 >= 0 (ContactReport). The exact
@@ -49,6 +51,10 @@ struct PenaltyParameters {
   double damping_ratio = 0.0;
   /// > 0: a fixed k_d instead of alpha m / dt^2 (force per unit thickness per unit depth).
   double stiffness = 0.0;
+  /// The report's velocity penalty, which makes an impact plastic: k_v = m / dt, so that the
+  /// impulse over one step removes the approach velocity of the pair (k_v dt / m = 1 < 2:
+  /// stable). Replaces damping_ratio's k_v.
+  bool plastic = false;
 };
 
 class PenaltyContact {
@@ -57,8 +63,8 @@ class PenaltyContact {
   explicit PenaltyContact(const PenaltyParameters& parameters = {});
 
   const PenaltyParameters& parameters() const { return p_; }
-  bool needs_mass() const { return p_.stiffness == 0.0 || p_.damping_ratio > 0.0; }
-  bool needs_velocity() const { return p_.damping_ratio > 0.0; }
+  bool needs_mass() const { return p_.stiffness == 0.0 || p_.damping_ratio > 0.0 || p_.plastic; }
+  bool needs_velocity() const { return p_.damping_ratio > 0.0 || p_.plastic; }
   /// Throws InputError if the state lacks a field the law needs (mass, velocity, dt > 0).
   void check(const PairState& state, const char* what) const;
 

@@ -144,6 +144,9 @@ std::vector<SceneKey> contact_keys() {
       bounded("contact.damping_ratio", "number", "0", "0 <= zeta <= 1",
               "contact damping, a fraction of the critical damping of the penalty spring", 0.0,
               false, 1.0, false),
+      key("contact.plastic", "bool", "false", "true or false (not with damping_ratio > 0)",
+          "the report's velocity penalty: k_v = m / dt removes a contacting pair's approach "
+          "velocity in one step (a plastic impact of the pair), its work dissipated"),
   };
 }
 

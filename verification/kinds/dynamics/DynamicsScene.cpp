@@ -112,6 +112,10 @@ void DynamicsSceneReader::read_contact() {
   s_.contact = flag(c, "contact.enabled");
   s_.penalty.alpha = number(c, "contact.alpha");
   s_.penalty.damping_ratio = number(c, "contact.damping_ratio");
+  s_.penalty.plastic = flag(c, "contact.plastic");
+  if (s_.penalty.plastic && s_.penalty.damping_ratio > 0.0)
+    c.fail_value("plastic", "true beside damping_ratio " + exact_text(s_.penalty.damping_ratio) +
+                                ": expected one velocity penalty, not both");
   c.finish();
 }
 

@@ -10,6 +10,9 @@
 //     every node it pushes moves at its speed), the energy balance closes to 1e-10 of the input
 //     (the work the projectile does), momentum is not held to anything, and the snapshot frames are
 //     written and listed;
+//   - the quiescent displacement penalty: a column run records k_d = M g cos 45 / (x h_avg), M
+//     the lumped mass (rho times the area to round-off), to 1e-12; without a wall, or without
+//     gravity towards it, the key is refused;
 //   - gravity on a free body: the momentum after n steps is M g t to 1e-12, and the balance
 //     (gravity's work booked as external work) closes to 1e-10.
 #include <gtest/gtest.h>
@@ -143,6 +146,26 @@ TEST(ImpactProblems, GravityChangesMomentumByMgt) {
   EXPECT_NEAR(row.at("momentum_y"), -mass * 10.0 * row.at("time"), 1e-10 * scale);
   EXPECT_NEAR(row.at("momentum_x"), 0.0, 1e-10 * scale);
   EXPECT_GT(row.at("external_work"), 0.0);
+}
+
+TEST(ImpactProblems, QuiescentPenaltyFollowsTheRestingWeight) {
+  const DynamicsScene s = parse_dynamics_scene(
+      scene("column-impact",
+            R"("contact": {"quiescent_penetration": 0.1, "plastic": true}, "time": {"steps": 2})"),
+      "test");
+  Scratch out("quiescent");
+  const DynamicsRecord r = run_dynamics(s, ensemble_runs(s.meshes).front(), out.dir);
+  const double weight = 2250.0 * 0.3 * 1.83 * 9.81 * std::cos(std::numbers::pi / 4);
+  EXPECT_NEAR(r.contact_stiffness, weight / (0.1 * r.h_avg), 1e-12 * weight / (0.1 * r.h_avg));
+  const DynamicsScene plain =
+      parse_dynamics_scene(scene("column-impact", R"("time": {"steps": 2})"), "test");
+  EXPECT_TRUE(std::isnan(
+      run_dynamics(plain, ensemble_runs(plain.meshes).front(), out.dir).contact_stiffness));
+  for (const std::string& bad :
+       {scene("wall-impact", R"("contact": {"quiescent_penetration": 0.1})"),
+        scene("column-impact", R"("gravity": [0, 0], "contact": {"quiescent_penetration": 0.1})"),
+        scene("column-impact", R"("contact": {"quiescent_penetration": -0.1})")})
+    EXPECT_THROW(parse_dynamics_scene(bad, "test"), InputError) << bad;
 }
 
 }  // namespace

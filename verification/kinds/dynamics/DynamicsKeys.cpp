@@ -144,6 +144,11 @@ std::vector<SceneKey> contact_keys() {
       bounded("contact.damping_ratio", "number", "0", "0 <= zeta <= 1",
               "contact damping, a fraction of the critical damping of the penalty spring", 0.0,
               false, 1.0, false),
+      bounded("contact.quiescent_penetration", "number", "0", "0 <= x <= 1",
+              "> 0: the report's displacement penalty instead of alpha, as small as keeps the "
+              "bodies resting under gravity on the wall from sinking more than x h_avg: "
+              "k_d = M |g.n| / (x h_avg), M the bodies' mass (the run records k_d)",
+              0.0, false, 1.0),
       key("contact.plastic", "bool", "false", "true or false (not with damping_ratio > 0)",
           "the report's velocity penalty: k_v = m / dt removes a contacting pair's approach "
           "velocity in one step (a plastic impact of the pair), its work dissipated"),

@@ -87,7 +87,14 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs) {
 
 void DynamicsModel::make_integrator(InternalForce force, const SplitDofMap& dofs) {
   run.emplace(mesh(), mass, std::move(force), dofs, dt, DynamicsOptions{scene.damping, 1});
-  contact.emplace(mesh(), PenaltyContact(scene.penalty), scene.contact);
+  PenaltyParameters penalty = scene.penalty;
+  if (scene.quiescent_penetration > 0.0) {
+    // The report's choice: the whole resting weight on one vertex sinks it x h_avg at most.
+    const double weight = mass.total() * std::abs(scene.gravity.dot(scene.wall->normal));
+    penalty.stiffness = weight / (scene.quiescent_penetration * bodies.h_avg);
+  }
+  contact_stiffness = penalty.stiffness > 0.0 ? penalty.stiffness : NAN;
+  contact.emplace(mesh(), PenaltyContact(penalty), scene.contact);
   if (scene.wall) contact->add_plane(scene.wall->point, scene.wall->normal);
   if (scene.contact || scene.wall) run->set_contact(*contact);
   add_boundaries(scene, mesh(), *run);

@@ -5,6 +5,7 @@
 // estimates of the critical step and the step taken; the central-difference integrator with its
 // contact, its boundary conditions and loads, and the cracks of a fragmentation run; and the
 // initial state (each body's velocity and spin).
+#include <cmath>
 #include <optional>
 
 #include "core/element/ElasticityIntegrator.hpp"
@@ -38,6 +39,7 @@ class DynamicsModel {
   int lanczos_iterations = 0;
   double dt = 0.0;  // the step taken: safety x the chosen estimate (with the springs' share)
   long steps = 0;   // how many the run is to take
+  double contact_stiffness = NAN;  // a fixed displacement penalty k_d (NaN: alpha m / dt^2)
 
   std::optional<FragmentationRun> cracks;  // fragmentation runs only
   std::optional<ContactForces> contact;

@@ -212,6 +212,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   r.lanczos_iterations = model.lanczos_iterations;
   r.dt = model.dt;
   r.steps = model.steps;
+  r.contact_stiffness = model.contact_stiffness;
   r.dofs = model.run->dofs().num_dofs();
   RunOutputs outputs(model, out, id.id());
   DynamicsProbe probe(scene, model.bodies, *model.run);

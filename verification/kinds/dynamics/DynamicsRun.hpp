@@ -22,6 +22,7 @@ struct DynamicsRecord {
   int lanczos_iterations = 0;
   long steps = 0;
   double end_time = 0.0;
+  double contact_stiffness = NAN;  // a fixed displacement penalty (NaN: mass-scaled)
   DynamicsMeasures measures;
   bool complete = false;
   std::string failure;

@@ -113,6 +113,13 @@ void DynamicsSceneReader::read_contact() {
   s_.penalty.alpha = number(c, "contact.alpha");
   s_.penalty.damping_ratio = number(c, "contact.damping_ratio");
   s_.penalty.plastic = flag(c, "contact.plastic");
+  s_.quiescent_penetration = number(c, "contact.quiescent_penetration");
+  if (s_.quiescent_penetration > 0.0 &&
+      !(s_.wall && std::abs(s_.gravity.dot(s_.wall->normal)) > 0.0))
+    c.fail_value("quiescent_penetration",
+                 exact_text(s_.quiescent_penetration) +
+                     ": expected a wall and gravity towards it (the resting weight sets the "
+                     "stiffness)");
   if (s_.penalty.plastic && s_.penalty.damping_ratio > 0.0)
     c.fail_value("plastic", "true beside damping_ratio " + exact_text(s_.penalty.damping_ratio) +
                                 ": expected one velocity penalty, not both");

@@ -66,6 +66,9 @@ struct DynamicsScene {
   std::optional<DynamicsWall> wall;
   bool contact = true;  // surface-to-surface contact
   PenaltyParameters penalty;
+  /// > 0: the displacement penalty follows from it instead of alpha: the bodies resting under
+  /// gravity on the wall sink by at most this fraction of h_avg (DynamicsModel).
+  double quiescent_penetration = 0.0;
   // time
   double end = 0.0;  // 0: `steps` sets the length
   int steps = 0;     // 0: `end` sets it

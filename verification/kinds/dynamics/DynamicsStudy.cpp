@@ -85,7 +85,8 @@ std::vector<RecordField<DynamicsRecord>> dynamics_fields(const DynamicsScene& sc
                      field("lanczos_iterations", &R::lanczos_iterations),
                      csv_column<R>("estimate", step_estimate_name(scene.estimate)),
                      csv_column<R>("safety", scene.safety), field("steps", &R::steps),
-                     field("end_time", &R::end_time, fine)});
+                     field("end_time", &R::end_time, fine),
+                     field("contact_stiffness", &R::contact_stiffness, {true, 10, true}, true)});
   for (const auto& [name, member] : measure_fields())  // absent: not measured
     f.push_back({name, [m = member](const R& r) { return number_json(r.measures.*m); },
                  [m = member](R& r, const json& j) { r.measures.*m = read_number(j); },

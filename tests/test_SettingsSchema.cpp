@@ -96,9 +96,13 @@ TEST(SettingsSchema, ScenesDocListsEveryKeyWithItsDefault) {
     EXPECT_TRUE(row.find("| " + d + " |") != std::string::npos ||
                 row.find("| `" + d + "` |") != std::string::npos)
         << key << ": default " << d << " not in the row: " << row;
+    // The range cell is the schema's requirement, which names every choice.
+    const std::string range = requirement_text(spec);
+    EXPECT_NE(row.find("| " + range + " |"), std::string::npos)
+        << key << ": range " << range << " not in the row: " << row;
     if (spec.choices) {
       for (const NamedChoice& c : *spec.choices)
-        EXPECT_NE(row.find(c.name), std::string::npos) << key << ": " << c.name;
+        EXPECT_NE(range.find(c.name), std::string::npos) << key << ": " << c.name;
     }
   }
 }

@@ -8,12 +8,13 @@
 
 namespace vorodg {
 
-ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces)
+ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces,
+                             const ContactFriction& friction)
     : mesh_(mesh),
       law_(law),
       surfaces_(surfaces),
       surface_(mesh),
-      contact_(law, mesh.h_avg() > 0.0 ? mesh.h_avg() : 1.0) {
+      contact_(law, mesh.h_avg() > 0.0 ? mesh.h_avg() : 1.0, friction) {
   reference_.reserve(mesh.offsets().back());
   for (int v : mesh.cell_vertex_list()) reference_.push_back(mesh.vertex(v));
   const std::size_t pairs = reference_.size();
@@ -21,8 +22,9 @@ ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law,
     buffer->assign(pairs, Point::Zero());
 }
 
-void ContactForces::add_plane(const Point& point, const Point& normal) {
-  planes_.emplace_back(point, normal, law_);
+void ContactForces::add_plane(const Point& point, const Point& normal,
+                              const ContactFriction& friction) {
+  planes_.emplace_back(point, normal, law_, friction);
 }
 
 void ContactForces::bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses) {
@@ -54,6 +56,7 @@ void ContactForces::bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& no
 void ContactForces::restart() {
   booked_ += work_.work();
   work_ = ContactWork{};
+  repeat_ = true;
 }
 
 void ContactForces::gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
@@ -73,20 +76,22 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                              Eigen::VectorXd& f) {
   gather_state(u, v);
   std::fill(force_.begin(), force_.end(), Point::Zero());
-  const PairState state{position_, velocity_, mass_, node_, dt};
+  const PairState state{position_, velocity_, mass_, node_, dt, repeat_};
+  repeat_ = false;
   surface_report_ = surfaces_ ? contact_.add_forces(surface_, state, force_) : ContactReport{};
   // The planes into their own buffer first: their net force is the wall's reaction, reported.
   plane_report_ = ContactReport{};
   plane_force_.setZero();
   if (!planes_.empty()) {
     std::fill(plane_pair_force_.begin(), plane_pair_force_.end(), Point::Zero());
-    for (const RigidPlane& plane : planes_)
+    for (RigidPlane& plane : planes_)
       plane_report_ += plane.add_forces(surface_, state, plane_pair_force_);
     for (std::size_t p = 0; p < force_.size(); ++p) {
       plane_force_ += plane_pair_force_[p];
       force_[p] += plane_pair_force_[p];
     }
   }
+  friction_dissipated_ += surface_report_.friction_dissipated + plane_report_.friction_dissipated;
   work_.add(position_, force_);
   f.setZero(num_dofs_);
   // Pair by pair in CSR order: a fixed order, so the nodal sums are reproducible.

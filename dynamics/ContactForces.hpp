@@ -11,6 +11,9 @@
 // contact forces make in the half-step kinetic energy. So StepRecord's balance closes with
 // contact to the integrator's round-off, whatever the penalty law does.
 //
+// Friction (ContactFriction) follows the contact's tangential motion from one evaluation to the
+// next; an evaluation repeated at the same positions (after restart) sees none.
+//
 // Surface contact forces of a pair are equal and opposite (PolygonPenetration), so they move no
 // momentum; the planes' forces are external (the plane takes the reaction) and are reported as
 // their net force on the mesh.
@@ -32,11 +35,15 @@ namespace vorodg {
 class ContactForces {
  public:
   /// `mesh` must outlive this object. `surfaces`: contact between the surface cells of the mesh
-  /// (off: rigid planes only). The grid of the surface search starts at the mesh's h_avg.
-  ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces = true);
+  /// (off: rigid planes only), with Coulomb friction `friction`. The grid of the surface search
+  /// starts at the mesh's h_avg.
+  ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces = true,
+                const ContactFriction& friction = ContactFriction{});
 
-  /// A fixed rigid half-plane with the same law; `normal` points into free space.
-  void add_plane(const Point& point, const Point& normal);
+  /// A fixed rigid half-plane with the same law and its own friction; `normal` points into free
+  /// space.
+  void add_plane(const Point& point, const Point& normal,
+                 const ContactFriction& friction = ContactFriction{});
   /// The surface cells (grow it as cracks expose new surface).
   SurfaceCells& surface() { return surface_; }
   const SurfaceCells& surface() const { return surface_; }
@@ -61,6 +68,8 @@ class ContactForces {
 
   /// The work of the contact forces on the mesh so far (ContactWork, over every segment).
   double work() const { return booked_ + work_.work(); }
+  /// Of that work, what friction's slip has dissipated so far (surfaces and planes; >= 0).
+  double friction_dissipated() const { return friction_dissipated_; }
   /// Of the last evaluation: between surface cells, and against the planes.
   const ContactReport& surface_report() const { return surface_report_; }
   const ContactReport& plane_report() const { return plane_report_; }
@@ -92,6 +101,8 @@ class ContactForces {
   std::vector<RigidPlane> planes_;
   ContactWork work_;
   double booked_ = 0.0;  // work of the segments before the current one
+  double friction_dissipated_ = 0.0;
+  bool repeat_ = false;  // the next evaluation is at the positions of the last one (restart)
 
   std::vector<Point> reference_;  // X per pair
   std::vector<int> node_;         // node per pair, of the bound map

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/material/CoulombFriction.hpp"
+
 namespace vorodg {
 
 void add_closure(double k, double gn, FacePointResponse& r) {
@@ -24,18 +26,15 @@ void add_friction(double mu, double k, double gn, double gt, FrictionState& fric
     return;
   }
   const double limit = mu * k * -gn;  // mu p
-  const double trial = k * (gt - friction.slip);
-  if (std::abs(trial) <= limit) {  // sticking
-    r.traction[1] += trial;
+  const CoulombReturn c = coulomb_return(k * (gt - friction.slip), limit, k);
+  r.traction[1] += c.shear;
+  if (!c.slipping()) {
     r.tangent(1, 1) += k;
     return;
   }
-  const double shear = std::copysign(limit, trial);  // slipping: the spring carries mu p
-  const double slip = gt - shear / k;
-  friction.dissipated += limit * std::abs(slip - friction.slip);
-  friction.slip = slip;
-  r.traction[1] += shear;
-  r.tangent(1, 0) -= std::copysign(mu * k, trial);  // d(mu k (-gn)) / d gn, signed
+  friction.dissipated += c.dissipated;
+  friction.slip += c.slip;
+  r.tangent(1, 0) -= std::copysign(mu * k, c.shear);  // d(mu k (-gn)) / d gn, signed
 }
 
 double friction_stored_energy(double mu, double k, double gn, double gt,

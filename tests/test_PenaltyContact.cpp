@@ -181,7 +181,7 @@ Bounce bounce(double alpha, double zeta, double phase, bool plastic = false) {
   p.damping_ratio = zeta;
   p.plastic = plastic;
   const double dt = 1e-3, v0 = 1.0;
-  const RigidPlane floor(Point(0, -(10.0 + phase) * v0 * dt), Point(0, 1), PenaltyContact(p));
+  RigidPlane floor(Point(0, -(10.0 + phase) * v0 * dt), Point(0, 1), PenaltyContact(p));
   std::vector<Point> x = mesh.vertices(), v(4, Point(0, -v0)), f(4);
   const std::vector<double> m(4, 0.25);
   PairState state;

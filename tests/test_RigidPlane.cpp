@@ -29,7 +29,7 @@ TEST(RigidPlane, SquarePushedIntoTheFloorGetsKTimesDepth) {
   const PolygonMesh mesh = unit_square();
   const SurfaceCells surface(mesh);
   const double k = 2.5e3, d = 0.01;
-  const RigidPlane floor(Point(0, 0), Point(0, 3), PenaltyContact(fixed(k)));  // normalized
+  RigidPlane floor(Point(0, 0), Point(0, 3), PenaltyContact(fixed(k)));  // normalized
   std::vector<Point> x = mesh.vertices();
   for (Point& p : x) p.y() -= d;
   PairState state;
@@ -48,7 +48,7 @@ TEST(RigidPlane, MassScaledStiffnessIsAlphaMOverDtSquared) {
   const SurfaceCells surface(mesh);
   PenaltyParameters p;
   p.alpha = 0.3;
-  const RigidPlane floor(Point(0, 0), Point(0, 1), PenaltyContact(p));
+  RigidPlane floor(Point(0, 0), Point(0, 1), PenaltyContact(p));
   std::vector<Point> x = mesh.vertices();
   const std::vector<double> m{1.0, 2.0, 1.0, 1.0};
   x[0].y() = -0.02;
@@ -68,7 +68,7 @@ TEST(RigidPlane, TiltedPlanePushesAlongItsNormal) {
   const PolygonMesh mesh = unit_square();
   const SurfaceCells surface(mesh);
   const Point n = Point(1, 2).normalized();
-  const RigidPlane wall(Point(0.5, 0.5), n, PenaltyContact(fixed(10.0)));
+  RigidPlane wall(Point(0.5, 0.5), n, PenaltyContact(fixed(10.0)));
   PairState state;
   state.position = mesh.vertices();
   std::vector<Point> f(4, Point::Zero());
@@ -97,7 +97,7 @@ TEST(RigidPlane, NodeSharedByTwoSurfaceCellsIsPushedOnce) {
   const auto x = pair_positions(mesh, dofs, u);
   const auto nodes = pair_nodes(mesh, dofs);
   const double k = 100.0;
-  const RigidPlane floor(Point(0, 0), Point(0, 1), PenaltyContact(fixed(k)));
+  RigidPlane floor(Point(0, 0), Point(0, 1), PenaltyContact(fixed(k)));
   PairState state;
   state.position = x;
   state.node = nodes;
@@ -120,7 +120,7 @@ TEST(RigidPlane, RefusesADegeneratePlane) {
   const PenaltyContact law(fixed(1.0));
   EXPECT_THROW(RigidPlane(Point(0, 0), Point(0, 0), law), InputError);
   EXPECT_THROW(RigidPlane(Point(0, std::nan("")), Point(0, 1), law), InputError);
-  const RigidPlane floor(Point(0, 1), Point(0, 1), law);
+  RigidPlane floor(Point(0, 1), Point(0, 1), law);
   EXPECT_NEAR(floor.gap(Point(3, 0.5)), -0.5, 1e-15);
 }
 

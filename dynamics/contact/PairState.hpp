@@ -26,6 +26,9 @@ struct PairState {
   std::span<const int> node;
   /// The time step of the mass-scaled stiffness k = alpha m / dt^2.
   double dt = 0.0;
+  /// Whether the positions are those of the last evaluation (an evaluation repeated after a
+  /// remap): friction then sees no tangential motion, where it would otherwise take dt v.
+  bool repeated = false;
 
   int node_of(int pair) const { return node.empty() ? pair : node[pair]; }
 };

@@ -50,14 +50,27 @@ PenaltyContact::Response PenaltyContact::respond(double depth, double approach_r
   const double k = stiffness(mass, dt);
   const double rate = std::max(approach_rate, 0.0);
   const double c = p_.plastic ? mass / dt : p_.damping_ratio > 0.0 ? damping(k, mass) : 0.0;
-  return {k * depth + c * rate, 0.5 * k * depth * depth, c * rate * rate};
+  return {k * depth + c * rate, 0.5 * k * depth * depth, c * rate * rate, k};
+}
+
+Point PenaltyContact::relative_velocity(const Penetration& pen, int p, int e0, int e1,
+                                        const PairState& state) {
+  if (state.velocity.empty()) return Point::Zero();
+  const Point vq = (1.0 - pen.t) * state.velocity[e0] + pen.t * state.velocity[e1];
+  return state.velocity[p] - vq;
 }
 
 double PenaltyContact::approach_rate(const Penetration& pen, int p, int e0, int e1,
                                      const PairState& state) {
-  if (state.velocity.empty()) return 0.0;
-  const Point vq = (1.0 - pen.t) * state.velocity[e0] + pen.t * state.velocity[e1];
-  return -(state.velocity[p] - vq).dot(pen.normal);
+  return -relative_velocity(pen, p, e0, e1, state).dot(pen.normal);
+}
+
+void PenaltyContact::distribute(const Point& f, double t, int p, int e0, int e1,
+                                std::span<Point> force) {
+  const Point f1 = -t * f;
+  force[p] += f;
+  force[e0] += -f - f1;  // written so that the three forces cancel to the last bit possible
+  force[e1] += f1;
 }
 
 PenaltyContact::Response PenaltyContact::apply(const Penetration& pen, int p, int e0, int e1,
@@ -67,11 +80,7 @@ PenaltyContact::Response PenaltyContact::apply(const Penetration& pen, int p, in
   if (!state.mass.empty())
     mass = reduced_mass(state.mass[p], std::min(state.mass[e0], state.mass[e1]));
   const Response r = respond(pen.depth, approach_rate(pen, p, e0, e1, state), mass, state.dt);
-  const Point f = r.force * pen.normal;
-  const Point f1 = -pen.t * f;
-  force[p] += f;
-  force[e0] += -f - f1;  // written so that the three forces cancel to the last bit possible
-  force[e1] += f1;
+  distribute(r.force * pen.normal, pen.t, p, e0, e1, force);
   return r;
 }
 

@@ -77,11 +77,16 @@ class PenaltyContact {
     double force = 0.0;  // magnitude along n
     double potential = 0.0;
     double dissipation_power = 0.0;
+    double stiffness = 0.0;  // k_d, also the stick spring of friction (ContactFriction)
   };
   /// The law for depth d > 0, approach rate -v_n (> 0 while the depth grows), contact mass m
   /// and step dt.
   Response respond(double depth, double approach_rate, double mass, double dt) const;
 
+  /// The velocity of pair `p` relative to the point q of its penetration `pen` into the edge of
+  /// pairs `e0`, `e1`; zero when the state has no velocities.
+  static Point relative_velocity(const Penetration& pen, int p, int e0, int e1,
+                                 const PairState& state);
   /// -v_n: how fast pair `p` approaches the point q of its penetration `pen` into the edge of
   /// pairs `e0`, `e1` (> 0 while the depth grows); 0 when the state has no velocities.
   static double approach_rate(const Penetration& pen, int p, int e0, int e1,
@@ -91,6 +96,8 @@ class PenaltyContact {
   /// pairs `e0`, `e1` at the ends of the penetrated edge. Adds to `force` (one entry per pair).
   Response apply(const Penetration& pen, int p, int e0, int e1, const PairState& state,
                  std::span<Point> force) const;
+  /// Adds `f` to pair `p` and -f split (1 - t, t) over the pairs `e0`, `e1` of the edge.
+  static void distribute(const Point& f, double t, int p, int e0, int e1, std::span<Point> force);
 
  private:
   PenaltyParameters p_;

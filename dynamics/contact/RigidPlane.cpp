@@ -10,8 +10,9 @@
 
 namespace vorodg {
 
-RigidPlane::RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law)
-    : point_(point), normal_(normal), law_(law) {
+RigidPlane::RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law,
+                       const ContactFriction& friction)
+    : point_(point), normal_(normal), law_(law), friction_(friction) {
   const double length = normal.norm();
   if (!point.allFinite() || !std::isfinite(length) || length == 0.0)
     throw InputError("rigid plane: expected a finite point and a nonzero finite normal, found (" +
@@ -21,7 +22,7 @@ RigidPlane::RigidPlane(const Point& point, const Point& normal, const PenaltyCon
 }
 
 ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairState& state,
-                                     std::span<Point> force) const {
+                                     std::span<Point> force) {
   const PolygonMesh& mesh = surface.mesh();
   check_pair_state(mesh, state, "rigid plane");
   law_.check(state, "rigid plane");
@@ -30,6 +31,7 @@ ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairStat
                      " force entries: expected one per (cell, vertex) pair, " +
                      std::to_string(state.position.size()));
   ContactReport report;
+  shear_next_.clear();
   // Penetrating pairs are few: a set of their nodes is cheaper than a flag per node.
   std::unordered_set<int> taken;
   constexpr double kRigid = std::numeric_limits<double>::infinity();
@@ -46,13 +48,32 @@ ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairStat
       const double rate = state.velocity.empty() ? 0.0 : -state.velocity[p].dot(normal_);
       const auto r = law_.respond(depth, rate, mass, state.dt);
       force[p] += r.force * normal_;
+      if (friction_.active()) add_friction(p, r, state, force, report);
       ++report.contacts;
       report.potential += r.potential;
       report.dissipation_power += r.dissipation_power;
       report.max_depth = std::max(report.max_depth, depth);
     }
   }
+  std::swap(shear_, shear_next_);
   return report;
+}
+
+void RigidPlane::add_friction(int p, const PenaltyContact::Response& normal, const PairState& state,
+                              std::span<Point> force, ContactReport& report) {
+  if (state.velocity.empty())
+    throw InputError("rigid plane: friction needs the velocity of every pair: found none");
+  const Point tangent(-normal_.y(), normal_.x());
+  const auto known = shear_.find(p);
+  const double previous = known == shear_.end() ? 0.0 : known->second;
+  const CoulombReturn c = friction_.respond(
+      previous, (state.repeated ? 0.0 : state.dt) * state.velocity[p].dot(tangent), normal.force,
+      normal.stiffness);
+  force[p] += c.shear * tangent;
+  shear_next_.emplace(p, c.shear);
+  report.potential += ContactFriction::stored_energy(c.shear, normal.stiffness);
+  report.friction_dissipated += c.dissipated;
+  report.sliding += c.slipping();
 }
 
 }  // namespace vorodg

@@ -4,8 +4,13 @@
 // g = (x - point) . n < 0 penetrates by d = -g and is pushed along n; the plane takes the
 // reaction, so these forces are external to the mesh and do work on it. The target is rigid, so
 // the law's reduced mass is the vertex's own mass.
+//
+// The plane has its own Coulomb friction (ContactFriction; 0 by default): a contacting vertex
+// carries its shear along the plane from step to step, keyed by its pair.
 #include <span>
+#include <unordered_map>
 
+#include "dynamics/contact/ContactFriction.hpp"
 #include "dynamics/contact/ContactReport.hpp"
 #include "dynamics/contact/PairState.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
@@ -17,22 +22,31 @@ class RigidPlane {
  public:
   /// `normal` points out of the plane's solid side, into the free space; it is normalized.
   /// Throws InputError for a zero or non-finite normal, or a non-finite point.
-  RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law);
+  RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law,
+             const ContactFriction& friction = ContactFriction{});
 
   const Point& point() const { return point_; }
   const Point& normal() const { return normal_; }
+  const ContactFriction& friction() const { return friction_; }
   /// Signed distance from the plane, negative inside the solid.
   double gap(const Point& x) const { return (x - point_).dot(normal_); }
 
   /// Adds the plane's forces on the vertices of surface cells to `force` (one entry per pair;
   /// each node counted once, on its first pair in surface order) and reports the step.
   ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
-                           std::span<Point> force) const;
+                           std::span<Point> force);
 
  private:
+  /// Friction on pair p, pushed by `normal` of stiffness k: adds the shear along the plane.
+  void add_friction(int p, const PenaltyContact::Response& normal, const PairState& state,
+                    std::span<Point> force, ContactReport& report);
+
   Point point_;
   Point normal_;
   PenaltyContact law_;
+  ContactFriction friction_;
+  // The shear of each contacting pair at the last evaluation and at this one.
+  std::unordered_map<int, double> shear_, shear_next_;
 };
 
 }  // namespace vorodg

@@ -34,8 +34,9 @@ Box box_of(std::span<const Point> loop, int cell) {
 
 }  // namespace
 
-SurfaceContact::SurfaceContact(const PenaltyContact& law, double grid_spacing)
-    : law_(law), grid_(grid_spacing) {}
+SurfaceContact::SurfaceContact(const PenaltyContact& law, double grid_spacing,
+                               const ContactFriction& friction)
+    : law_(law), friction_(friction), grid_(grid_spacing) {}
 
 const std::vector<IndexPair>& SurfaceContact::find_pairs(const SurfaceCells& surface,
                                                          std::span<const Point> position) {
@@ -82,14 +83,16 @@ ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const Pair
   return report;
 }
 
-std::optional<double> SurfaceContact::acting_depth(std::uint64_t key, double depth, double reach,
-                                                   const PolygonMesh& mesh, int b,
-                                                   ContactReport& report) {
+std::optional<SurfaceContact::Acting> SurfaceContact::acting_depth(std::uint64_t key, double depth,
+                                                                   double reach,
+                                                                   const PolygonMesh& mesh, int b,
+                                                                   ContactReport& report) {
   const bool known_tunnel = tunnelled_.count(key) != 0;
   if (!known_tunnel) {
-    double offset = 0.0;
+    double offset = 0.0, shear = 0.0;
     if (const auto known = inside_.find(key); known != inside_.end()) {
-      offset = std::min(known->second, depth);  // the least depth seen
+      offset = std::min(known->second.offset, depth);  // the least depth seen
+      shear = known->second.shear;
     } else if (depth <= kTunnelDepth * std::sqrt(mesh.cell_area(b))) {
       offset = std::max(depth - reach, 0.0);
       report.new_late += offset > 0.0;
@@ -97,9 +100,9 @@ std::optional<double> SurfaceContact::acting_depth(std::uint64_t key, double dep
       offset = -1.0;  // tunnelled
     }
     if (offset >= 0.0) {
-      inside_next_.emplace(key, offset);
+      inside_next_.emplace(key, Tracked{offset, 0.0});
       report.late += offset > 0.0;
-      return depth - offset;
+      return Acting{depth - offset, shear};
     }
   }
   tunnelled_next_.insert(key);
@@ -134,13 +137,33 @@ void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const 
     if (!taken_.insert(key_of(state.node_of(p), b)).second)
       continue;  // this node is already pushed out of b
     Penetration acting = *pen;
-    acting.depth = *depth;
+    acting.depth = depth->depth;
     const auto r = law_.apply(acting, p, e0, e1, state, force);
+    if (friction_.active())
+      add_friction(key_of(p, b), acting, p, e0, e1, r, depth->shear, state, force, report);
     ++report.contacts;
     report.potential += r.potential;
     report.dissipation_power += r.dissipation_power;
     report.max_depth = std::max(report.max_depth, pen->depth);
   }
+}
+
+void SurfaceContact::add_friction(std::uint64_t key, const Penetration& pen, int p, int e0, int e1,
+                                  const PenaltyContact::Response& normal, double previous_shear,
+                                  const PairState& state, std::span<Point> force,
+                                  ContactReport& report) {
+  if (state.velocity.empty())
+    throw InputError("surface contact: friction needs the velocity of every pair: found none");
+  const Point tangent(-pen.normal.y(), pen.normal.x());
+  const double increment = (state.repeated ? 0.0 : state.dt) *
+                           PenaltyContact::relative_velocity(pen, p, e0, e1, state).dot(tangent);
+  const CoulombReturn c =
+      friction_.respond(previous_shear, increment, normal.force, normal.stiffness);
+  PenaltyContact::distribute(c.shear * tangent, pen.t, p, e0, e1, force);
+  inside_next_[key].shear = c.shear;
+  report.potential += ContactFriction::stored_energy(c.shear, normal.stiffness);
+  report.friction_dissipated += c.dissipated;
+  report.sliding += c.slipping();
 }
 
 }  // namespace vorodg

@@ -27,7 +27,8 @@
 //    no force for as long as it stays inside (`tunnelled`, `new_tunnels`).
 // Without velocities in the state every first finding within kTunnelDepth is taken as it is.
 // Penetrations are tracked from one evaluation to the next by (pair, target cell), which a remap
-// does not change.
+// does not change; so is the shear of friction (ContactFriction), which a contact carries from
+// step to step and forgets when it ends.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -35,6 +36,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "dynamics/contact/ContactFriction.hpp"
 #include "dynamics/contact/ContactGrid.hpp"
 #include "dynamics/contact/ContactReport.hpp"
 #include "dynamics/contact/PairState.hpp"
@@ -47,7 +49,8 @@ class SurfaceContact {
  public:
   /// grid_spacing > 0 is the grid's smallest spacing: the mesh's h_avg is the natural choice
   /// (the search raises it to the largest surface-cell box each step).
-  SurfaceContact(const PenaltyContact& law, double grid_spacing);
+  SurfaceContact(const PenaltyContact& law, double grid_spacing,
+                 const ContactFriction& friction = ContactFriction{});
 
   /// Adds the contact forces between surface cells to `force` (one entry per pair, the mesh's
   /// CSR layout; the integrator sums the pairs of each node) and reports the step.
@@ -64,6 +67,7 @@ class SurfaceContact {
   const std::vector<IndexPair>& cell_pairs() const { return cell_pairs_; }
 
   const PenaltyContact& law() const { return law_; }
+  const ContactFriction& friction() const { return friction_; }
   const ContactGrid& grid() const { return grid_; }
 
  private:
@@ -73,8 +77,17 @@ class SurfaceContact {
   /// The depth the law acts on for the penetration `key` ((pair, target cell)) found at
   /// `depth` into cell b, whose first finding could have reached `reach`: beyond its offset, or
   /// none if it is a tunnelled one (see above). Records it for the next evaluation either way.
-  std::optional<double> acting_depth(std::uint64_t key, double depth, double reach,
+  struct Acting {
+    double depth = 0.0;  // what the law acts on
+    double shear = 0.0;  // the friction shear carried from the last evaluation
+  };
+  std::optional<Acting> acting_depth(std::uint64_t key, double depth, double reach,
                                      const PolygonMesh& mesh, int b, ContactReport& report);
+  /// Friction on the contact `key` of pair p in the edge (e0, e1), pushed with `normal` of
+  /// stiffness k: adds the shear's forces and records the shear for the next evaluation.
+  void add_friction(std::uint64_t key, const Penetration& pen, int p, int e0, int e1,
+                    const PenaltyContact::Response& normal, double previous_shear,
+                    const PairState& state, std::span<Point> force, ContactReport& report);
 
   /// A first depth beyond this fraction of the target's size (the root of its reference area)
   /// is a tunnelled vertex.
@@ -84,14 +97,20 @@ class SurfaceContact {
   static constexpr double kReachSlack = 2.0;
 
   PenaltyContact law_;
+  ContactFriction friction_;
   ContactGrid grid_;
   std::vector<Box> boxes_;                   // per surface cell, in surface order
   std::vector<IndexPair> surface_pairs_;     // the same pairs, by index in surface order
   std::vector<IndexPair> cell_pairs_;        // mesh cell ids
   std::unordered_set<std::uint64_t> taken_;  // (node, target cell) keys of this step
   // (pair, target cell) keys of the penetrations found at the last evaluation and at this one:
-  // those that got a force, with their offsets, and those left alone as tunnelled.
-  std::unordered_map<std::uint64_t, double> inside_, inside_next_;
+  // those that got a force, with their offsets and friction shears, and those left alone as
+  // tunnelled.
+  struct Tracked {
+    double offset = 0.0;
+    double shear = 0.0;
+  };
+  std::unordered_map<std::uint64_t, Tracked> inside_, inside_next_;
   std::unordered_set<std::uint64_t> tunnelled_, tunnelled_next_;
 };
 

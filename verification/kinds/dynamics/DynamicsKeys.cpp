@@ -137,6 +137,10 @@ std::vector<SceneKey> contact_keys() {
               "obliquity; else [-1, 0]",
               "not [0, 0], each |component| <= 1e6",
               "the plane's normal, pointing into free space (normalized)", -1e6, false, 1e6),
+      bounded("wall.friction", "number", "0", "0 <= mu <= 10",
+              "Coulomb friction between the plane and the bodies (docs/contact.md); 0: "
+              "frictionless",
+              0.0, false, 10.0),
       key("contact.enabled", "bool", "true", "true or false",
           "contact between the surface cells of every body (the wall acts whatever this says)"),
       bounded("contact.alpha", "number", "0.1", "0 < alpha <= 1",
@@ -149,6 +153,10 @@ std::vector<SceneKey> contact_keys() {
               "bodies resting under gravity on the wall from sinking more than x h_avg: "
               "k_d = M |g.n| / (x h_avg), M the bodies' mass (the run records k_d)",
               0.0, false, 1.0),
+      bounded("contact.friction", "number", "0", "0 <= mu <= 10",
+              "Coulomb friction between surface cells, fragments included (docs/contact.md); 0: "
+              "frictionless",
+              0.0, false, 10.0),
       key("contact.plastic", "bool", "false", "true or false (not with damping_ratio > 0)",
           "the report's velocity penalty: k_v = m / dt removes a contacting pair's approach "
           "velocity in one step (a plastic impact of the pair), its work dissipated"),

@@ -94,8 +94,11 @@ void DynamicsModel::make_integrator(InternalForce force, const SplitDofMap& dofs
     penalty.stiffness = weight / (scene.quiescent_penetration * bodies.h_avg);
   }
   contact_stiffness = penalty.stiffness > 0.0 ? penalty.stiffness : NAN;
-  contact.emplace(mesh(), PenaltyContact(penalty), scene.contact);
-  if (scene.wall) contact->add_plane(scene.wall->point, scene.wall->normal);
+  contact.emplace(mesh(), PenaltyContact(penalty), scene.contact,
+                  ContactFriction(scene.contact_friction, "contact.friction"));
+  if (scene.wall)
+    contact->add_plane(scene.wall->point, scene.wall->normal,
+                       ContactFriction(scene.wall->friction, "wall.friction"));
   if (scene.contact || scene.wall) run->set_contact(*contact);
   add_boundaries(scene, mesh(), *run);
   if (cracks) cracks->attach(*run, integrator, variation, scene.contact ? &*contact : nullptr, 1);

@@ -78,6 +78,7 @@ void DynamicsSceneReader::read_wall() {
   if (!impact && !top_.has("wall")) {
     note("wall.point", "none");
     note("wall.normal", "none");
+    note("wall.friction", "none");
     return;
   }
   const DynamicsBody& body = s_.bodies[0];
@@ -90,6 +91,7 @@ void DynamicsSceneReader::read_wall() {
   w.normal = point(o, "wall.normal", fallback.normal);
   if (w.normal.norm() == 0.0) o.fail_value("normal", "expected not [0, 0]");
   w.normal.normalize();
+  w.friction = number(o, "wall.friction");
   o.finish();
   const double tolerance = 1e-12 * body.domain.scale();
   for (const DynamicsBody& b : s_.bodies)
@@ -113,6 +115,7 @@ void DynamicsSceneReader::read_contact() {
   s_.penalty.alpha = number(c, "contact.alpha");
   s_.penalty.damping_ratio = number(c, "contact.damping_ratio");
   s_.penalty.plastic = flag(c, "contact.plastic");
+  s_.contact_friction = number(c, "contact.friction");
   s_.quiescent_penetration = number(c, "contact.quiescent_penetration");
   if (s_.quiescent_penetration > 0.0 &&
       !(s_.wall && std::abs(s_.gravity.dot(s_.wall->normal)) > 0.0))

@@ -45,6 +45,7 @@ struct DynamicsBody {
 struct DynamicsWall {
   Point point = Point::Zero();
   Point normal = Point(-1.0, 0.0);  // into free space; normalized by the reader
+  double friction = 0.0;             // Coulomb's mu between the plane and the bodies
 };
 
 struct DynamicsScene {
@@ -66,6 +67,7 @@ struct DynamicsScene {
   std::optional<DynamicsWall> wall;
   bool contact = true;  // surface-to-surface contact
   PenaltyParameters penalty;
+  double contact_friction = 0.0;  // Coulomb's mu between surface cells
   /// > 0: the displacement penalty follows from it instead of alpha: the bodies resting under
   /// gravity on the wall sink by at most this fraction of h_avg (DynamicsModel).
   double quiescent_penetration = 0.0;

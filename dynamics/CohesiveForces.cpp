@@ -147,6 +147,22 @@ void CohesiveForces::bind_face(const SplitDofMap& dofs, Face& f) const {
   }
 }
 
+std::pair<Eigen::Vector2d, Eigen::Vector2d> CohesiveForces::frame(const Face& face,
+                                                                  const Eigen::VectorXd& u) const {
+  if (!turning_) return {face.n, face.t};
+  const MeshEdge& edge = mesh_.edge(face.edge);
+  auto mean_end = [&](int j) {
+    return Eigen::Vector2d(0.5 *
+                           (u.segment<2>(2 * face.node0[j]) + u.segment<2>(2 * face.node1[j])));
+  };
+  const Eigen::Vector2d d =
+      mesh_.vertex(edge.v1) + mean_end(1) - mesh_.vertex(edge.v0) - mean_end(0);
+  const double length = d.norm();
+  if (!(length > 1e-9 * face.length)) return {face.n, face.t};  // crushed flat: keep the last
+  const Eigen::Vector2d t = d / length;
+  return {Eigen::Vector2d(t.y(), -t.x()), t};  // as make_face builds them
+}
+
 void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
   const SegmentRule& rule = gauss2_segment();
   double work = 0.0;
@@ -154,6 +170,7 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
     Face& face = faces_[slot];
     if (face.released) continue;
     const CohesiveLaw& law = law_of(slot);
+    const auto [n, t] = frame(face, u);
     Eigen::Vector2d jump[2];  // u_cell1 - u_cell0 at v0 and v1
     for (int j = 0; j < 2; ++j)
       jump[j] = u.segment<2>(2 * face.node1[j]) - u.segment<2>(2 * face.node0[j]);
@@ -161,26 +178,27 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       const double s = rule.t[q], w = rule.weights[q] * face.length;
       const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
       QuadraturePoint& p = face.points[q];
-      const Eigen::Vector2d d(g.dot(face.n), g.dot(face.t));
+      const Eigen::Vector2d d(g.dot(n), g.dot(t));
       FacePointResponse r = face_point_response(law, d, closure_stiffness(), p.history);
       add_friction(friction_, closure_stiffness(), d[0], d[1], p.friction, r);
-      const Eigen::Vector2d tau = r.traction;
-      work -= 0.5 * w * (p.traction + tau).dot(d - p.opening);
+      const Eigen::Vector2d force = w * (r.traction[0] * n + r.traction[1] * t);
+      work -= 0.5 * (p.force + force).dot(g - p.jump);
       p.opening = d;
-      p.traction = tau;
-      add_point_force(face, q, tau, f);
+      p.traction = r.traction;
+      p.jump = g;
+      p.force = force;
+      add_point_force(face, q, force, f);
     }
     face.end_gap = std::min(jump[0].norm(), jump[1].norm());
   }
   work_ += work;
 }
 
-void CohesiveForces::add_point_force(const Face& face, int q, const Eigen::Vector2d& tau,
+void CohesiveForces::add_point_force(const Face& face, int q, const Eigen::Vector2d& force,
                                      Eigen::VectorXd& f) {
   const SegmentRule& rule = gauss2_segment();
-  const double s = rule.t[q], w = rule.weights[q] * face.length;
+  const double s = rule.t[q];
   // The traction resists the opening: it pulls cell1's side back and cell0's side along.
-  const Eigen::Vector2d force = w * (tau[0] * face.n + tau[1] * face.t);
   for (int j = 0; j < 2; ++j) {
     const double share = j == 0 ? 1.0 - s : s;
     f.segment<2>(2 * face.node1[j]) -= share * force;
@@ -191,7 +209,7 @@ void CohesiveForces::add_point_force(const Face& face, int q, const Eigen::Vecto
 void CohesiveForces::reassemble(Eigen::VectorXd& f) const {
   for (const Face& face : faces_) {
     if (face.released) continue;
-    for (int q = 0; q < 2; ++q) add_point_force(face, q, face.points[q].traction, f);
+    for (int q = 0; q < 2; ++q) add_point_force(face, q, face.points[q].force, f);
   }
 }
 

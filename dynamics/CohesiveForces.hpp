@@ -34,9 +34,10 @@
 // booked missed the law's closed form by 30 % at 0.5 x the cell step, by 0.3 % at 0.05 x.
 // With K0 the springs are bounded; eigenvalue_bound() gives their share of the step.
 //
-// Work. Every force is a linear map of a point's traction with the same operator that gives the
-// point's opening from the node displacements, so the trapezoid of the nodal forces over a step
-// equals, point by point, -w (tau_n + tau_n+1) / 2 . (g_n+1 - g_n). That is what work() sums:
+// Work. Every force is a linear map of a point's force w (tau_n n + tau_t t) with the same
+// operator that gives the point's jump g from the node displacements, so the trapezoid of the
+// nodal forces over a step equals, point by point, -(F_n + F_n+1) / 2 . (g_n+1 - g_n), in the
+// global frame: exact whether or not the face's frame turns. That is what work() sums:
 // exactly the cohesive share of CentralDifference's discrete energy identity. It does not depend
 // on the DOF map, so it runs on across node splits (a split copies the displacements, so no
 // opening jumps). The law's closed forms (dissipated and stored energy) are given beside it: the
@@ -70,6 +71,11 @@ class CohesiveForces {
   /// 0 <= mu <= 10 (finite). 0, the default, is frictionless.
   void set_friction(double mu);
   double friction() const { return friction_; }
+  /// Whether each face reads its opening in a frame that turns with it (for corotational
+  /// kinematics, where fragments spin): the line through the mean current positions of its two
+  /// sides' ends. Off (the default), the reference frame, which a turned face misreads: a
+  /// normal opening of a face turned by theta is read as cos theta normal, sin theta shear.
+  void set_turning_frames(bool on) { turning_ = on; }
   /// Interior edge e cracks: its points start from zero opening. Throws InputError for a
   /// boundary edge or an edge already cracked.
   void add_edge(int e);
@@ -137,6 +143,8 @@ class CohesiveForces {
     FrictionState friction;
     Eigen::Vector2d opening = Eigen::Vector2d::Zero();  // (normal, tangential), last evaluation
     Eigen::Vector2d traction = Eigen::Vector2d::Zero();
+    Eigen::Vector2d jump = Eigen::Vector2d::Zero();   // u_cell1 - u_cell0, global, last evaluation
+    Eigen::Vector2d force = Eigen::Vector2d::Zero();  // w (tau_n n + tau_t t), global, on cell1
   };
   struct Face {
     int edge;
@@ -149,8 +157,13 @@ class CohesiveForces {
     bool released = false;
   };
   static Face make_face(const PolygonMesh& mesh, int e);
-  /// Spreads point q's traction tau over the face's four bound nodes.
-  static void add_point_force(const Face& face, int q, const Eigen::Vector2d& tau,
+  /// The face's (n, t) now: the reference ones, or with turning frames those of the line
+  /// through the mean positions of its two sides' ends.
+  std::pair<Eigen::Vector2d, Eigen::Vector2d> frame(const Face& face,
+                                                    const Eigen::VectorXd& u) const;
+  /// Spreads point q's force (global, the one cell1's side takes with a minus) over the face's
+  /// four bound nodes.
+  static void add_point_force(const Face& face, int q, const Eigen::Vector2d& force,
                               Eigen::VectorXd& f);
   /// The penalty against overclosure: a fraction of K0. At K0 itself a closing face is a
   /// spring whose contact lasts about one step at the stable step, and the switching of such a
@@ -161,6 +174,7 @@ class CohesiveForces {
   }
   static constexpr double kClosureFraction = 0.1;
   double friction_ = 0.0;  // Coulomb's mu on closed faces
+  bool turning_ = false;   // the faces' frames turn with them
   /// The law of face `slot` (the shared one unless the strength varies).
   const CohesiveLaw& law_of(std::size_t slot) const {
     return face_laws_.empty() ? law_ : face_laws_[slot];

@@ -79,6 +79,8 @@ class ContactForces {
     all += plane_report_;
     return all;
   }
+  /// Per pair, the planes' share of pair_forces() (zero without planes).
+  std::span<const Point> plane_pair_forces() const { return plane_pair_force_; }
   /// Net force of the planes on the mesh at the last evaluation.
   const Point& plane_force() const { return plane_force_; }
   /// Per pair (the mesh's CSR layout), the contact forces of the last evaluation.

@@ -114,6 +114,44 @@ TEST(CohesiveFriction, WithoutFrictionAClosedFaceCarriesNoShear) {
   EXPECT_EQ(r.work, 0.0);
 }
 
+TEST(CohesiveFriction, ATurnedFaceReadsItsOpeningInItsOwnFrame) {
+  // Both cells turned rigidly by theta about the origin, cell1 pressed into cell0 by delta along
+  // the turned normal: with turning frames the face carries the closure's k delta L along R n
+  // and no shear, at any theta; in the reference frame it would read a shear of k delta sin.
+  Pair p;
+  const double k = 0.1 * p.law.parameters().initial_stiffness, delta = 1e-7;
+  std::vector<char> connected(p.model.mesh.num_edges(), 1);
+  connected[p.edge] = 0;
+  const SplitDofMap dofs(p.model.mesh, connected);
+  const int cell1 = p.model.mesh.edge(p.edge).cell1;
+  for (const double theta : {0.3, 2.0, 10.0}) {
+    const Eigen::Matrix2d R = Eigen::Rotation2Dd(theta).toRotationMatrix();
+    Eigen::VectorXd u(dofs.num_dofs());
+    for (int c = 0; c < p.model.mesh.num_cells(); ++c)
+      for (int j = 0; j < p.model.mesh.cell_size(c); ++j) {
+        const Point X = p.model.mesh.vertex(p.model.mesh.cell_vertices(c)[j]);
+        const Point x = R * (c == cell1 ? Point(X - delta * p.n) : X);
+        u.segment<2>(2 * dofs.node(c, j)) = x - X;
+      }
+    for (const bool turning : {true, false}) {
+      CohesiveForces faces(p.model.mesh, p.law);
+      faces.set_turning_frames(turning);
+      faces.add_edge(p.edge);
+      faces.bind(dofs);
+      Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.num_dofs());
+      faces.evaluate(u, f);
+      Eigen::Vector2d on_cell1 = Eigen::Vector2d::Zero();
+      for (int j = 0; j < p.model.mesh.cell_size(cell1); ++j)
+        on_cell1 += f.segment<2>(2 * dofs.node(cell1, j));
+      const Eigen::Vector2d expected = k * delta * p.length * (R * p.n);
+      if (turning)
+        EXPECT_LT((on_cell1 - expected).norm(), 1e-9 * expected.norm()) << "theta " << theta;
+      else
+        EXPECT_GT((on_cell1 - expected).norm(), 0.1 * expected.norm()) << "theta " << theta;
+    }
+  }
+}
+
 TEST(CohesiveFriction, RefusesABadCoefficient) {
   Pair p;
   CohesiveForces faces(p.model.mesh, p.law);

@@ -22,6 +22,9 @@ DynamicsProbe::DynamicsProbe(const DynamicsScene& scene, const BodiesMesh& bodie
     m_.impact_velocity = -start_.momentum.dot(n) / total_mass_;
     m_.rebound_estimate = m_.impact_velocity;
     m_.contact_time_estimate = 2.0 * extent(scene.bodies[0].domain, n) / scene.bar_speed();
+    m_.peak_wall_force = 0.0;
+    m_.peak_wall_force_estimate = scene.density * scene.bar_speed() * m_.impact_velocity *
+                                  extent(scene.bodies[0].domain, Point(-n.y(), n.x()));
   }
   problem_ = scene.problem->probe(scene, bodies, run, m_);
 }
@@ -35,6 +38,7 @@ void DynamicsProbe::observe_contact() {
   m_.max_penetration_over_h = m_.max_penetration / bodies_.h_avg;
   m_.tunnelled_contacts += a.new_tunnels;
   m_.late_contacts += a.new_late;
+  if (scene_.wall) m_.peak_wall_force = std::max(m_.peak_wall_force, contact->plane_force().norm());
   in_contact_ = a.contacts + b.contacts > 0;
   if (!in_contact_) return;
   if (std::isnan(m_.contact_start)) m_.contact_start = run_.time();
@@ -74,6 +78,8 @@ const DynamicsMeasures& DynamicsProbe::finish() {
   if (m_.contact_steps > 0) m_.contact_time = m_.contact_end - m_.contact_start + run_.dt();
   if (scene_.wall)
     m_.rebound_velocity = run_.record().momentum.dot(scene_.wall->normal) / total_mass_;
+  if (const ContactForces* contact = run_.contact())
+    m_.contact_friction_dissipated = contact->friction_dissipated();
   return m_;
 }
 

@@ -32,6 +32,13 @@ struct DynamicsMeasures {
   bool contact_ended = true;        // no contact at the last step
   // wall: normal speeds of the centre of mass, towards the wall at t = 0 and away at the end
   double impact_velocity = NAN, rebound_velocity = NAN, rebound_estimate = NAN;
+  // the largest net force of the wall on the bodies (per unit thickness), beside the 1D bar's
+  // rho c_bar v_n times the body's width across the normal
+  double peak_wall_force = NAN, peak_wall_force_estimate = NAN;
+  // column-impact: the first time a vertex of the column's rear (upper) half touches the plane
+  double rear_strike_time = NAN;
+  // the slip work of Coulomb friction: between surfaces and on the wall, and on crack faces
+  double contact_friction_dissipated = NAN, face_friction_dissipated = NAN;
   // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
   double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
   double single_cell_mass_fraction = NAN;  // the mass in fragments of one cell, of the total
@@ -39,6 +46,9 @@ struct DynamicsMeasures {
   // deformation gradient (exact for a rigid turn of any size, whatever the kinematics)
   double main_body_rotation = NAN;
   double cracked_edges = NAN, broken_edges = NAN;
+  // where the broken edges are, as fractions of them (runs with a wall, CrackLocations): within
+  // a body width of the impact point, in the middle third of the body's length, elsewhere
+  double broken_near_impact = NAN, broken_mid_length = NAN, broken_elsewhere = NAN;
   double released_edges = NAN;  // broken faces let go to surface contact (CohesiveForces)
   // wall seconds in the insertion check and in the rebuilds after cracks (DynamicFracture)
   double check_seconds = NAN, rebuild_seconds = NAN;

@@ -45,7 +45,7 @@ struct DynamicsBody {
 struct DynamicsWall {
   Point point = Point::Zero();
   Point normal = Point(-1.0, 0.0);  // into free space; normalized by the reader
-  double friction = 0.0;             // Coulomb's mu between the plane and the bodies
+  double friction = 0.0;            // Coulomb's mu between the plane and the bodies
 };
 
 struct DynamicsScene {

@@ -55,6 +55,11 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"rebound_estimate", &M::rebound_estimate},
       {"contact_time", &M::contact_time},
       {"contact_time_estimate", &M::contact_time_estimate},
+      {"peak_wall_force", &M::peak_wall_force},
+      {"peak_wall_force_estimate", &M::peak_wall_force_estimate},
+      {"rear_strike_time", &M::rear_strike_time},
+      {"contact_friction_dissipated", &M::contact_friction_dissipated},
+      {"face_friction_dissipated", &M::face_friction_dissipated},
       {"fragments", &M::fragments},
       {"max_fragment_mass_fraction", &M::max_fragment_mass_fraction},
       {"single_cell_mass_fraction", &M::single_cell_mass_fraction},
@@ -62,6 +67,9 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"dissipated_energy", &M::dissipated_energy},
       {"cracked_edges", &M::cracked_edges},
       {"broken_edges", &M::broken_edges},
+      {"broken_near_impact", &M::broken_near_impact},
+      {"broken_mid_length", &M::broken_mid_length},
+      {"broken_elsewhere", &M::broken_elsewhere},
       {"released_edges", &M::released_edges},
       {"check_seconds", &M::check_seconds},
       {"rebuild_seconds", &M::rebuild_seconds},
@@ -153,6 +161,10 @@ std::string fragments_table(const StudyRecords<DynamicsRecord>& result) {
     t.add_value("largest fragment (mass fraction)", m.max_fragment_mass_fraction, {}, digits(3));
     t.add_value("mass in single cells", m.single_cell_mass_fraction, {}, digits(3));
     t.add_value("main body's turn [rad]", m.main_body_rotation, {}, digits(3));
+    if (std::isfinite(m.broken_near_impact))
+      t.add_text("broken near impact / mid-length / elsewhere",
+                 fmt(m.broken_near_impact, 2) + " / " + fmt(m.broken_mid_length, 2) + " / " +
+                     fmt(m.broken_elsewhere, 2));
     t.add_value("dissipated [J/m]", m.dissipated_energy, {}, digits(4));
     t.add_text(
         "balance with the law's energies",

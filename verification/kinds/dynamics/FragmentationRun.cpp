@@ -9,6 +9,7 @@
 #include "core/util/Format.hpp"
 #include "dynamics/CorotationalFrames.hpp"
 #include "fracture/Fragments.hpp"
+#include "verification/kinds/dynamics/CrackLocations.hpp"
 #include "verification/model/SettingsSchema.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 
@@ -64,7 +65,11 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
       law_(make_law(scene, h_avg)),
       criterion_(scene.criterion),
       eligible_(mesh.num_edges(), 1),
-      friction_(scene.face_friction) {}
+      friction_(scene.face_friction),
+      turning_frames_(scene.corotational),
+      body_(scene.bodies[0].domain) {
+  if (scene.wall) impact_ = scene.wall->point;
+}
 
 double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
                                      double safety) const {
@@ -79,6 +84,7 @@ void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator
   cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
   cohesive_->set_edge_strength(variation.edge_strength(mesh_));
   cohesive_->set_friction(friction_);
+  cohesive_->set_turning_frames(turning_frames_);
   insertion_ = std::make_unique<CrackInsertion>(mesh_, integrator, criterion_, eligible_, threads);
   insertion_->vary(variation);
   insertion_->turn_with(run.force().frames());
@@ -96,9 +102,12 @@ void FragmentationRun::integrate(const StepRecord& r) {
 
 void FragmentationRun::check_balance(const StepRecord& r) {
   if (r.step == 0) start_ = r.kinetic + r.elastic;
-  // Contact by its closed form too: the energy in its springs now, and what its damping has
-  // taken. Its booked work would hide energy that a penalty switching on at depth creates.
-  const double contact = contact_ ? contact_->report().potential + contact_damped_ : 0.0;
+  // Contact by its closed form too: the energy in its springs now, and what its damping and
+  // its friction have taken. Its booked work would hide energy that a penalty switching on at depth
+  // creates.
+  const double contact =
+      contact_ ? contact_->report().potential + contact_damped_ + contact_->friction_dissipated()
+               : 0.0;
   const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
                       cohesive_->stored_energy() + r.damping_dissipation + contact +
                       cohesive_->friction_dissipated_energy();
@@ -130,6 +139,16 @@ void FragmentationRun::finish(const fs::path& out, const std::string& id, const 
   m.dissipated_energy = cohesive_->dissipated_energy();
   m.cracked_edges = static_cast<double>(cohesive_->edges().size());
   m.broken_edges = cohesive_->num_broken();
+  m.face_friction_dissipated = cohesive_->friction_dissipated_energy();
+  if (impact_) {
+    std::vector<int> broken;
+    for (int e : cohesive_->edges())
+      if (cohesive_->broken(e)) broken.push_back(e);
+    const CrackLocations where = crack_locations(mesh_, broken, body_, *impact_);
+    m.broken_near_impact = where.near_impact;
+    m.broken_mid_length = where.mid_length;
+    m.broken_elsewhere = where.elsewhere;
+  }
   m.released_edges = static_cast<double>(cohesive_->released_edges().size());
   m.check_seconds = fracture_->times().check;
   m.rebuild_seconds = fracture_->times().rebuild;

@@ -4,6 +4,7 @@
 // the run's integrator; the stable step with the faces' springs; after the run, the fragments and
 // the crack log as files, and the figures for results.csv.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/element/ElasticityIntegrator.hpp"
@@ -58,7 +59,10 @@ class FragmentationRun {
   CohesiveLaw law_;
   MohrCoulomb criterion_;
   std::vector<char> eligible_;
-  double friction_;  // on closed faces
+  double friction_;      // on closed faces
+  bool turning_frames_;  // the faces' frames turn with them (corotational kinematics)
+  Rectangle body_;       // the (first) body, and the wall's point if there is one: where cracks are
+  std::optional<Point> impact_;
   std::unique_ptr<CohesiveForces> cohesive_;
   std::unique_ptr<CrackInsertion> insertion_;
   std::unique_ptr<DynamicFracture> fracture_;

@@ -1,9 +1,13 @@
 // column-impact: the report's column falling under gravity onto an inclined rigid plane
 // (docs/impact.md): the plane passes through the column's bottom-left corner, tilted by the
-// obliquity.
+// obliquity. Measured: when the column's rear half first strikes the plane (the report: at
+// about 200 ms, after the column has rotated about its struck corner).
 #include <cmath>
 #include <numbers>
 
+#include "core/util/Format.hpp"
+#include "verification/kinds/dynamics/DynamicsMesh.hpp"
+#include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
 #include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
 
@@ -12,6 +16,36 @@ namespace {
 
 /// Standard gravity, m/s^2: the column falls under it.
 constexpr double kGravity = 9.81;
+
+/// The first time the plane pushes a vertex of the rear half: the (cell, vertex) pairs farther
+/// from the struck corner than half the column's length, in the reference configuration.
+class RearStrikeProbe : public ProblemProbe {
+ public:
+  RearStrikeProbe(const DynamicsScene& scene, const BodiesMesh& bodies,
+                  const CentralDifference& run)
+      : run_(run) {
+    const Rectangle& column = scene.bodies[0].domain;
+    const double half = 0.5 * std::max(column.width(), column.height());
+    const PolygonMesh& mesh = bodies.mesh;
+    const std::vector<int>& loops = mesh.cell_vertex_list();
+    for (int p = 0; p < static_cast<int>(loops.size()); ++p)
+      if ((mesh.vertex(loops[p]) - scene.wall->point).norm() > half) rear_.push_back(p);
+  }
+
+  void observe(DynamicsMeasures& m) override {
+    if (!std::isnan(m.rear_strike_time) || !run_.contact()) return;
+    const auto force = run_.contact()->plane_pair_forces();
+    for (int p : rear_)
+      if (force[p] != Point::Zero()) {
+        m.rear_strike_time = run_.time();
+        return;
+      }
+  }
+
+ private:
+  const CentralDifference& run_;
+  std::vector<int> rear_;
+};
 
 class ColumnImpact : public DynamicsProblem {
  public:
@@ -30,6 +64,21 @@ class ColumnImpact : public DynamicsProblem {
   DynamicsWall default_wall(const DynamicsScene& s) const override {
     const double theta = obliquity_ * std::numbers::pi / 180.0;
     return {s.bodies[0].domain.lo(), Point(std::sin(theta), std::cos(theta))};
+  }
+
+  std::unique_ptr<ProblemProbe> probe(const DynamicsScene& scene, const BodiesMesh& bodies,
+                                      const CentralDifference& run,
+                                      DynamicsMeasures&) const override {
+    return std::make_unique<RearStrikeProbe>(scene, bodies, run);
+  }
+
+  std::vector<ReportColumn> report_columns() const override {
+    std::vector<ReportColumn> columns = DynamicsProblem::report_columns();
+    columns.push_back({"rear strike [s]", [](const DynamicsMeasures& m) {
+                         return std::isnan(m.rear_strike_time) ? std::string("none")
+                                                               : fmt(m.rear_strike_time, 3);
+                       }});
+    return columns;
   }
 
   void default_length(DynamicsScene& s) const override { s.end = 0.3; }

@@ -33,9 +33,14 @@ std::vector<ReportColumn> DynamicsProblem::report_columns() const {
        [](const DynamicsMeasures& m) {
          return measure_text(m.rebound_velocity, 5) + " / " + measure_text(m.rebound_estimate, 5);
        }},
-      {"contact time / 2L/c_bar [s]", [](const DynamicsMeasures& m) {
+      {"contact time / 2L/c_bar [s]",
+       [](const DynamicsMeasures& m) {
          return measure_text(m.contact_time, 4) + " / " + measure_text(m.contact_time_estimate, 4) +
                 (m.contact_ended ? "" : " (not ended)");
+       }},
+      {"peak wall force / rho c_bar v W [N/m]", [](const DynamicsMeasures& m) {
+         return measure_text(m.peak_wall_force, 4) + " / " +
+                measure_text(m.peak_wall_force_estimate, 4);
        }}};
 }
 

@@ -100,7 +100,8 @@ void FragmentationRun::check_balance(const StepRecord& r) {
   // taken. Its booked work would hide energy that a penalty switching on at depth creates.
   const double contact = contact_ ? contact_->report().potential + contact_damped_ : 0.0;
   const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
-                      cohesive_->stored_energy() + r.damping_dissipation + contact +
+                      cohesive_->stored_energy() + r.damping_dissipation +
+                      r.bulk_viscosity_dissipation + contact +
                       cohesive_->friction_dissipated_energy();
   const double put_in = start_ + r.external_work + r.reaction_work;
   const double balance = std::abs(held - put_in) / std::max(r.input_energy(), 1e-300);

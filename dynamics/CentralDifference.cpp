@@ -38,8 +38,8 @@ void CentralDifference::bind() {
         slot = static_cast<int>(j);
       }
   const int n = dofs_.num_dofs();
-  for (Eigen::VectorXd* x :
-       {&f_ext_, &f_ext_next_, &reaction_, &v_half_, &f_contact_, &f_contact_next_})
+  for (Eigen::VectorXd* x : {&f_ext_, &f_ext_next_, &reaction_, &v_half_, &f_contact_,
+                             &f_contact_next_, &f_bulk_, &f_bulk_next_})
     x->setZero(n);
   if (contact_) contact_->bind(dofs_, mass_node_);
   if (cohesive_) cohesive_->bind(dofs_);
@@ -49,6 +49,18 @@ void CentralDifference::set_contact(ContactForces& contact) {
   if (initialized_) throw InputError("contact: set after initialize()");
   contact_ = &contact;
   contact_->bind(dofs_, mass_node_);
+}
+
+void CentralDifference::set_bulk_viscosity(BulkViscosity& bulk) {
+  if (initialized_) throw InputError("bulk viscosity: set after initialize()");
+  bulk_ = &bulk;
+}
+
+void CentralDifference::bulk_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
+  if (bulk_)
+    bulk_->compute(dofs_, v, f, options_.threads);
+  else
+    f.setZero(dofs_.num_dofs());
 }
 
 void CentralDifference::set_cohesive(CohesiveForces& cohesive) {
@@ -128,17 +140,19 @@ void CentralDifference::restart_from(double elastic, bool cells_unchanged) {
   external_forces(record_.time, f_ext_);
   if (contact_) contact_->restart();  // the state may have jumped: a new work segment
   interface_forces(v_, f_contact_, cells_unchanged);
+  bulk_forces(v_, f_bulk_);
   const double c = options_.damping;
   a_.resize(dofs_.num_dofs());
   for (int i = 0; i < dofs_.num_dofs(); ++i) {
     const double m = mass_node_[i / 2];
-    const double applied = f_ext_[i] + f_contact_[i] - f_int_[i] - c * m * v_[i];
+    double applied = f_ext_[i] + f_contact_[i] - f_int_[i] - c * m * v_[i];
+    if (bulk_) applied += f_bulk_[i];  // only then: without it the sums keep their bits
     const int j = prescribed_[i];
     // A prescribed DOF accelerates so that its first half step lands on vbar(t + dt/2).
     a_[i] = j < 0 ? applied / m : 2.0 * (vbar_half_[j] - v_[i]) / dt_;
     reaction_[i] = j < 0 ? 0.0 : m * a_[i] - applied;
   }
-  std::array<double, 8> sums = sum_.sum<8>(dofs_.num_nodes(), options_.threads,
+  std::array<double, 9> sums = sum_.sum<9>(dofs_.num_nodes(), options_.threads,
                                            [&](int i, double* acc) { add_state(i, acc); });
   book(sums, elastic);
 }
@@ -154,10 +168,11 @@ void CentralDifference::add_state(int i, double* acc) const {
   acc[7] += m * (x.x() * v.y() - x.y() * v.x());
 }
 
-void CentralDifference::book(const std::array<double, 8>& sums, double elastic) {
+void CentralDifference::book(const std::array<double, 9>& sums, double elastic) {
   record_.external_work += sums[0];
   record_.reaction_work += sums[1];
   record_.damping_dissipation += sums[2];
+  record_.bulk_viscosity_dissipation += sums[8];
   record_.kinetic = sums[3];
   record_.kinetic_leapfrog = sums[3] - dt_ * dt_ / 8.0 * sums[4];
   record_.elastic = elastic;
@@ -183,6 +198,7 @@ const StepRecord& CentralDifference::step() {
   const double elastic = force_.compute(dofs_, u_, f_int_, threads);
   external_forces(t_next, f_ext_next_);
   interface_forces(v_half_, f_contact_next_);
+  bulk_forces(v_half_, f_bulk_next_);
   boundary_values(t_next + 0.5 * dt_, vbar_next_half_);
   // Second half step, fused with the bookkeeping of the work done over the step.
   const double c = options_.damping;
@@ -191,7 +207,11 @@ const StepRecord& CentralDifference::step() {
     for (int i = 2 * node; i < 2 * node + 2; ++i) {
       const int j = prescribed_[i];
       const double vh = v_half_[i], du = dt_ * vh;
-      const double applied = f_ext_next_[i] + f_contact_next_[i] - f_int_[i];
+      double applied = f_ext_next_[i] + f_contact_next_[i] - f_int_[i];
+      if (bulk_) {
+        applied += f_bulk_next_[i];
+        acc[8] -= 0.5 * du * (f_bulk_[i] + f_bulk_next_[i]);
+      }
       double a, v, r = 0.0;
       if (j < 0) {
         a = (applied - c * m * vh) / (m * (1.0 + 0.5 * c * dt_));
@@ -210,9 +230,10 @@ const StepRecord& CentralDifference::step() {
     }
     add_state(node, acc);
   };
-  const auto sums = sum_.sum<8>(dofs_.num_nodes(), threads, second_half);
+  const auto sums = sum_.sum<9>(dofs_.num_nodes(), threads, second_half);
   std::swap(f_ext_, f_ext_next_);
   std::swap(f_contact_, f_contact_next_);
+  std::swap(f_bulk_, f_bulk_next_);
   std::swap(vbar_half_, vbar_next_half_);
   record_.step = n + 1;
   record_.time = t_next;
@@ -283,7 +304,8 @@ void CentralDifference::disconnect(const std::vector<char>& connected, std::span
     }
   }
   // What restart_from and the next step overwrite: sized only.
-  for (Eigen::VectorXd* x : {&reaction_, &f_ext_next_, &v_half_, &f_contact_next_})
+  for (Eigen::VectorXd* x :
+       {&reaction_, &f_ext_next_, &v_half_, &f_contact_next_, &f_bulk_, &f_bulk_next_})
     x->resize(2 * nodes);
   mass_node_.conservativeResize(nodes);
   for (int i : split.nodes) mass_node_[i] = mass_.node_mass(dofs_, i);

@@ -25,6 +25,13 @@
 // law on the cracked edges at the same evaluations, into the same interface force vector, and
 // books its own share of the trapezoid, which goes to StepRecord::cohesive_work.
 //
+// Bulk viscosity (set_bulk_viscosity, optional): BulkViscosity's cell forces -q A b_k, taken
+// from the same velocities as contact (v_{n+1/2}; v_n at a restart), so they lag half a step
+// behind like any explicit viscosity: that is what lowers the stable step by
+// sqrt(1 + xi^2) - xi. They enter the acceleration like applied forces, and their work, booked
+// as the trapezoid over the step like the damping's, goes to
+// StepRecord::bulk_viscosity_dissipation (with its sign turned: energy taken out is positive).
+//
 // Every loop is parallel over cells or nodes, writing its own slots, and every sum is an
 // OrderedSum: results are bit-for-bit the same for any thread count.
 #include <Eigen/Core>
@@ -35,6 +42,7 @@
 
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/BulkViscosity.hpp"
 #include "dynamics/CohesiveForces.hpp"
 #include "dynamics/ContactForces.hpp"
 #include "dynamics/InternalForce.hpp"
@@ -70,6 +78,9 @@ class CentralDifference {
   /// Cohesive tractions on cracked edges at every step; `cohesive` must outlive the integrator.
   /// It may be set or grown (CohesiveForces::add_edge, then remap) at any time.
   void set_cohesive(CohesiveForces& cohesive);
+  /// Bulk viscosity on the cells at every step; `bulk` must outlive the integrator. Throws
+  /// InputError after initialize().
+  void set_bulk_viscosity(BulkViscosity& bulk);
   /// Throws InputError naming the vertex if a DOF is prescribed twice or a vertex is unknown,
   /// and after initialize().
   void add_velocity_boundary(VelocityBoundary bc);
@@ -108,6 +119,8 @@ class CentralDifference {
   const Eigen::VectorXd& internal_force() const { return f_int_; }
   /// The contact and cohesive forces of the last evaluation (zero without either).
   const Eigen::VectorXd& interface_force() const { return f_contact_; }
+  /// The bulk viscosity forces of the last evaluation (zero without it).
+  const Eigen::VectorXd& bulk_viscosity_force() const { return f_bulk_; }
   const ContactForces* contact() const { return contact_; }
   /// Reaction forces at the prescribed DOFs (zero elsewhere).
   const Eigen::VectorXd& reaction() const { return reaction_; }
@@ -133,9 +146,11 @@ class CentralDifference {
   void restart(bool cells_unchanged = false);
   /// The rest of restart once the internal force and the elastic energy are known.
   void restart_from(double elastic, bool cells_unchanged);
+  /// Bulk viscosity forces at velocities v into f (zero without it).
+  void bulk_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f);
   /// The record's state from per-step sums: work increments (external, reaction, damping), then
-  /// kinetic, a.M a, momentum x, y, angular momentum.
-  void book(const std::array<double, 8>& sums, double elastic);
+  /// kinetic, a.M a, momentum x, y, angular momentum, then bulk viscosity's dissipation.
+  void book(const std::array<double, 9>& sums, double elastic);
   /// Adds node i's state to sums[3..7].
   void add_state(int i, double* sums) const;
 
@@ -149,6 +164,7 @@ class CentralDifference {
   ExternalForce external_force_;
   ContactForces* contact_ = nullptr;
   CohesiveForces* cohesive_ = nullptr;
+  BulkViscosity* bulk_ = nullptr;
   std::vector<VelocityBoundary> boundaries_;
 
   std::vector<int> node_vertex_;
@@ -156,6 +172,7 @@ class CentralDifference {
   Eigen::VectorXd mass_node_;
   Eigen::VectorXd u_, v_, a_, f_int_, f_ext_, f_ext_next_, reaction_;
   Eigen::VectorXd f_contact_, f_contact_next_;
+  Eigen::VectorXd f_bulk_, f_bulk_next_;
   Eigen::VectorXd v_half_;
   std::vector<double> vbar_half_, vbar_next_half_;  // vbar(t_{n+1/2}), vbar(t_{n+3/2})
   StepRecord record_;

@@ -3,49 +3,23 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/util/Errors.hpp"
-
 namespace vorodg {
 
 CorotationalFrames::CorotationalFrames(const PolygonMesh& mesh)
-    : offsets_(mesh.offsets()), p_(2 * offsets_.back()), b_(2 * offsets_.back(), 0.0) {
+    : gradient_(mesh), offsets_(mesh.offsets()), p_(2 * offsets_.back()) {
   for (int c = 0; c < mesh.num_cells(); ++c) {
     const auto loop = mesh.cell_vertices(c);
-    const int n = static_cast<int>(loop.size());
     const Point origin = mesh.vertex(loop[0]);
-    double twice_area = 0.0;
-    for (int k = 0; k < n; ++k) {
-      const Point a = mesh.vertex(loop[k]) - origin, b = mesh.vertex(loop[(k + 1) % n]) - origin;
-      twice_area += a.x() * b.y() - b.x() * a.y();
-    }
-    if (!(std::abs(twice_area) > 0.0))
-      throw InputError("corotational frames: cell " + std::to_string(c) + " has no area");
-    for (int k = 0; k < n; ++k) {
-      const Point a = mesh.vertex(loop[k]) - origin, b = mesh.vertex(loop[(k + 1) % n]) - origin;
+    for (int k = 0; k < static_cast<int>(loop.size()); ++k) {
+      const Point a = mesh.vertex(loop[k]) - origin;
       const std::size_t i = 2 * std::size_t(offsets_[c] + k);
       p_[i] = a.x(), p_[i + 1] = a.y();
-      // Edge k (a -> b) gives half of nL = (dy, -dx) to each of its ends, over the area.
-      const double nx = (b.y() - a.y()) / twice_area, ny = -(b.x() - a.x()) / twice_area;
-      const std::size_t j = 2 * std::size_t(offsets_[c] + (k + 1) % n);
-      b_[i] += nx, b_[i + 1] += ny;
-      b_[j] += nx, b_[j + 1] += ny;
     }
   }
 }
 
 double CorotationalFrames::Turn::angle() const {
   return std::atan2(skew, trace);
-}
-
-Eigen::Matrix2d CorotationalFrames::displacement_gradient(int c, const double* w) const {
-  const int first = offsets_[c], n = offsets_[c + 1] - first;
-  const double* b = b_.data() + 2 * std::size_t(first);
-  Eigen::Matrix2d g = Eigen::Matrix2d::Zero();
-  for (int k = 0; k < n; ++k) {
-    g(0, 0) += w[2 * k] * b[2 * k], g(0, 1) += w[2 * k] * b[2 * k + 1];
-    g(1, 0) += w[2 * k + 1] * b[2 * k], g(1, 1) += w[2 * k + 1] * b[2 * k + 1];
-  }
-  return g;
 }
 
 const double* CorotationalFrames::relative(int c, const SplitDofMap& dofs,
@@ -110,7 +84,7 @@ void CorotationalFrames::global_force(int c, const Turn& t, const double* local,
                                       const double* f_loc, double* global) const {
   const int first = offsets_[c], n = offsets_[c + 1] - first;
   const double* p = p_.data() + 2 * std::size_t(first);
-  const double* b = b_.data() + 2 * std::size_t(first);
+  const double* b = gradient_.weights(c);
   // g = dE/dtheta = -sum_k f_k . J (u^_k + p_k), J (x, y) = (-y, x).
   double g = 0.0;
   for (int k = 0; k < n; ++k) {

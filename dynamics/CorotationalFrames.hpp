@@ -3,11 +3,10 @@
 // so fragments may spin through any angle (docs/impact.md, "Finite rotations").
 //
 // The cell's rotation theta is the polar angle of its mean deformation gradient
-//     F = I + sum_k u_k (x) b_k,   b_k = (nL_{k-1} + nL_k) / (2 A)
-// (nL_e = (dy, -dx) of edge e; the boundary integral of u (x) n over the area, exact for the
-// displacements, linear along each edge), theta = atan2(F21 - F12, F11 + F22). The local
-// displacements are u^_k = R^T q_k - p_k, with p_k = X_k - X_0 and q_k = p_k + u_k - u_0 (K
-// annihilates translations). The cell's energy is E = 1/2 u^.K u^, and its force the exact
+//     F = I + sum_k u_k (x) b_k     (MeanGradient: the boundary integral of u (x) n over the
+// area, exact for the displacements, linear along each edge), theta = atan2(F21 - F12, F11 + F22).
+// The local displacements are u^_k = R^T q_k - p_k, with p_k = X_k - X_0 and q_k = p_k + u_k - u_0
+// (K annihilates translations). The cell's energy is E = 1/2 u^.K u^, and its force the exact
 // gradient:
 //     f_k = R (K u^)_k + g dtheta/du_k,   g = dE/dtheta = -sum_k (K u^)_k . J (u^_k + p_k),
 //     dtheta/du_k = (s (-b_ky, b_kx) - d (b_kx, b_ky)) / (s^2 + d^2),  s = F11 + F22,
@@ -25,13 +24,14 @@
 
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/MeanGradient.hpp"
 
 namespace vorodg {
 
 class CorotationalFrames {
  public:
   explicit CorotationalFrames(const PolygonMesh& mesh);
-  int cell_size(int c) const { return offsets_[c + 1] - offsets_[c]; }
+  int cell_size(int c) const { return gradient_.cell_size(c); }
 
   /// Cell c's turn: R = [[cos, -sin], [sin, cos]], and the parts of F its derivative needs.
   struct Turn {
@@ -44,7 +44,9 @@ class CorotationalFrames {
   Turn local_displacements(int c, const double* w, double* local) const;
   /// G = F - I = sum_k w_k (x) b_k of cell c from displacements relative to vertex 0 (w_0 = 0;
   /// absolute displacements give the same, since sum_k b_k = 0).
-  Eigen::Matrix2d displacement_gradient(int c, const double* w) const;
+  Eigen::Matrix2d displacement_gradient(int c, const double* w) const {
+    return gradient_.gradient(c, w);
+  }
   /// G of cell c at node displacements u of `dofs`.
   Eigen::Matrix2d displacement_gradient(int c, const SplitDofMap& dofs,
                                         const Eigen::VectorXd& u) const {
@@ -68,9 +70,9 @@ class CorotationalFrames {
   /// Cell c's node displacements relative to its vertex 0, in a per-thread buffer.
   const double* relative(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u) const;
 
+  MeanGradient gradient_;
   std::vector<int> offsets_;
   std::vector<double> p_;  // per pair: X_k - X_0 (x, y)
-  std::vector<double> b_;  // per pair: the mean-gradient weight b_k (x, y)
 };
 
 }  // namespace vorodg

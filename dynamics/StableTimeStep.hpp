@@ -25,7 +25,8 @@
 // estimates the true one.
 //
 // Mass-proportional damping (c M v, with the velocity at the step taken centred as in
-// CentralDifference) does not change this limit.
+// CentralDifference) does not change this limit. Bulk viscosity, taken from the half-step
+// velocities, does: BulkViscosity::step_factor.
 #include <Eigen/Core>
 #include <vector>
 

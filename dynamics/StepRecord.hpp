@@ -7,10 +7,10 @@
 // for the total nodal force F = M a (applied, contact, cohesive, internal, damping and reaction
 // forces). Every work below is that trapezoid of its own force, and for linear elasticity the
 // internal part is exactly the change of 1/2 u.K u. So kinetic_leapfrog + elastic +
-// damping_dissipation - external_work - reaction_work - contact_work - cohesive_work is constant
-// to round-off. The usual kinetic energy 1/2 v.M v at whole steps differs from K* by
-// dt^2/8 a.M a: an oscillation of relative size about (omega dt)^2 / 4 for the frequencies
-// carrying the energy, not a drift; balance_integer() shows it.
+// damping_dissipation + bulk_viscosity_dissipation - external_work - reaction_work - contact_work -
+// cohesive_work is constant to round-off. The usual kinetic energy 1/2 v.M v at whole steps differs
+// from K* by dt^2/8 a.M a: an oscillation of relative size about (omega dt)^2 / 4 for the
+// frequencies carrying the energy, not a drift; balance_integer() shows it.
 #include <Eigen/Core>
 #include <cmath>
 
@@ -27,7 +27,8 @@ struct StepRecord {
   double contact_work = 0.0;      // contact forces (surfaces and planes), cumulative (ContactWork)
   double cohesive_work = 0.0;     // cohesive tractions on cracks, cumulative (CohesiveForces)
   double damping_dissipation = 0.0;
-  double remap_energy = 0.0;  // energy changes at node splits or merges, cumulative
+  double bulk_viscosity_dissipation = 0.0;  // BulkViscosity's work with its sign turned, cumulative
+  double remap_energy = 0.0;                // energy changes at node splits or merges, cumulative
   Eigen::Vector2d momentum = Eigen::Vector2d::Zero();  // sum M v
   double angular_momentum = 0.0;                       // sum (X + u) x M v about the origin
   // The balances at step 0, for the drift of either.
@@ -36,8 +37,8 @@ struct StepRecord {
 
   /// Energy in the body plus what left it, minus what entered: constant to round-off.
   double balance() const {
-    return kinetic_leapfrog + elastic + damping_dissipation - external_work - reaction_work -
-           contact_work - cohesive_work - remap_energy;
+    return kinetic_leapfrog + elastic + damping_dissipation + bulk_viscosity_dissipation -
+           external_work - reaction_work - contact_work - cohesive_work - remap_energy;
   }
   /// The same with 1/2 v.M v (oscillates by dt^2/8 a.M a).
   double balance_integer() const { return balance() + kinetic - kinetic_leapfrog; }

@@ -57,7 +57,8 @@ ENERGIES = (("kinetic_energy", "kinetic", "tab:blue"),
             ("external_work", "external work", "tab:green"),
             ("contact_work", "contact work", "tab:red"),
             ("dissipated_energy", "dissipated", "tab:purple"),
-            ("cohesive_work", "cohesive work", "tab:brown"))
+            ("cohesive_work", "cohesive work", "tab:brown"),
+            ("bulk_viscosity_dissipation", "bulk viscosity", "tab:pink"))
 
 
 def skip(what, why):

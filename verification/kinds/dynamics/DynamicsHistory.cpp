@@ -15,7 +15,7 @@ DynamicsHistory::DynamicsHistory(std::filesystem::path file) : file_(std::move(f
 const char* DynamicsHistory::columns() {
   return "step,time,kinetic_energy,elastic_energy,external_work,contact_work,dissipated_energy,"
          "momentum_x,momentum_y,angular_momentum,reaction_work,kinetic_leapfrog,contact_potential,"
-         "contacts,max_penetration,balance,balance_error,cohesive_work";
+         "contacts,max_penetration,balance,balance_error,cohesive_work,bulk_viscosity_dissipation";
 }
 
 void DynamicsHistory::add(const StepRecord& r, const ContactForces* contact) {
@@ -31,7 +31,7 @@ void DynamicsHistory::add(const StepRecord& r, const ContactForces* contact) {
     row << ',' << fmt(x, 12);
   row << ',' << c.contacts << ',' << fmt(c.max_depth, 12) << ',' << fmt(drift, 6) << ','
       << fmt(r.input_energy() > 0.0 ? std::abs(drift) / r.input_energy() : 0.0, 6) << ','
-      << fmt(r.cohesive_work, 12) << '\n';
+      << fmt(r.cohesive_work, 12) << ',' << fmt(r.bulk_viscosity_dissipation, 12) << '\n';
   text_ += row.str();
 }
 

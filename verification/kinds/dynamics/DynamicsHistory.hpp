@@ -3,7 +3,8 @@
 //   step,time,kinetic_energy,elastic_energy,external_work,contact_work,dissipated_energy,
 //   momentum_x,momentum_y
 // and after them angular_momentum, reaction_work, kinetic_leapfrog, contact_potential,
-// contacts, max_penetration, balance, balance_error, cohesive_work (docs/dynamics.md). The
+// contacts, max_penetration, balance, balance_error, cohesive_work, bulk_viscosity_dissipation
+// (docs/dynamics.md). The
 // file is rewritten atomically at every flush, so a stopped run keeps a whole file with what it
 // finished.
 #include <filesystem>

@@ -95,6 +95,21 @@ std::vector<SceneKey> material_keys() {
   };
 }
 
+/// Bulk viscosity on the cells (dynamics/BulkViscosity, docs/dynamics.md): off unless a
+/// coefficient is given; Abaqus and LS-DYNA use b1 = 0.06, b2 = 1.2.
+std::vector<SceneKey> bulk_viscosity_keys() {
+  return {
+      bounded("bulk_viscosity.linear", "number", "0", "0 <= b1 <= 1",
+              "cell pressure b1 rho c_d L eps (eps the volumetric strain rate, L = sqrt(area)); "
+              "the step is cut by sqrt(1 + b1^2) - b1; 0: off",
+              0.0, false, 1.0),
+      bounded("bulk_viscosity.quadratic", "number", "0", "0 <= b2 <= 10",
+              "adds rho (b2 L)^2 eps^2 in compression; a run stops where it outgrows the step; "
+              "0: off",
+              0.0, false, 10.0),
+  };
+}
+
 /// The kinematics, gravity, and the column's and the projectile's keys.
 std::vector<SceneKey> impact_keys() {
   return {
@@ -220,6 +235,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, body_keys());
   append_keys(keys, elastic_keys("2e11", "0.3"));
   append_keys(keys, material_keys());
+  append_keys(keys, bulk_viscosity_keys());
   append_keys(keys, element_keys());
   append_keys(keys, impact_keys());
   append_keys(keys, contact_keys());

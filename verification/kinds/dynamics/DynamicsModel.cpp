@@ -79,10 +79,23 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs) {
   if (scene.fragmentation) cracks.emplace(scene, mesh(), bodies.h_avg);
   dt = cracks ? cracks->stable_step(bound, mass, scene.safety)
               : scene.safety * (scene.estimate == StepEstimate::lanczos ? dt_lanczos : dt_cells);
+  // Bulk viscosity's linear term damps the highest mode by xi = b1, which lowers the critical
+  // step by sqrt(1 + b1^2) - b1; its quadratic term is checked step by step against what is
+  // left (BulkViscosity::set_step_ratio).
+  if (scene.bulk_viscosity.linear > 0.0)
+    dt *= BulkViscosity::step_factor(scene.bulk_viscosity.linear);
+  bulk_step_ratio = scene.safety * BulkViscosity::step_factor(scene.bulk_viscosity.linear);
   steps = scene.steps > 0 ? scene.steps : static_cast<long>(std::ceil(scene.end / dt - 1e-9));
   if (!scene.corotational) return force;
   // The same cells, each turning with its frame (K is its tangent at rest).
   return InternalForce(mesh(), force.matrices(), true);
+}
+
+std::vector<double> DynamicsModel::wave_speeds() const {
+  std::vector<double> speeds(mesh().num_cells(), scene.dilatational_speed());
+  if (!variation.empty())
+    for (int c = 0; c < mesh().num_cells(); ++c) speeds[c] *= std::sqrt(variation.stiffness[c]);
+  return speeds;
 }
 
 void DynamicsModel::make_integrator(InternalForce force, const SplitDofMap& dofs) {
@@ -101,6 +114,11 @@ void DynamicsModel::make_integrator(InternalForce force, const SplitDofMap& dofs
                        ContactFriction(scene.wall->friction, "wall.friction"));
   if (scene.contact || scene.wall) run->set_contact(*contact);
   add_boundaries(scene, mesh(), *run);
+  if (scene.bulk_viscosity.active()) {
+    bulk.emplace(mesh(), scene.bulk_viscosity, scene.density, wave_speeds());
+    bulk->set_step_ratio(bulk_step_ratio);
+    run->set_bulk_viscosity(*bulk);
+  }
   if (cracks) cracks->attach(*run, integrator, variation, scene.contact ? &*contact : nullptr, 1);
   run->initialize(Eigen::VectorXd::Zero(run->dofs().num_dofs()),
                   initial_velocity(scene, bodies, *run));

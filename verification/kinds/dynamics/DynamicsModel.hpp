@@ -1,15 +1,16 @@
 #pragma once
 // The model of one dynamics run, set up once before its time loop (setup_system, in deal.II's
 // words): the bodies' mesh, the element table, the lumped masses, the elastic integrator and the
-// per-cell material variation; the internal force (small strain, or corotational), the two
-// estimates of the critical step and the step taken; the central-difference integrator with its
-// contact, its boundary conditions and loads, and the cracks of a fragmentation run; and the
+// per-cell material variation; bulk viscosity; the internal force (small strain, or corotational),
+// the two estimates of the critical step and the step taken; the central-difference integrator with
+// its contact, its boundary conditions and loads, and the cracks of a fragmentation run; and the
 // initial state (each body's velocity and spin).
 #include <cmath>
 #include <optional>
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
+#include "dynamics/BulkViscosity.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/ContactForces.hpp"
 #include "dynamics/LumpedMass.hpp"
@@ -40,9 +41,11 @@ class DynamicsModel {
   double dt = 0.0;  // the step taken: safety x the chosen estimate (with the springs' share)
   long steps = 0;   // how many the run is to take
   double contact_stiffness = NAN;  // a fixed displacement penalty k_d (NaN: alpha m / dt^2)
+  double bulk_step_ratio = 0.0;    // dt over the undamped critical estimate (bulk viscosity on)
 
   std::optional<FragmentationRun> cracks;  // fragmentation runs only
   std::optional<ContactForces> contact;
+  std::optional<BulkViscosity> bulk;  // bulk viscosity on the cells, when a coefficient is > 0
   std::optional<CentralDifference> run;
 
   const PolygonMesh& mesh() const { return bodies.mesh; }
@@ -50,6 +53,8 @@ class DynamicsModel {
  private:
   /// The internal force of the (varied) cell matrices; sets the two critical-step estimates.
   InternalForce make_force(const SplitDofMap& dofs);
+  /// Each cell's dilatational speed (its stiffness factor's square root, if the material varies).
+  std::vector<double> wave_speeds() const;
   /// The integrator with contact, boundaries, loads, cracks and its initial state.
   void make_integrator(InternalForce force, const SplitDofMap& dofs);
 };

@@ -109,7 +109,8 @@ void FragmentationRun::check_balance(const StepRecord& r) {
       contact_ ? contact_->report().potential + contact_damped_ + contact_->friction_dissipated()
                : 0.0;
   const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
-                      cohesive_->stored_energy() + r.damping_dissipation + contact +
+                      cohesive_->stored_energy() + r.damping_dissipation +
+                      r.bulk_viscosity_dissipation + contact +
                       cohesive_->friction_dissipated_energy();
   const double put_in = start_ + r.external_work + r.reaction_work;
   const double balance = std::abs(held - put_in) / std::max(r.input_energy(), 1e-300);

@@ -1,0 +1,126 @@
+#include "dynamics/BulkViscosity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/util/Errors.hpp"
+#include "core/util/Format.hpp"
+
+namespace vorodg {
+
+BulkViscosity::BulkViscosity(const PolygonMesh& mesh, const BulkViscosityParameters& parameters,
+                             double density, std::vector<double> wave_speeds)
+    : gradient_(mesh),
+      parameters_(parameters),
+      density_(density),
+      speed_(std::move(wave_speeds)),
+      length_(mesh.num_cells()),
+      offsets_(mesh.offsets()),
+      pair_force_(2 * std::size_t(offsets_.back()), 0.0),
+      rate_(mesh.num_cells(), 0.0) {
+  require_parameter(parameters.linear >= 0.0, "bulk viscosity linear", parameters.linear, ">= 0");
+  require_parameter(parameters.quadratic >= 0.0, "bulk viscosity quadratic", parameters.quadratic,
+                    ">= 0");
+  require_parameter(density > 0.0, "bulk viscosity density", density, "> 0");
+  if (static_cast<int>(speed_.size()) != mesh.num_cells())
+    throw InputError("bulk viscosity: " + std::to_string(speed_.size()) + " wave speeds for " +
+                     std::to_string(mesh.num_cells()) + " cells");
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!(speed_[c] > 0.0) || !std::isfinite(speed_[c]))
+      throw InputError("bulk viscosity: cell " + std::to_string(c) + ": wave speed " +
+                       fmt(speed_[c]) + ", expected > 0");
+    length_[c] = std::sqrt(gradient_.area(c));
+  }
+}
+
+double BulkViscosity::step_factor(double xi) {
+  return std::sqrt(1.0 + xi * xi) - xi;
+}
+
+double BulkViscosity::allowed_damping_ratio(double ratio) {
+  if (ratio >= 1.0) return std::numeric_limits<double>::infinity();
+  return (1.0 - ratio * ratio) / (2.0 * ratio);
+}
+
+void BulkViscosity::set_step_ratio(double ratio) {
+  require_parameter(ratio > 0.0, "bulk viscosity step ratio", ratio, "> 0");
+  step_ratio_ = ratio;
+  allowed_xi_ = allowed_damping_ratio(ratio);
+}
+
+double BulkViscosity::damping_ratio(int c, double rate) const {
+  const double b2 = parameters_.quadratic;
+  return parameters_.linear - b2 * b2 * (length_[c] / speed_[c]) * std::min(0.0, rate);
+}
+
+double BulkViscosity::pressure(int c, double rate) const {
+  return damping_ratio(c, rate) * density_ * speed_[c] * length_[c] * rate;
+}
+
+void BulkViscosity::cell_force(int c, const int* node, const double* v) {
+  // Velocities relative to vertex 0 (sum_k b_k = 0, so the same rate): a translating cell has
+  // exactly zero rate, whatever its speed.
+  thread_local std::vector<double> w;
+  const int n = gradient_.cell_size(c);
+  w.resize(2 * n);
+  const double vx = v[2 * node[0]], vy = v[2 * node[0] + 1];
+  for (int k = 0; k < n; ++k) {
+    w[2 * k] = v[2 * node[k]] - vx;
+    w[2 * k + 1] = v[2 * node[k] + 1] - vy;
+  }
+  const double rate = gradient_.divergence(c, w.data());
+  rate_[c] = rate;
+  const double qa = pressure(c, rate) * gradient_.area(c);
+  const double* b = gradient_.weights(c);
+  double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
+  // f_k = -q A b_k; the last vertex takes minus the sum of the others, so that round-off moves
+  // no momentum (as InternalForce does).
+  double sx = 0.0, sy = 0.0;
+  for (int k = 0; k < n - 1; ++k) {
+    f[2 * k] = -qa * b[2 * k], f[2 * k + 1] = -qa * b[2 * k + 1];
+    sx += f[2 * k], sy += f[2 * k + 1];
+  }
+  f[2 * n - 2] = -sx, f[2 * n - 1] = -sy;
+}
+
+void BulkViscosity::compute(const SplitDofMap& dofs, const Eigen::VectorXd& v, Eigen::VectorXd& f,
+                            int threads) {
+  if (dofs.pair_nodes().size() != pair_force_.size() / 2 || v.size() != dofs.num_dofs())
+    throw InputError("bulk viscosity: a DOF map of " + std::to_string(dofs.pair_nodes().size()) +
+                     " pairs and " + std::to_string(v.size()) + " velocities for a mesh of " +
+                     std::to_string(pair_force_.size() / 2) + " pairs");
+  const int nc = gradient_.num_cells(), nodes = dofs.num_nodes();
+  const int* pair_node = dofs.pair_nodes().data();
+#pragma omp parallel for schedule(static, 512) num_threads(std::max(threads, 1))
+  for (int c = 0; c < nc; ++c) cell_force(c, pair_node + offsets_[c], v.data());
+  f.resize(2 * nodes);
+#pragma omp parallel for schedule(static, 1024) num_threads(std::max(threads, 1))
+  for (int i = 0; i < nodes; ++i) {
+    double fx = 0.0, fy = 0.0;
+    for (int p : dofs.node_pairs(i)) {
+      fx += pair_force_[2 * std::size_t(p)];
+      fy += pair_force_[2 * std::size_t(p) + 1];
+    }
+    f[2 * i] = fx, f[2 * i + 1] = fy;
+  }
+  check();
+}
+
+void BulkViscosity::check() {
+  int worst = 0;
+  max_xi_ = 0.0;
+  for (int c = 0; c < gradient_.num_cells(); ++c)
+    if (const double xi = damping_ratio(c, rate_[c]); xi > max_xi_) max_xi_ = xi, worst = c;
+  if (step_ratio_ > 0.0 && max_xi_ > allowed_xi_)
+    throw NumericalError(
+        "bulk viscosity: cell " + std::to_string(worst) + " changes volume at the rate " +
+        fmt(rate_[worst], 4) + " 1/s: its damping ratio xi = " + fmt(max_xi_, 4) + " (linear " +
+        fmt(parameters_.linear, 4) + ") is above " + fmt(allowed_xi_, 4) +
+        ", the most that dt = " + fmt(step_ratio_, 4) +
+        " x the critical step allows (dt <= 2 / omega (sqrt(1 + xi^2) - xi)); lower "
+        "bulk_viscosity.quadratic or time.safety");
+}
+
+}  // namespace vorodg

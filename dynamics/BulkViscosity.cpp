@@ -59,34 +59,52 @@ double BulkViscosity::pressure(int c, double rate) const {
   return damping_ratio(c, rate) * density_ * speed_[c] * length_[c] * rate;
 }
 
-void BulkViscosity::cell_force(int c, const int* node, const double* v) {
+void BulkViscosity::cell_force(int c, const int* node, const double* v, const double* u) {
   // Velocities relative to vertex 0 (sum_k b_k = 0, so the same rate): a translating cell has
   // exactly zero rate, whatever its speed.
-  thread_local std::vector<double> w;
+  thread_local std::vector<double> w, x;
   const int n = gradient_.cell_size(c);
-  w.resize(2 * n);
-  const double vx = v[2 * node[0]], vy = v[2 * node[0] + 1];
-  for (int k = 0; k < n; ++k) {
-    w[2 * k] = v[2 * node[k]] - vx;
-    w[2 * k + 1] = v[2 * node[k] + 1] - vy;
+  auto relative = [&](const double* field, std::vector<double>& out) {
+    out.resize(2 * n);
+    const double ox = field[2 * node[0]], oy = field[2 * node[0] + 1];
+    for (int k = 0; k < n; ++k) {
+      out[2 * k] = field[2 * node[k]] - ox;
+      out[2 * k + 1] = field[2 * node[k] + 1] - oy;
+    }
+  };
+  relative(v, w);
+  // The cofactor of F maps b_k to the current configuration's weights (the identity at rest).
+  Eigen::Matrix2d cofactor = Eigen::Matrix2d::Identity();
+  double rate = 0.0;
+  if (u) {
+    relative(u, x);
+    const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + gradient_.gradient(c, x.data());
+    cofactor << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
+    rate = (cofactor.cwiseProduct(gradient_.gradient(c, w.data()))).sum() / F.determinant();
+  } else {
+    rate = gradient_.divergence(c, w.data());
   }
-  const double rate = gradient_.divergence(c, w.data());
   rate_[c] = rate;
   const double qa = pressure(c, rate) * gradient_.area(c);
   const double* b = gradient_.weights(c);
   double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
-  // f_k = -q A b_k; the last vertex takes minus the sum of the others, so that round-off moves
-  // no momentum (as InternalForce does).
+  // f_k = -q A cof(F) b_k; the last vertex takes minus the sum of the others, so that round-off
+  // moves no momentum (as InternalForce does).
   double sx = 0.0, sy = 0.0;
   for (int k = 0; k < n - 1; ++k) {
-    f[2 * k] = -qa * b[2 * k], f[2 * k + 1] = -qa * b[2 * k + 1];
+    const Eigen::Vector2d bk =
+        u ? Eigen::Vector2d(cofactor * Eigen::Vector2d(b[2 * k], b[2 * k + 1]))
+          : Eigen::Vector2d(b[2 * k], b[2 * k + 1]);
+    f[2 * k] = -qa * bk.x(), f[2 * k + 1] = -qa * bk.y();
     sx += f[2 * k], sy += f[2 * k + 1];
   }
   f[2 * n - 2] = -sx, f[2 * n - 1] = -sy;
 }
 
 void BulkViscosity::compute(const SplitDofMap& dofs, const Eigen::VectorXd& v, Eigen::VectorXd& f,
-                            int threads) {
+                            int threads, const Eigen::VectorXd* u) {
+  if (current_ && (!u || u->size() != v.size()))
+    throw InputError("bulk viscosity: the current configuration needs the node displacements");
   if (dofs.pair_nodes().size() != pair_force_.size() / 2 || v.size() != dofs.num_dofs())
     throw InputError("bulk viscosity: a DOF map of " + std::to_string(dofs.pair_nodes().size()) +
                      " pairs and " + std::to_string(v.size()) + " velocities for a mesh of " +
@@ -94,7 +112,8 @@ void BulkViscosity::compute(const SplitDofMap& dofs, const Eigen::VectorXd& v, E
   const int nc = gradient_.num_cells(), nodes = dofs.num_nodes();
   const int* pair_node = dofs.pair_nodes().data();
 #pragma omp parallel for schedule(static, 512) num_threads(std::max(threads, 1))
-  for (int c = 0; c < nc; ++c) cell_force(c, pair_node + offsets_[c], v.data());
+  for (int c = 0; c < nc; ++c)
+    cell_force(c, pair_node + offsets_[c], v.data(), current_ ? u->data() : nullptr);
   f.resize(2 * nodes);
 #pragma omp parallel for schedule(static, 1024) num_threads(std::max(threads, 1))
   for (int i = 0; i < nodes; ++i) {

@@ -24,6 +24,12 @@
 // compression rate, so compute() checks every step that no cell's xi passes what the chosen
 // step allows and throws NumericalError if one does (docs/dynamics.md, "Bulk viscosity").
 //
+// Finite rotations (set_current_configuration, for corotational kinematics): the rate is then
+// that of the current volume, eps = dJ/dt / J with J = det F, F = I + G(u) the cell's mean
+// deformation gradient, and the force the virtual work of q on the current area A J:
+// f_k = -q A cof(F) b_k (cof(F) = J F^-T), so that v.f = -q A dJ/dt. A spinning cell keeps its
+// volume, and so reads no rate however far it has turned; with F = I it is the above.
+//
 // Determinism: each cell writes its force into its own (cell, vertex) pair slots and its rate
 // into its own cell slot; each node adds its pairs in pair order (InternalForce's pattern).
 #include <Eigen/Core>
@@ -62,9 +68,16 @@ class BulkViscosity {
   double damping_ratio(int c, double rate) const;
   double pressure(int c, double rate) const;
 
-  /// The nodal forces at node velocities v of `dofs` (f resized); keeps each cell's rate.
+  /// The rate of the current volume (the cell's mean deformation gradient from the node
+  /// displacements given to compute), for cells that may turn far (corotational kinematics).
+  void set_current_configuration(bool on) { current_ = on; }
+  bool current_configuration() const { return current_; }
+
+  /// The nodal forces at node velocities v of `dofs` (f resized); keeps each cell's rate. With
+  /// the current configuration, `u` holds the node displacements (ignored otherwise).
   /// Throws NumericalError naming the cell if its xi passes what the step ratio allows.
-  void compute(const SplitDofMap& dofs, const Eigen::VectorXd& v, Eigen::VectorXd& f, int threads);
+  void compute(const SplitDofMap& dofs, const Eigen::VectorXd& v, Eigen::VectorXd& f, int threads,
+               const Eigen::VectorXd* u = nullptr);
 
   const BulkViscosityParameters& parameters() const { return parameters_; }
   const MeanGradient& gradient() const { return gradient_; }
@@ -73,11 +86,12 @@ class BulkViscosity {
   double max_damping_ratio() const { return max_xi_; }
 
  private:
-  void cell_force(int c, const int* node, const double* v);
+  void cell_force(int c, const int* node, const double* v, const double* u);
   /// The largest xi of the last compute; throws if it passes the allowed one.
   void check();
 
   MeanGradient gradient_;
+  bool current_ = false;
   BulkViscosityParameters parameters_;
   double density_;
   std::vector<double> speed_, length_;  // per cell: c_d and L = sqrt(A)

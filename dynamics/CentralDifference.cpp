@@ -58,7 +58,7 @@ void CentralDifference::set_bulk_viscosity(BulkViscosity& bulk) {
 
 void CentralDifference::bulk_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
   if (bulk_)
-    bulk_->compute(dofs_, v, f, options_.threads);
+    bulk_->compute(dofs_, v, f, options_.threads, &u_);
   else
     f.setZero(dofs_.num_dofs());
 }

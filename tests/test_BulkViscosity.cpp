@@ -139,6 +139,42 @@ TEST(BulkViscosity, ForceIsTheExactVirtualWork) {
   EXPECT_LT(total.norm(), 1e-14 * f.norm());
 }
 
+TEST(BulkViscosity, TurnedCellsReadTheRateOfTheirCurrentVolume) {
+  // The body turned rigidly by theta (up to 10 rad) and scaled by s: x = s R X. Spinning at
+  // omega it keeps its volume: no rate, no force, where the reference cell would read
+  // -2 omega sin theta. Growing at ds/dt: dJ/dt / J = 2 (ds/dt) / s. And the force is the
+  // virtual work of q on the current area: v.f = -sum q A dJ/dt.
+  const Body body;
+  BulkViscosity bulk = body.bulk();
+  bulk.set_current_configuration(true);
+  Eigen::Matrix2d J;
+  J << 0.0, -1.0, 1.0, 0.0;
+  for (const double theta : {0.5, 3.0, 10.0}) {
+    const double s = 1.01;
+    const Eigen::Matrix2d R = Eigen::Rotation2Dd(theta).toRotationMatrix();
+    const Eigen::VectorXd u = body.linear_field(s * R - Eigen::Matrix2d::Identity());
+    Eigen::VectorXd f;
+    bulk.compute(body.dofs, body.linear_field(0.3 * J * R), f, 1, &u);
+    double largest = 0.0;
+    for (int c = 0; c < body.model.mesh.num_cells(); ++c)
+      largest = std::max(largest, std::abs(bulk.cell_rate(c)));
+    EXPECT_LT(largest, 1e-13) << "theta " << theta;
+    const double growth = 0.2;  // ds/dt
+    const Eigen::VectorXd v = body.linear_field(growth * R);
+    bulk.compute(body.dofs, v, f, 1, &u);
+    double worst = 0.0, expected = 0.0, scale = 0.0;
+    for (int c = 0; c < body.model.mesh.num_cells(); ++c) {
+      const double eps = bulk.cell_rate(c);
+      worst = std::max(worst, std::abs(eps / (2.0 * growth / s) - 1.0));
+      const double work = bulk.pressure(c, eps) * body.area(c) * s * s * eps;  // q A J eps
+      expected -= work;
+      scale += std::abs(work);
+    }
+    EXPECT_LT(worst, 1e-12) << "theta " << theta;
+    EXPECT_NEAR(v.dot(f), expected, 1e-12 * scale) << "theta " << theta;
+  }
+}
+
 TEST(BulkViscosity, StepFactorAndTheQuadraticTermsCheck) {
   for (double r : {0.3, 0.8, 0.9 * BulkViscosity::step_factor(kB1)})
     EXPECT_NEAR(BulkViscosity::step_factor(BulkViscosity::allowed_damping_ratio(r)), r, 1e-14);
@@ -281,11 +317,11 @@ TEST(BulkViscosity, SceneKeysAreOffByDefault) {
       parse_dynamics_scene(wave_bar(0.9, R"("bulk_viscosity": {"linear": 0.06})"), "test");
   EXPECT_EQ(on.bulk_viscosity.linear, 0.06);
   EXPECT_EQ(on.bulk_viscosity.quadratic, 0.0);
-  // The rate is taken on the reference cell: not with cells that turn.
-  EXPECT_THROW(parse_dynamics_scene(wave_bar(0.9, R"("kinematics": "corotational",
+  // With cells that turn, the rate of the current volume.
+  EXPECT_TRUE(parse_dynamics_scene(wave_bar(0.9, R"("kinematics": "corotational",
     "bulk_viscosity": {"linear": 0.06})"),
-                                    "test"),
-               InputError);
+                                   "test")
+                  .corotational);
   EXPECT_THROW(parse_dynamics_scene(wave_bar(0.9, R"("bulk_viscosity": {"quadratic": -1})"), "t"),
                InputError);
 }

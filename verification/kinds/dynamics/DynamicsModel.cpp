@@ -117,6 +117,7 @@ void DynamicsModel::make_integrator(InternalForce force, const SplitDofMap& dofs
   if (scene.bulk_viscosity.active()) {
     bulk.emplace(mesh(), scene.bulk_viscosity, scene.density, wave_speeds());
     bulk->set_step_ratio(bulk_step_ratio);
+    bulk->set_current_configuration(scene.corotational);
     run->set_bulk_viscosity(*bulk);
   }
   if (cracks) cracks->attach(*run, integrator, variation, scene.contact ? &*contact : nullptr, 1);

@@ -68,11 +68,6 @@ void DynamicsSceneReader::read_material() {
   s_.bulk_viscosity.quadratic = number(bulk, "bulk_viscosity.quadratic");
   bulk.finish();
   s_.corotational = word(top_, "kinematics", " small corotational ") == "corotational";
-  if (s_.corotational && s_.bulk_viscosity.active())
-    top_.fail_value("kinematics",
-                    "'corotational' beside bulk_viscosity: expected small (the strain rate is "
-                    "taken on the reference cell, where a turned cell reads its spin as a change "
-                    "of volume)");
 }
 
 void DynamicsSceneReader::read_element() {

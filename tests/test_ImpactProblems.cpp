@@ -168,5 +168,26 @@ TEST(ImpactProblems, QuiescentPenaltyFollowsTheRestingWeight) {
     EXPECT_THROW(parse_dynamics_scene(bad, "test"), InputError) << bad;
 }
 
+TEST(ImpactProblems, AColumnRestingOnThePlaneSinksNoMoreThanTheTolerance) {
+  // Set down on a level plane (at 1 cm/s) and left to rest under gravity for 0.3 s (1.5 periods
+  // of the column on the displacement penalty at 0.1 h_avg, 4.8 at 0.01) with the
+  // report's contact (the plastic velocity penalty and the quiescent displacement penalty).
+  for (const double tolerance : {0.1, 0.01}) {
+    const DynamicsScene s = parse_dynamics_scene(
+        scene("column-impact",
+              R"("obliquity": 0, "initial_velocity": [0, -0.01], "time": {"end": 0.3},
+                 "contact": {"plastic": true, "quiescent_penetration": )" +
+                  std::to_string(tolerance) + "}"),
+        "test");
+    Scratch out("resting");
+    const DynamicsRecord r = run_dynamics(s, ensemble_runs(s.meshes).front(), out.dir);
+    std::printf("resting column, tolerance %.2f h_avg: sank %.4f h_avg at most\n", tolerance,
+                r.measures.max_penetration_over_h);
+    EXPECT_TRUE(r.complete);
+    EXPECT_GT(r.measures.max_penetration_over_h, 0.0);
+    EXPECT_LE(r.measures.max_penetration_over_h, tolerance);
+  }
+}
+
 }  // namespace
 }  // namespace vorodg

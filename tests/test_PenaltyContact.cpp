@@ -253,6 +253,11 @@ TEST(PenaltyContact, PlasticImpactRemovesTheApproachSpeed) {
     std::printf("plastic contact, alpha %g: largest rebound %.4f of the impact speed\n", alpha,
                 worst);
     EXPECT_LT(worst, 1.5 * std::sqrt(alpha));
+    // The quiescent displacement penalty gives a vertex alpha = k_d dt^2 / m of this order or
+    // less (about 7e-5 on the column at h = 8): its impact is plastic to 1 %.
+    if (alpha <= 1e-4) {
+      EXPECT_LT(worst, 0.01);
+    }
   }
 }
 

@@ -32,11 +32,18 @@
 // `plastic`, k_v = m / dt, removes a pair's approach velocity in one step (a plastic impact of
 // the pair; a body still rebounds by its own elastic waves).
 //
+// Stability of the plastic penalty: k_v = m / dt on the half-step velocity removes a contacting
+// vertex's own velocity each step, so its update for a mode of frequency omega of the body
+// becomes u_{n+2} = (1 - omega^2 dt^2) u_{n+1}: stable only while omega dt < sqrt(2), not 2
+// (measured: a column set down on a level plane with it blew up within 0.5 s at 0.9 of the
+// critical step). The step is then cut by step_factor() = 1 / sqrt(2) (DynamicsModel).
+//
 // Energy: with k_d constant along a contact, the spring force is the gradient of k_d d^2 / 2
 // (PolygonPenetration), and the damping dissipates k_v <-v_n>^2 >= 0 (ContactReport). The exact
 // account is the work of the contact forces (ContactWork). When the closest edge of a vertex
 // changes to one with a different end mass, k_d jumps and the potential with it (never with a
 // fixed stiffness).
+#include <cmath>
 #include <span>
 
 #include "dynamics/contact/PairState.hpp"
@@ -65,6 +72,9 @@ class PenaltyContact {
   const PenaltyParameters& parameters() const { return p_; }
   bool needs_mass() const { return p_.stiffness == 0.0 || p_.damping_ratio > 0.0 || p_.plastic; }
   bool needs_velocity() const { return p_.damping_ratio > 0.0 || p_.plastic; }
+  /// What the law leaves of the system's critical step 2 / omega_max: 1, or 1 / sqrt(2) with the
+  /// plastic velocity penalty (see Stability above).
+  double step_factor() const { return p_.plastic ? 1.0 / std::sqrt(2.0) : 1.0; }
   /// Throws InputError if the state lacks a field the law needs (mass, velocity, dt > 0).
   void check(const PairState& state, const char* what) const;
 

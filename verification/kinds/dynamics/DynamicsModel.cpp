@@ -81,10 +81,14 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs) {
               : scene.safety * (scene.estimate == StepEstimate::lanczos ? dt_lanczos : dt_cells);
   // Bulk viscosity's linear term damps the highest mode by xi = b1, which lowers the critical
   // step by sqrt(1 + b1^2) - b1; its quadratic term is checked step by step against what is
-  // left (BulkViscosity::set_step_ratio).
-  if (scene.bulk_viscosity.linear > 0.0)
-    dt *= BulkViscosity::step_factor(scene.bulk_viscosity.linear);
-  bulk_step_ratio = scene.safety * BulkViscosity::step_factor(scene.bulk_viscosity.linear);
+  // left (BulkViscosity::set_step_ratio). The plastic contact penalty lowers it by 1 / sqrt(2)
+  // (PenaltyContact::step_factor).
+  const double factor =
+      (scene.bulk_viscosity.linear > 0.0 ? BulkViscosity::step_factor(scene.bulk_viscosity.linear)
+                                         : 1.0) *
+      PenaltyContact(scene.penalty).step_factor();
+  dt *= factor;
+  bulk_step_ratio = scene.safety * factor;
   steps = scene.steps > 0 ? scene.steps : static_cast<long>(std::ceil(scene.end / dt - 1e-9));
   if (!scene.corotational) return force;
   // The same cells, each turning with its frame (K is its tangent at rest).

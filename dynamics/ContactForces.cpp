@@ -20,6 +20,7 @@ ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law,
   const std::size_t pairs = reference_.size();
   for (auto* buffer : {&position_, &velocity_, &force_, &plane_pair_force_})
     buffer->assign(pairs, Point::Zero());
+  if (law.needs_velocity()) velocity_force_.assign(pairs, Point::Zero());
 }
 
 void ContactForces::add_plane(const Point& point, const Point& normal,
@@ -56,6 +57,8 @@ void ContactForces::bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& no
 void ContactForces::restart() {
   booked_ += work_.work();
   work_ = ContactWork{};
+  velocity_booked_ += velocity_work_.work();
+  velocity_work_ = ContactWork{};
   repeat_ = true;
 }
 
@@ -76,16 +79,18 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                              Eigen::VectorXd& f) {
   gather_state(u, v);
   std::fill(force_.begin(), force_.end(), Point::Zero());
+  std::fill(velocity_force_.begin(), velocity_force_.end(), Point::Zero());
   const PairState state{position_, velocity_, mass_, node_, dt, repeat_};
   repeat_ = false;
-  surface_report_ = surfaces_ ? contact_.add_forces(surface_, state, force_) : ContactReport{};
+  surface_report_ =
+      surfaces_ ? contact_.add_forces(surface_, state, force_, velocity_force_) : ContactReport{};
   // The planes into their own buffer first: their net force is the wall's reaction, reported.
   plane_report_ = ContactReport{};
   plane_force_.setZero();
   if (!planes_.empty()) {
     std::fill(plane_pair_force_.begin(), plane_pair_force_.end(), Point::Zero());
     for (RigidPlane& plane : planes_)
-      plane_report_ += plane.add_forces(surface_, state, plane_pair_force_);
+      plane_report_ += plane.add_forces(surface_, state, plane_pair_force_, velocity_force_);
     for (std::size_t p = 0; p < force_.size(); ++p) {
       plane_force_ += plane_pair_force_[p];
       force_[p] += plane_pair_force_[p];
@@ -93,6 +98,7 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
   }
   friction_dissipated_ += surface_report_.friction_dissipated + plane_report_.friction_dissipated;
   work_.add(position_, force_);
+  if (!velocity_force_.empty()) velocity_work_.add(position_, velocity_force_);
   f.setZero(num_dofs_);
   // Pair by pair in CSR order: a fixed order, so the nodal sums are reproducible.
   for (std::size_t p = 0; p < force_.size(); ++p) {

@@ -70,6 +70,9 @@ class ContactForces {
   double work() const { return booked_ + work_.work(); }
   /// Of that work, what friction's slip has dissipated so far (surfaces and planes; >= 0).
   double friction_dissipated() const { return friction_dissipated_; }
+  /// Of that work, what the velocity penalty (damping or plastic) has taken so far: minus the
+  /// trapezoid work of its part of the forces (0 without one).
+  double velocity_penalty_dissipated() const { return -(velocity_booked_ + velocity_work_.work()); }
   /// Of the last evaluation: between surface cells, and against the planes.
   const ContactReport& surface_report() const { return surface_report_; }
   const ContactReport& plane_report() const { return plane_report_; }
@@ -104,6 +107,9 @@ class ContactForces {
   ContactWork work_;
   double booked_ = 0.0;  // work of the segments before the current one
   double friction_dissipated_ = 0.0;
+  ContactWork velocity_work_;          // the velocity penalty's part alone
+  double velocity_booked_ = 0.0;       // its work in the segments before the current one
+  std::vector<Point> velocity_force_;  // per pair: that part of force_ (empty without one)
   bool repeat_ = false;  // the next evaluation is at the positions of the last one (restart)
 
   std::vector<Point> reference_;  // X per pair

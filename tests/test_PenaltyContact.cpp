@@ -64,6 +64,7 @@ TEST(PenaltyContact, MassScaledStiffnessAndDamping) {
   EXPECT_DOUBLE_EQ(r.force, k * 1e-4 + c * 0.5);
   EXPECT_DOUBLE_EQ(r.potential, 0.5 * k * 1e-8);
   EXPECT_DOUBLE_EQ(r.dissipation_power, c * 0.25);
+  EXPECT_DOUBLE_EQ(r.velocity_force, c * 0.5);
   // Separating: the spring alone, nothing dissipated, never a pull.
   r = law.respond(1e-4, -0.5, m, dt);
   EXPECT_DOUBLE_EQ(r.force, k * 1e-4);

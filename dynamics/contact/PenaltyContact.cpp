@@ -50,7 +50,7 @@ PenaltyContact::Response PenaltyContact::respond(double depth, double approach_r
   const double k = stiffness(mass, dt);
   const double rate = std::max(approach_rate, 0.0);
   const double c = p_.plastic ? mass / dt : p_.damping_ratio > 0.0 ? damping(k, mass) : 0.0;
-  return {k * depth + c * rate, 0.5 * k * depth * depth, c * rate * rate, k};
+  return {k * depth + c * rate, 0.5 * k * depth * depth, c * rate * rate, k, c * rate};
 }
 
 Point PenaltyContact::relative_velocity(const Penetration& pen, int p, int e0, int e1,
@@ -74,13 +74,15 @@ void PenaltyContact::distribute(const Point& f, double t, int p, int e0, int e1,
 }
 
 PenaltyContact::Response PenaltyContact::apply(const Penetration& pen, int p, int e0, int e1,
-                                               const PairState& state,
-                                               std::span<Point> force) const {
+                                               const PairState& state, std::span<Point> force,
+                                               std::span<Point> velocity_force) const {
   double mass = 0.0;
   if (!state.mass.empty())
     mass = reduced_mass(state.mass[p], std::min(state.mass[e0], state.mass[e1]));
   const Response r = respond(pen.depth, approach_rate(pen, p, e0, e1, state), mass, state.dt);
   distribute(r.force * pen.normal, pen.t, p, e0, e1, force);
+  if (!velocity_force.empty() && r.velocity_force > 0.0)
+    distribute(r.velocity_force * pen.normal, pen.t, p, e0, e1, velocity_force);
   return r;
 }
 

@@ -39,7 +39,11 @@
 // critical step). The step is then cut by step_factor() = 1 / sqrt(2) (DynamicsModel).
 //
 // Energy: with k_d constant along a contact, the spring force is the gradient of k_d d^2 / 2
-// (PolygonPenetration), and the damping dissipates k_v <-v_n>^2 >= 0 (ContactReport). The exact
+// (PolygonPenetration), and the damping dissipates k_v <-v_n>^2 >= 0 per unit time
+// (ContactReport). That rate is only a first-order estimate of what the velocity force takes
+// over a step (for the plastic penalty's first impulse on a free pair it is twice the kinetic
+// energy removed, under a sustained push about right), so ContactForces books the velocity
+// force's own trapezoid work beside the total (`velocity_force` of apply and Response). The exact
 // account is the work of the contact forces (ContactWork). When the closest edge of a vertex
 // changes to one with a different end mass, k_d jumps and the potential with it (never with a
 // fixed stiffness).
@@ -87,7 +91,8 @@ class PenaltyContact {
     double force = 0.0;  // magnitude along n
     double potential = 0.0;
     double dissipation_power = 0.0;
-    double stiffness = 0.0;  // k_d, also the stick spring of friction (ContactFriction)
+    double stiffness = 0.0;       // k_d, also the stick spring of friction (ContactFriction)
+    double velocity_force = 0.0;  // the velocity penalty's part of `force`, k_v <-v_n>
   };
   /// The law for depth d > 0, approach rate -v_n (> 0 while the depth grows), contact mass m
   /// and step dt.
@@ -103,9 +108,10 @@ class PenaltyContact {
                               const PairState& state);
 
   /// Applies one vertex-to-edge penetration: F n to pair `p`, and -F n split (1 - t, t) over the
-  /// pairs `e0`, `e1` at the ends of the penetrated edge. Adds to `force` (one entry per pair).
+  /// pairs `e0`, `e1` at the ends of the penetrated edge. Adds to `force` (one entry per pair),
+  /// and the velocity penalty's part alone to `velocity_force` if it is not empty.
   Response apply(const Penetration& pen, int p, int e0, int e1, const PairState& state,
-                 std::span<Point> force) const;
+                 std::span<Point> force, std::span<Point> velocity_force = {}) const;
   /// Adds `f` to pair `p` and -f split (1 - t, t) over the pairs `e0`, `e1` of the edge.
   static void distribute(const Point& f, double t, int p, int e0, int e1, std::span<Point> force);
 

@@ -22,7 +22,7 @@ RigidPlane::RigidPlane(const Point& point, const Point& normal, const PenaltyCon
 }
 
 ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairState& state,
-                                     std::span<Point> force) {
+                                     std::span<Point> force, std::span<Point> velocity_force) {
   const PolygonMesh& mesh = surface.mesh();
   check_pair_state(mesh, state, "rigid plane");
   law_.check(state, "rigid plane");
@@ -48,6 +48,7 @@ ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairStat
       const double rate = state.velocity.empty() ? 0.0 : -state.velocity[p].dot(normal_);
       const auto r = law_.respond(depth, rate, mass, state.dt);
       force[p] += r.force * normal_;
+      if (!velocity_force.empty()) velocity_force[p] += r.velocity_force * normal_;
       if (friction_.active()) add_friction(p, r, state, force, report);
       ++report.contacts;
       report.potential += r.potential;

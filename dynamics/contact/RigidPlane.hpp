@@ -32,9 +32,10 @@ class RigidPlane {
   double gap(const Point& x) const { return (x - point_).dot(normal_); }
 
   /// Adds the plane's forces on the vertices of surface cells to `force` (one entry per pair;
-  /// each node counted once, on its first pair in surface order) and reports the step.
+  /// each node counted once, on its first pair in surface order), their velocity penalty's part
+  /// to `velocity_force` if it is not empty, and reports the step.
   ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
-                           std::span<Point> force);
+                           std::span<Point> force, std::span<Point> velocity_force = {});
 
  private:
   /// Friction on pair p, pushed by `normal` of stiffness k: adds the shear along the plane.

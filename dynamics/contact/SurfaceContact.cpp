@@ -61,7 +61,7 @@ const std::vector<IndexPair>& SurfaceContact::find_pairs(const SurfaceCells& sur
 }
 
 ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const PairState& state,
-                                         std::span<Point> force) {
+                                         std::span<Point> force, std::span<Point> velocity_force) {
   check_pair_state(surface.mesh(), state, "surface contact");
   law_.check(state, "surface contact");
   if (force.size() != state.position.size())
@@ -75,8 +75,8 @@ ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const Pair
   inside_next_.clear();
   tunnelled_next_.clear();
   for (const IndexPair& ij : surface_pairs_) {
-    test_pass(surface, ij.first, ij.second, state, force, report);
-    test_pass(surface, ij.second, ij.first, state, force, report);
+    test_pass(surface, ij.first, ij.second, state, force, velocity_force, report);
+    test_pass(surface, ij.second, ij.first, state, force, velocity_force, report);
   }
   std::swap(inside_, inside_next_);
   std::swap(tunnelled_, tunnelled_next_);
@@ -112,7 +112,8 @@ std::optional<SurfaceContact::Acting> SurfaceContact::acting_depth(std::uint64_t
 }
 
 void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const PairState& state,
-                               std::span<Point> force, ContactReport& report) {
+                               std::span<Point> force, std::span<Point> velocity_force,
+                               ContactReport& report) {
   const PolygonMesh& mesh = surface.mesh();
   const int a = surface.cells()[i], b = surface.cells()[j];
   const int base_a = mesh.offsets()[a], base_b = mesh.offsets()[b], nb = mesh.cell_size(b);
@@ -138,7 +139,7 @@ void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const 
       continue;  // this node is already pushed out of b
     Penetration acting = *pen;
     acting.depth = depth->depth;
-    const auto r = law_.apply(acting, p, e0, e1, state, force);
+    const auto r = law_.apply(acting, p, e0, e1, state, force, velocity_force);
     if (friction_.active())
       add_friction(key_of(p, b), acting, p, e0, e1, r, depth->shear, state, force, report);
     ++report.contacts;

@@ -56,8 +56,9 @@ class SurfaceContact {
   /// CSR layout; the integrator sums the pairs of each node) and reports the step.
   /// Throws InputError if `state` lacks what the law needs, NumericalError if a surface cell
   /// has non-finite vertex positions.
+  /// The velocity penalty's part of the forces goes to `velocity_force` too, if not empty.
   ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
-                           std::span<Point> force);
+                           std::span<Point> force, std::span<Point> velocity_force = {});
 
   /// Only the search: the cell pairs (mesh cell ids, the first earlier in the surface order)
   /// whose current boxes overlap and that are not neighbours, each once, in a deterministic
@@ -73,7 +74,7 @@ class SurfaceContact {
  private:
   /// Pushes the vertices of surface cell i out of surface cell j (indices in surface order).
   void test_pass(const SurfaceCells& surface, int i, int j, const PairState& state,
-                 std::span<Point> force, ContactReport& report);
+                 std::span<Point> force, std::span<Point> velocity_force, ContactReport& report);
   /// The depth the law acts on for the penetration `key` ((pair, target cell)) found at
   /// `depth` into cell b, whose first finding could have reached `reach`: beyond its offset, or
   /// none if it is a tunnelled one (see above). Records it for the next evaluation either way.

@@ -170,7 +170,6 @@ void time_loop(DynamicsModel& model, RunOutputs& outputs, DynamicsProbe& probe) 
       run.step();
     const StepRecord& step = run.record();
     probe.observe();
-    if (model.cracks) model.cracks->integrate(step);
     const double energy = step.kinetic + step.elastic;
     const bool unstable = !std::isfinite(energy) || energy > kBlowUp * step.input_energy();
     const bool last = s == model.steps || unstable;

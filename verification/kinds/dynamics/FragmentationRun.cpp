@@ -95,19 +95,15 @@ void FragmentationRun::step() {
   fracture_->step(1);
 }
 
-void FragmentationRun::integrate(const StepRecord& r) {
-  if (contact_) contact_damped_ += contact_->report().dissipation_power * (r.time - last_time_);
-  last_time_ = r.time;
-}
-
 void FragmentationRun::check_balance(const StepRecord& r) {
   if (r.step == 0) start_ = r.kinetic + r.elastic;
-  // Contact by its closed form too: the energy in its springs now, and what its damping and
-  // its friction have taken. Its booked work would hide energy that a penalty switching on at depth
-  // creates.
-  const double contact =
-      contact_ ? contact_->report().potential + contact_damped_ + contact_->friction_dissipated()
-               : 0.0;
+  // Contact by its springs' closed form too (the energy they store now), beside what its
+  // velocity penalty (its own booked work) and its friction (the slip work) have taken: the
+  // whole contact's booked work would hide energy that a spring switching on at depth creates.
+  const double contact = contact_ ? contact_->report().potential +
+                                        contact_->velocity_penalty_dissipated() +
+                                        contact_->friction_dissipated()
+                                  : 0.0;
   const double held = r.kinetic + r.elastic + cohesive_->dissipated_energy() +
                       cohesive_->stored_energy() + r.damping_dissipation +
                       r.bulk_viscosity_dissipation + contact +

@@ -37,13 +37,11 @@ class FragmentationRun {
               const MaterialVariation& variation, ContactForces* contact, int threads);
   /// One step of the run with the insertion check after it.
   void step();
-  /// After every step: sums what accrues over time (contact damping's loss, by the rectangle
-  /// rule on the power; zero without damping).
-  void integrate(const StepRecord& record);
   /// After a step (the run calls it at its history steps: the closed forms cost a pass over the
   /// cracked edges): the balance with the closed forms of the cohesive law and of contact
-  /// (kinetic + elastic + dissipated + stored + contact springs + contact damping against what
-  /// was put in), relative to the input energy; its largest value so far is kept.
+  /// (kinetic + elastic + dissipated + stored + contact springs + what contact's velocity
+  /// penalty and friction took, against what was put in), relative to the input energy; its largest
+  /// value so far is kept.
   void check_balance(const StepRecord& record);
   /// For a .vtu frame: per cell its fragment (components across the fully broken edges) and its
   /// number of cracked edges.
@@ -69,8 +67,7 @@ class FragmentationRun {
   CentralDifference* run_ = nullptr;
   const ContactForces* contact_ = nullptr;
   double start_ = 0.0, worst_balance_ = 0.0;
-  double contact_damped_ = 0.0, last_time_ = 0.0;  // contact damping's loss so far
-  double breach_time_ = NAN;                       // when the balance first passed kLawBalanceLimit
+  double breach_time_ = NAN;  // when the balance first passed kLawBalanceLimit
 };
 
 }  // namespace vorodg

@@ -20,6 +20,8 @@ beside it, then renamed), printing its path:
                          or more cells in a colour of their own, single-cell fragments grey, and
                          the rigid plane (wall.point, wall.normal of summary.json) shaded
                          (cracks show as gaps where nodes split); reads .vtu with meshio.
+  plots/crack_timeline.png  for a fragmentation study: each run's cracked edges against time,
+                         a dashed line at its rear strike (column-impact; timeline_plots.py).
   plots/fragment_cdf_<mesh>_L<level>.png  per mesh and level of a fragmentation study: the
                          fragment mass-fraction CDFs of all its realizations in one plot.
   plots/largest_fragment_vs_h.png  for a fragmentation study over two or more mesh levels: the
@@ -50,6 +52,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plotting_common import (  # noqa: E402
     columns, light_grid, number, outdir_arguments, plt, read_table, save_atomically)
 from snapshot_plots import plot_snapshots  # noqa: E402
+from timeline_plots import plot_crack_timeline  # noqa: E402
 
 # (history column, legend label, colour): the energies of the top panel.
 ENERGIES = (("kinetic_energy", "kinetic", "tab:blue"),
@@ -336,7 +339,8 @@ def main(argv):
             except Exception as e:
                 plt.close("all")
                 skip(f"the fragment plot of {run['id']}", f"{type(e).__name__}: {e}")
-    for what, plot in (("the fragment CDFs", plot_level_cdfs),
+    for what, plot in (("the crack time line", plot_crack_timeline),
+                       ("the fragment CDFs", plot_level_cdfs),
                        ("the plot over the levels", plot_levels)):
         try:
             plot(args.outdir, runs, args.dpi)

@@ -63,6 +63,26 @@ std::map<std::string, double> history_row(const fs::path& file, bool first = fal
   return row;
 }
 
+TEST(ImpactProblems, ColumnTakesTheReportsContactUnlessTheSceneSaysOtherwise) {
+  const DynamicsScene s = parse_dynamics_scene(scene("column-impact", ""), "test");
+  EXPECT_TRUE(s.penalty.plastic);
+  EXPECT_EQ(s.quiescent_penetration, 0.1);
+  EXPECT_EQ(s.contact_friction, 0.75);
+  EXPECT_EQ(s.wall->friction, 0.75);
+  EXPECT_EQ(s.bulk_viscosity.linear, 0.06);
+  EXPECT_EQ(s.bulk_viscosity.quadratic, 1.2);
+  // Damped contact instead of the plastic penalty; no resting weight, no displacement penalty.
+  const DynamicsScene damped = parse_dynamics_scene(
+      scene("column-impact", R"("contact": {"damping_ratio": 0.1}, "gravity": [0, 0])"), "test");
+  EXPECT_FALSE(damped.penalty.plastic);
+  EXPECT_EQ(damped.quiescent_penetration, 0.0);
+  // Other problems keep the plain defaults.
+  const DynamicsScene wall = parse_dynamics_scene(scene("wall-impact", ""), "test");
+  EXPECT_FALSE(wall.penalty.plastic);
+  EXPECT_EQ(wall.contact_friction, 0.0);
+  EXPECT_EQ(wall.bulk_viscosity.linear, 0.0);
+}
+
 TEST(ImpactProblems, ColumnDefaults) {
   const DynamicsScene s = parse_dynamics_scene(scene("column-impact", ""), "test");
   const Rectangle& d = s.bodies[0].domain;
@@ -157,12 +177,14 @@ TEST(ImpactProblems, QuiescentPenaltyFollowsTheRestingWeight) {
   const DynamicsRecord r = run_dynamics(s, ensemble_runs(s.meshes).front(), out.dir);
   const double weight = 2250.0 * 0.3 * 1.83 * 9.81 * std::cos(std::numbers::pi / 4);
   EXPECT_NEAR(r.contact_stiffness, weight / (0.1 * r.h_avg), 1e-12 * weight / (0.1 * r.h_avg));
-  const DynamicsScene plain =
-      parse_dynamics_scene(scene("column-impact", R"("time": {"steps": 2})"), "test");
+  const DynamicsScene plain = parse_dynamics_scene(
+      scene("column-impact", R"("contact": {"quiescent_penetration": 0}, "time": {"steps": 2})"),
+      "test");
   EXPECT_TRUE(std::isnan(
       run_dynamics(plain, ensemble_runs(plain.meshes).front(), out.dir).contact_stiffness));
   for (const std::string& bad :
        {scene("wall-impact", R"("contact": {"quiescent_penetration": 0.1})"),
+        scene("column-impact", R"("contact": {"damping_ratio": 0.1, "plastic": true})"),
         scene("column-impact", R"("gravity": [0, 0], "contact": {"quiescent_penetration": 0.1})"),
         scene("column-impact", R"("contact": {"quiescent_penetration": -0.1})")})
     EXPECT_THROW(parse_dynamics_scene(bad, "test"), InputError) << bad;
@@ -176,6 +198,7 @@ TEST(ImpactProblems, AColumnRestingOnThePlaneSinksNoMoreThanTheTolerance) {
     const DynamicsScene s = parse_dynamics_scene(
         scene("column-impact",
               R"("obliquity": 0, "initial_velocity": [0, -0.01], "time": {"end": 0.3},
+                 "bulk_viscosity": {"linear": 0, "quadratic": 0},
                  "contact": {"plastic": true, "quiescent_penetration": )" +
                   std::to_string(tolerance) + "}"),
         "test");

@@ -78,8 +78,8 @@ int SceneKeyReader::integer(SceneObject& o, const std::string& full, std::option
   return v;
 }
 
-bool SceneKeyReader::flag(SceneObject& o, const std::string& full) {
-  const bool v = o.flag(leaf(full), table_.at(full).fallback == "true");
+bool SceneKeyReader::flag(SceneObject& o, const std::string& full, std::optional<bool> fallback) {
+  const bool v = o.flag(leaf(full), fallback ? *fallback : table_.at(full).fallback == "true");
   note(full, v ? "true" : "false");
   return v;
 }

@@ -49,7 +49,7 @@ class SceneKeyReader {
 
   double number(SceneObject& o, const std::string& full, std::optional<double> fallback = {});
   int integer(SceneObject& o, const std::string& full, std::optional<int> fallback = {});
-  bool flag(SceneObject& o, const std::string& full);
+  bool flag(SceneObject& o, const std::string& full, std::optional<bool> fallback = {});
   /// `allowed`: the accepted words, each with a space either side; `fallback` replaces the
   /// table's default where that depends on the scene.
   std::string word(SceneObject& o, const std::string& full, const std::string& allowed,

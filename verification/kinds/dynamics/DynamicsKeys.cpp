@@ -24,6 +24,11 @@ std::string problem_names() {
   return both + (fragmentation.empty() ? "" : "; " + fragmentation + " (fragmentation)");
 }
 
+/// The default of a contact or cell-damping key, per problem (DynamicsProblem::default_contact).
+std::string contact_default(const std::function<std::string(const ContactDefaults&)>& text) {
+  return per_problem_text([&](const DynamicsProblem& p) { return text(p.default_contact()); });
+}
+
 /// The study, the problem and the body it is about.
 std::vector<SceneKey> study_keys() {
   return {
@@ -99,11 +104,16 @@ std::vector<SceneKey> material_keys() {
 /// coefficient is given; Abaqus and LS-DYNA use b1 = 0.06, b2 = 1.2.
 std::vector<SceneKey> bulk_viscosity_keys() {
   return {
-      bounded("bulk_viscosity.linear", "number", "0", "0 <= b1 <= 1",
+      bounded("bulk_viscosity.linear", "number",
+              contact_default([](const ContactDefaults& d) { return exact_text(d.bulk_linear); }),
+              "0 <= b1 <= 1",
               "cell pressure b1 rho c_d L eps (eps the volumetric strain rate, L = sqrt(area)); "
               "the step is cut by sqrt(1 + b1^2) - b1; 0: off",
               0.0, false, 1.0),
-      bounded("bulk_viscosity.quadratic", "number", "0", "0 <= b2 <= 10",
+      bounded("bulk_viscosity.quadratic", "number", contact_default([](const ContactDefaults& d) {
+                return exact_text(d.bulk_quadratic);
+              }),
+              "0 <= b2 <= 10",
               "adds rho (b2 L)^2 eps^2 in compression; a run stops where it outgrows the step; "
               "0: off",
               0.0, false, 10.0),
@@ -113,7 +123,7 @@ std::vector<SceneKey> bulk_viscosity_keys() {
 /// The kinematics, gravity, and the column's and the projectile's keys.
 std::vector<SceneKey> impact_keys() {
   return {
-      key("kinematics", "string", "small", "small or corotational",
+      key("kinematics", "string", "small; fragmentation: corotational", "small or corotational",
           "small: linear small strain (a cell turned by theta is drawn and meets contact stretched "
           "by about theta^2 / 2); corotational: small strain in a frame that turns with each cell, "
           "for fragments that spin (docs/impact.md)"),
@@ -152,7 +162,9 @@ std::vector<SceneKey> contact_keys() {
               "obliquity; else [-1, 0]",
               "not [0, 0], each |component| <= 1e6",
               "the plane's normal, pointing into free space (normalized)", -1e6, false, 1e6),
-      bounded("wall.friction", "number", "0", "0 <= mu <= 10",
+      bounded("wall.friction", "number",
+              contact_default([](const ContactDefaults& d) { return exact_text(d.wall_friction); }),
+              "0 <= mu <= 10",
               "Coulomb friction between the plane and the bodies (docs/contact.md); 0: "
               "frictionless",
               0.0, false, 10.0),
@@ -163,16 +175,24 @@ std::vector<SceneKey> contact_keys() {
       bounded("contact.damping_ratio", "number", "0", "0 <= zeta <= 1",
               "contact damping, a fraction of the critical damping of the penalty spring", 0.0,
               false, 1.0, false),
-      bounded("contact.quiescent_penetration", "number", "0", "0 <= x <= 1",
+      bounded("contact.quiescent_penetration", "number",
+              contact_default(
+                  [](const ContactDefaults& d) { return exact_text(d.quiescent_penetration); }),
+              "0 <= x <= 1",
               "> 0: the report's displacement penalty instead of alpha, as small as keeps the "
               "bodies resting under gravity on the wall from sinking more than x h_avg: "
               "k_d = M |g.n| / (x h_avg), M the bodies' mass (the run records k_d)",
               0.0, false, 1.0),
-      bounded("contact.friction", "number", "0", "0 <= mu <= 10",
+      bounded("contact.friction", "number",
+              contact_default([](const ContactDefaults& d) { return exact_text(d.friction); }),
+              "0 <= mu <= 10",
               "Coulomb friction between surface cells, fragments included (docs/contact.md); 0: "
               "frictionless",
               0.0, false, 10.0),
-      key("contact.plastic", "bool", "false", "true or false (not with damping_ratio > 0)",
+      key("contact.plastic", "bool", contact_default([](const ContactDefaults& d) {
+            return std::string(d.plastic ? "true" : "false");
+          }),
+          "true or false (not with damping_ratio > 0)",
           "the report's velocity penalty: k_v = m / dt removes a contacting pair's approach "
           "velocity in one step (a plastic impact of the pair), its work dissipated"),
   };
@@ -227,10 +247,11 @@ std::vector<SceneKey> make_keys() {
                                    "the stable step",
                                    "fragmentation: "}));
   keys.push_back(bounded(
-      "cohesive.face_friction", "number", "0", "0 <= mu <= 10",
+      "cohesive.face_friction", "number", "criterion.friction", "0 <= mu <= 10",
       "fragmentation: Coulomb friction of closed crack faces (Camacho and Ortiz): a face in "
-      "compression slides at mu times the closure's pressure, and that work is dissipated "
-      "(docs/fragmentation.md); 0: frictionless",
+      "compression slides at mu times the closure's pressure, and that work is dissipated; by "
+      "default the material's internal friction, the criterion's, since the faces are its "
+      "failure planes (docs/fragmentation.md); 0: frictionless",
       0.0, false, 10.0));
   append_keys(keys, body_keys());
   append_keys(keys, elastic_keys("2e11", "0.3"));

@@ -64,10 +64,13 @@ void DynamicsSceneReader::read_material() {
   read_element();
   s_.damping = number(top_, "damping");
   SceneObject bulk = object("bulk_viscosity");
-  s_.bulk_viscosity.linear = number(bulk, "bulk_viscosity.linear");
-  s_.bulk_viscosity.quadratic = number(bulk, "bulk_viscosity.quadratic");
+  const ContactDefaults defaults = problem_->default_contact();
+  s_.bulk_viscosity.linear = number(bulk, "bulk_viscosity.linear", defaults.bulk_linear);
+  s_.bulk_viscosity.quadratic = number(bulk, "bulk_viscosity.quadratic", defaults.bulk_quadratic);
   bulk.finish();
-  s_.corotational = word(top_, "kinematics", " small corotational ") == "corotational";
+  // Fragments spin: a fragmentation study turns its cells' frames by default.
+  s_.corotational = word(top_, "kinematics", " small corotational ",
+                         s_.fragmentation ? "corotational" : "small") == "corotational";
 }
 
 void DynamicsSceneReader::read_element() {
@@ -95,7 +98,7 @@ void DynamicsSceneReader::read_wall() {
   w.normal = point(o, "wall.normal", fallback.normal);
   if (w.normal.norm() == 0.0) o.fail_value("normal", "expected not [0, 0]");
   w.normal.normalize();
-  w.friction = number(o, "wall.friction");
+  w.friction = number(o, "wall.friction", problem_->default_contact().wall_friction);
   o.finish();
   const double tolerance = 1e-12 * body.domain.scale();
   for (const DynamicsBody& b : s_.bodies)
@@ -118,9 +121,15 @@ void DynamicsSceneReader::read_contact() {
   s_.contact = flag(c, "contact.enabled");
   s_.penalty.alpha = number(c, "contact.alpha");
   s_.penalty.damping_ratio = number(c, "contact.damping_ratio");
-  s_.penalty.plastic = flag(c, "contact.plastic");
-  s_.contact_friction = number(c, "contact.friction");
-  s_.quiescent_penetration = number(c, "contact.quiescent_penetration");
+  const ContactDefaults defaults = problem_->default_contact();
+  // The problem's velocity penalty unless the scene damps contact; its displacement penalty
+  // where there is a resting weight to hold.
+  s_.penalty.plastic =
+      flag(c, "contact.plastic", defaults.plastic && s_.penalty.damping_ratio == 0.0);
+  s_.contact_friction = number(c, "contact.friction", defaults.friction);
+  const bool resting = s_.wall && std::abs(s_.gravity.dot(s_.wall->normal)) > 0.0;
+  s_.quiescent_penetration =
+      number(c, "contact.quiescent_penetration", resting ? defaults.quiescent_penetration : 0.0);
   if (s_.quiescent_penetration > 0.0 &&
       !(s_.wall && std::abs(s_.gravity.dot(s_.wall->normal)) > 0.0))
     c.fail_value("quiescent_penetration",

@@ -18,13 +18,14 @@ void DynamicsSceneReader::read_fracture() {
   law.fracture_energy = number(c, "cohesive.fracture_energy");
   law.shear_factor = number(c, "cohesive.shear_factor");
   s_.stiffness_factor = number(c, "cohesive.initial_stiffness");
-  s_.face_friction = number(c, "cohesive.face_friction");
-  c.finish();
   SceneObject m = object("criterion");
   s_.criterion.cohesion = number(m, "criterion.cohesion", law.strength);
   s_.criterion.friction = number(m, "criterion.friction");
   s_.criterion.tensile_cutoff = number(m, "criterion.tensile_cutoff", law.strength);
   m.finish();
+  // The faces are the material's failure planes: by default they slide with its friction.
+  s_.face_friction = number(c, "cohesive.face_friction", s_.criterion.friction);
+  c.finish();
 }
 
 }  // namespace vorodg

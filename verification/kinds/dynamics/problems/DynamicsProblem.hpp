@@ -41,6 +41,15 @@ struct ReportColumn {
   std::function<std::string(const DynamicsMeasures&)> cell;
 };
 
+/// The contact and cell damping a problem's scenes get where they do not say (the keys
+/// contact.plastic, contact.quiescent_penetration, contact.friction, wall.friction,
+/// bulk_viscosity.linear and .quadratic): off for most problems; column-impact's are the report's.
+struct ContactDefaults {
+  bool plastic = false;
+  double quiescent_penetration = 0.0, friction = 0.0, wall_friction = 0.0;
+  double bulk_linear = 0.0, bulk_quadratic = 0.0;
+};
+
 class DynamicsProblem {
  public:
   virtual ~DynamicsProblem() = default;
@@ -69,6 +78,7 @@ class DynamicsProblem {
   virtual void default_length(DynamicsScene& scene) const = 0;
   /// That default in words, for the key table.
   virtual std::string default_length_doc() const = 0;
+  virtual ContactDefaults default_contact() const { return {}; }
 
   // ---- the run
   /// True where a velocity is prescribed on part of the boundary (momentum enters there).

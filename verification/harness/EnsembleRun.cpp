@@ -13,6 +13,13 @@ std::vector<EnsembleRunId> ensemble_runs(const std::vector<SceneMesh>& meshes) {
   std::vector<EnsembleRunId> runs;
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const SceneMesh& mesh = meshes[m];
+    // A run's id is its block's label, level and realization: two blocks with one label would
+    // write, and resume, each other's runs.
+    for (std::size_t o = 0; o < m; ++o)
+      if (meshes[o].label == mesh.label)
+        throw InputError("meshes[" + std::to_string(m) + "]: label '" + mesh.label +
+                         "' is also meshes[" + std::to_string(o) +
+                         "]'s: expected a label of its own (their runs would share ids)");
     for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
       for (int r = 0; r < mesh.realizations; ++r)
         runs.push_back({static_cast<int>(m), level, r, mesh.label,

@@ -147,9 +147,8 @@ void CohesiveForces::bind_face(const SplitDofMap& dofs, Face& f) const {
   }
 }
 
-std::pair<Eigen::Vector2d, Eigen::Vector2d> CohesiveForces::frame(const Face& face,
-                                                                  const Eigen::VectorXd& u) const {
-  if (!turning_) return {face.n, face.t};
+CohesiveForces::Frame CohesiveForces::frame(const Face& face, const Eigen::VectorXd& u) const {
+  if (!turning_) return {face.n, face.t, Eigen::Vector2d::Zero(), 0.0};
   const MeshEdge& edge = mesh_.edge(face.edge);
   auto mean_end = [&](int j) {
     return Eigen::Vector2d(0.5 *
@@ -158,9 +157,18 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> CohesiveForces::frame(const Face& fa
   const Eigen::Vector2d d =
       mesh_.vertex(edge.v1) + mean_end(1) - mesh_.vertex(edge.v0) - mean_end(0);
   const double length = d.norm();
-  if (!(length > 1e-9 * face.length)) return {face.n, face.t};  // crushed flat: keep the last
+  if (!(length > 1e-9 * face.length))  // crushed flat: the reference frame
+    return {face.n, face.t, d, 0.0};
   const Eigen::Vector2d t = d / length;
-  return {Eigen::Vector2d(t.y(), -t.x()), t};  // as make_face builds them
+  return {Eigen::Vector2d(t.y(), -t.x()), t, d, length};  // as make_face builds them
+}
+
+void CohesiveForces::add_chord_force(const Face& face, const Eigen::Vector2d& force,
+                                     Eigen::VectorXd& f) {
+  for (const auto& nodes : {face.node0, face.node1}) {
+    f.segment<2>(2 * nodes[1]) -= 0.5 * force;
+    f.segment<2>(2 * nodes[0]) += 0.5 * force;
+  }
 }
 
 void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
@@ -170,7 +178,10 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
     Face& face = faces_[slot];
     if (face.released) continue;
     const CohesiveLaw& law = law_of(slot);
-    const auto [n, t] = frame(face, u);
+    const Frame fr = frame(face, u);
+    const Eigen::Vector2d& n = fr.n;
+    const Eigen::Vector2d& t = fr.t;
+    Eigen::Vector2d chord_force = Eigen::Vector2d::Zero();
     Eigen::Vector2d jump[2];  // u_cell1 - u_cell0 at v0 and v1
     for (int j = 0; j < 2; ++j)
       jump[j] = u.segment<2>(2 * face.node1[j]) - u.segment<2>(2 * face.node0[j]);
@@ -188,6 +199,16 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       p.jump = g;
       p.force = force;
       add_point_force(face, q, force, f);
+      if (fr.length > 0.0)
+        chord_force += w * (r.traction[1] * d[0] - r.traction[0] * d[1]) / fr.length * n;
+    }
+    if (turning_) {
+      if (!face.framed) face.chord = fr.chord;
+      work -= 0.5 * (face.chord_force + chord_force).dot(fr.chord - face.chord);
+      face.chord = fr.chord;
+      face.chord_force = chord_force;
+      face.framed = true;
+      add_chord_force(face, chord_force, f);
     }
     face.end_gap = std::min(jump[0].norm(), jump[1].norm());
   }
@@ -210,6 +231,7 @@ void CohesiveForces::reassemble(Eigen::VectorXd& f) const {
   for (const Face& face : faces_) {
     if (face.released) continue;
     for (int q = 0; q < 2; ++q) add_point_force(face, q, face.points[q].force, f);
+    if (turning_) add_chord_force(face, face.chord_force, f);
   }
 }
 

@@ -75,6 +75,12 @@ class CohesiveForces {
   /// kinematics, where fragments spin): the line through the mean current positions of its two
   /// sides' ends. Off (the default), the reference frame, which a turned face misreads: a
   /// normal opening of a face turned by theta is read as cos theta normal, sin theta shear.
+  /// The face's energy then depends on its frame too, and its force is the exact gradient: the
+  /// traction's part plus, on the chord d, dE/dd = w (tau_t g_n - tau_n g_t) / |d| n (the
+  /// opening's normal and tangential parts turn with d: dg_n/dd = -g_t n / |d|, dg_t/dd =
+  /// g_n n / |d|). Without it the closure and friction forces are not conservative in a turning
+  /// frame, and spinning, closed faces fed energy in (measured: column runs blew up). It
+  /// vanishes where the traction is parallel to the opening (the law with beta = 1).
   void set_turning_frames(bool on) { turning_ = on; }
   /// Interior edge e cracks: its points start from zero opening. Throws InputError for a
   /// boundary edge or an edge already cracked.
@@ -155,12 +161,23 @@ class CohesiveForces {
     std::array<QuadraturePoint, 2> points;
     double end_gap = 0.0;  // the smaller of the two end jumps' lengths, last evaluation
     bool released = false;
+    // Turning frames: the chord d between the mean ends at the last evaluation, and the force
+    // dE/dd the face's energy puts on it (see frame_force); none before the first evaluation.
+    Eigen::Vector2d chord = Eigen::Vector2d::Zero(), chord_force = Eigen::Vector2d::Zero();
+    bool framed = false;
+  };
+  /// A face's frame now: its normal and tangent, and (turning) the chord they follow.
+  struct Frame {
+    Eigen::Vector2d n, t, chord;
+    double length = 0.0;  // |chord|; 0: the reference frame
   };
   static Face make_face(const PolygonMesh& mesh, int e);
   /// The face's (n, t) now: the reference ones, or with turning frames those of the line
   /// through the mean positions of its two sides' ends.
-  std::pair<Eigen::Vector2d, Eigen::Vector2d> frame(const Face& face,
-                                                    const Eigen::VectorXd& u) const;
+  Frame frame(const Face& face, const Eigen::VectorXd& u) const;
+  /// Spreads a chord force over the face's ends: -1/2 of it on both sides' v1 nodes, +1/2 on
+  /// their v0 nodes (the chord runs between the mean positions of v0 and v1).
+  static void add_chord_force(const Face& face, const Eigen::Vector2d& force, Eigen::VectorXd& f);
   /// Spreads point q's force (global, the one cell1's side takes with a minus) over the face's
   /// four bound nodes.
   static void add_point_force(const Face& face, int q, const Eigen::Vector2d& force,

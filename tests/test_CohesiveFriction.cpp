@@ -152,6 +152,50 @@ TEST(CohesiveFriction, ATurnedFaceReadsItsOpeningInItsOwnFrame) {
   }
 }
 
+TEST(CohesiveFriction, ATurningFramesForceIsItsEnergysGradient) {
+  // A broken face (the law carries nothing), its two cells turned, pressed together and
+  // sheared by an arbitrary field: the force is minus the gradient of the closure's energy
+  // k <g_n>^2 / 2 read in the turning frame, frame's own dependence on u included (central
+  // differences, to 1e-6).
+  Pair p;
+  std::vector<char> connected(p.model.mesh.num_edges(), 1);
+  connected[p.edge] = 0;
+  const SplitDofMap dofs(p.model.mesh, connected);
+  CohesiveForces faces(p.model.mesh, p.law);
+  faces.set_turning_frames(true);
+  faces.add_edge(p.edge);
+  faces.bind(dofs);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.num_dofs());
+  faces.evaluate(p.displacement(dofs, 3.0 * p.law.critical_opening(), 0.0), f);
+  ASSERT_TRUE(faces.broken(p.edge));
+  const int cell1 = p.model.mesh.edge(p.edge).cell1;
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.7).toRotationMatrix();
+  Eigen::VectorXd u(dofs.num_dofs());
+  for (int c = 0; c < p.model.mesh.num_cells(); ++c)
+    for (int j = 0; j < p.model.mesh.cell_size(c); ++j) {
+      const Point X = p.model.mesh.vertex(p.model.mesh.cell_vertices(c)[j]);
+      const Point x = R * (c == cell1 ? Point(X - 2e-7 * p.n + 1e-4 * p.t) : X);
+      u.segment<2>(2 * dofs.node(c, j)) = x - X;
+    }
+  u += testing::random_vector(dofs.num_dofs(), 3e-8, 5);
+  auto energy = [&](const Eigen::VectorXd& at) {
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(dofs.num_dofs());
+    faces.evaluate(at, g);
+    return faces.stored_energy();
+  };
+  f.setZero();
+  faces.evaluate(u, f);
+  const double h = 1e-11;
+  double worst = 0.0;
+  for (int i = 0; i < dofs.num_dofs(); ++i) {
+    Eigen::VectorXd up = u, down = u;
+    up[i] += h, down[i] -= h;
+    const double numeric = -(energy(up) - energy(down)) / (2 * h);
+    worst = std::max(worst, std::abs(numeric - f[i]));
+  }
+  EXPECT_LT(worst, 1e-6 * f.norm()) << "force scale " << f.norm();
+}
+
 TEST(CohesiveFriction, RefusesABadCoefficient) {
   Pair p;
   CohesiveForces faces(p.model.mesh, p.law);

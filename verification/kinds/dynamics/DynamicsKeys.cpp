@@ -253,6 +253,12 @@ std::vector<SceneKey> make_keys() {
       "default the material's internal friction, the criterion's, since the faces are its "
       "failure planes (docs/fragmentation.md); 0: frictionless",
       0.0, false, 10.0));
+  keys.push_back(
+      key("cohesive.turning_frames", "bool", "false", "true or false (true only with corotational)",
+          "fragmentation: crack faces read their openings in a frame that turns with them (the "
+          "chord of their mean ends) instead of their reference frame; frame-indifferent and the "
+          "exact gradient of the faces' energy, but it made column runs unstable "
+          "(docs/impact.md, \"The ablation\")"));
   append_keys(keys, body_keys());
   append_keys(keys, elastic_keys("2e11", "0.3"));
   append_keys(keys, material_keys());

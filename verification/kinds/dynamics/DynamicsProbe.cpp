@@ -78,8 +78,11 @@ const DynamicsMeasures& DynamicsProbe::finish() {
   if (m_.contact_steps > 0) m_.contact_time = m_.contact_end - m_.contact_start + run_.dt();
   if (scene_.wall)
     m_.rebound_velocity = run_.record().momentum.dot(scene_.wall->normal) / total_mass_;
-  if (const ContactForces* contact = run_.contact())
+  if (const ContactForces* contact = run_.contact()) {
     m_.contact_friction_dissipated = contact->friction_dissipated();
+    m_.contact_velocity_dissipated = contact->velocity_penalty_dissipated();
+  }
+  m_.bulk_viscosity_dissipated = run_.record().bulk_viscosity_dissipation;
   return m_;
 }
 

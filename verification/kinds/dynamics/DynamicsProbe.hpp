@@ -39,6 +39,8 @@ struct DynamicsMeasures {
   double rear_strike_time = NAN;
   // the slip work of Coulomb friction: between surfaces and on the wall, and on crack faces
   double contact_friction_dissipated = NAN, face_friction_dissipated = NAN;
+  // what contact's velocity penalty (damping or plastic) and the cells' bulk viscosity took
+  double contact_velocity_dissipated = NAN, bulk_viscosity_dissipated = NAN;
   // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
   double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
   double single_cell_mass_fraction = NAN;  // the mass in fragments of one cell, of the total

@@ -86,6 +86,7 @@ struct DynamicsScene {
   CohesiveParameters cohesive;
   double stiffness_factor = 0.0;  // K0 in units of E / h_avg
   double face_friction = 0.0;     // Coulomb's mu on closed crack faces
+  bool turning_faces = false;     // corotational: faces read openings in turning frames
   MohrCoulombParameters criterion;
   std::vector<SceneMesh> meshes;
   /// Every key and the value used, in the table's order (the echo and summary.json).

@@ -60,6 +60,8 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"rear_strike_time", &M::rear_strike_time},
       {"contact_friction_dissipated", &M::contact_friction_dissipated},
       {"face_friction_dissipated", &M::face_friction_dissipated},
+      {"contact_velocity_dissipated", &M::contact_velocity_dissipated},
+      {"bulk_viscosity_dissipated", &M::bulk_viscosity_dissipated},
       {"fragments", &M::fragments},
       {"max_fragment_mass_fraction", &M::max_fragment_mass_fraction},
       {"single_cell_mass_fraction", &M::single_cell_mass_fraction},

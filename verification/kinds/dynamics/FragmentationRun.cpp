@@ -66,7 +66,7 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
       criterion_(scene.criterion),
       eligible_(mesh.num_edges(), 1),
       friction_(scene.face_friction),
-      turning_frames_(scene.corotational),
+      turning_frames_(scene.corotational && scene.turning_faces),
       body_(scene.bodies[0].domain) {
   if (scene.wall) impact_ = scene.wall->point;
 }

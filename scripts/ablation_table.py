@@ -97,7 +97,7 @@ def main(argv):
         print(f"\n{block}, h = {mesh['sizes'][0] * 1e3:.1f} mm:\n\n{HEADER}")
         for label in labels:
             runs = [r for r in rows_of(os.path.join(outdir, label, "results.csv"))
-                    if r.get("mesh") == block and r.get("complete") == "true"]
+                    if r.get("mesh") == block and r.get("complete") in ("1", "true")]
             if runs:
                 print(row(label, os.path.join(outdir, label), runs))
     return 0

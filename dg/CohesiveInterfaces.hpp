@@ -18,8 +18,8 @@
 
 #include "core/material/CohesiveLaw.hpp"
 #include "core/material/MohrCoulomb.hpp"
-#include "dg/InterfaceOperators.hpp"
-#include "dg/InterfacePenalty.hpp"
+#include "interfaces/InterfaceOperators.hpp"
+#include "interfaces/InterfacePenalty.hpp"
 
 namespace vorodg {
 

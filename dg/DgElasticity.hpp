@@ -23,9 +23,9 @@
 #include "core/solve/DirichletConstraints.hpp"
 #include "core/solve/SparseCholesky.hpp"
 #include "core/util/Stopwatch.hpp"
-#include "dg/DgSpace.hpp"
-#include "dg/InterfaceOperators.hpp"
-#include "dg/InterfacePenalty.hpp"
+#include "interfaces/DgSpace.hpp"
+#include "interfaces/InterfaceOperators.hpp"
+#include "interfaces/InterfacePenalty.hpp"
 
 namespace vorodg {
 

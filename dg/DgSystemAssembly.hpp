@@ -13,7 +13,7 @@
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/solve/DirichletConstraints.hpp"
-#include "dg/DgSpace.hpp"
+#include "interfaces/DgSpace.hpp"
 
 namespace vorodg {
 

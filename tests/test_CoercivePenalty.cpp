@@ -11,7 +11,7 @@
 #include "cg/CgElasticity.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "dg/DgElasticity.hpp"
-#include "dg/TraceConstants.hpp"
+#include "interfaces/TraceConstants.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "verification/ErrorNorms.hpp"
 #include "verification/problems/AffineField.hpp"

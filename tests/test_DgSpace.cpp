@@ -1,4 +1,4 @@
-// The discontinuous space (dg/DgSpace), docs/design.md "Discontinuous Galerkin":
+// The discontinuous space (interfaces/DgSpace), docs/design.md "Discontinuous Galerkin":
 // - DOFs: every cell owns 2 DOFs per vertex copy, cells numbered consecutively
 //   (num_dofs = 2 sum_c |c|, cell_dof_count(c) = 2 |c|, offsets contiguous).
 // - Interfaces are exactly the interior edges, each once, with cell 1 = edge.cell0 and
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "core/mesh/PolygonMesh.hpp"
-#include "dg/DgSpace.hpp"
+#include "interfaces/DgSpace.hpp"
 #include "support/ElementTestMeshes.hpp"
 
 namespace vorodg {

@@ -13,7 +13,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/solve/DirichletConstraints.hpp"
-#include "dg/DgSpace.hpp"
+#include "interfaces/DgSpace.hpp"
 #include "dg/DgSystemAssembly.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "verification/problems/AffineField.hpp"

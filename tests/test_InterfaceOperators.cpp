@@ -1,4 +1,4 @@
-// The DG interface operators (dg/InterfaceOperators), docs/design.md "Discontinuous Galerkin":
+// The DG interface operators (interfaces/InterfaceOperators), docs/design.md "Discontinuous Galerkin":
 // - dofs(f): cell 1's DOFs then cell 2's, contiguous, in each cell's loop order.
 // - jump(f, t) [u] = u_1 - u_2 at a + t (b - a): zero for a continuous (CG-like) field at any t;
 //   for a field that is u on cell 1 and 0 on cell 2 it equals u there (and -u the other way);
@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "core/element/ElasticityIntegrator.hpp"
-#include "dg/DgSpace.hpp"
-#include "dg/InterfaceOperators.hpp"
+#include "interfaces/DgSpace.hpp"
+#include "interfaces/InterfaceOperators.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "verification/problems/AffineField.hpp"
 

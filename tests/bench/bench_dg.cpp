@@ -14,7 +14,7 @@
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
-#include "dg/TraceConstants.hpp"
+#include "interfaces/TraceConstants.hpp"
 #include "verification/SolveRun.hpp"
 
 namespace {

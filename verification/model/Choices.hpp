@@ -9,7 +9,7 @@
 #include "core/element/ElementFamily.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/solve/LinearSolverChoice.hpp"
-#include "dg/InterfacePenalty.hpp"
+#include "interfaces/InterfacePenalty.hpp"
 
 namespace vorodg {
 

@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "dg/TraceConstants.hpp"
+#include "interfaces/TraceConstants.hpp"
 
 namespace vorodg {
 

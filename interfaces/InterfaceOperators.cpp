@@ -1,4 +1,4 @@
-#include "dg/InterfaceOperators.hpp"
+#include "interfaces/InterfaceOperators.hpp"
 
 #include <algorithm>
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/element/ElasticityIntegrator.hpp"
-#include "dg/InterfaceOperators.hpp"
+#include "interfaces/InterfaceOperators.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "dg/TraceConstants.hpp"
+#include "interfaces/TraceConstants.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>

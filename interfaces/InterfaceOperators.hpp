@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/element/ElasticityIntegrator.hpp"
-#include "dg/DgSpace.hpp"
+#include "interfaces/DgSpace.hpp"
 
 namespace vorodg {
 

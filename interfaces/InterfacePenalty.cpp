@@ -1,4 +1,4 @@
-#include "dg/InterfacePenalty.hpp"
+#include "interfaces/InterfacePenalty.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "dg/DgSpace.hpp"
+#include "interfaces/DgSpace.hpp"
 
 #include <algorithm>
 

@@ -112,14 +112,7 @@ void DgElasticity::assemble_system() {
 /// -int {sigma(u)}n.[v] + s int {sigma(v)}n.[u].
 Eigen::MatrixXd DgElasticity::interface_matrix(std::size_t i) const {
   const Interface& f = space_.interfaces()[i];
-  const SegmentRule& rule = gauss2_segment();
-  const int m = space_.cell_dof_count(f.cell[0]) + space_.cell_dof_count(f.cell[1]);
-  Eigen::MatrixXd local = Eigen::MatrixXd::Zero(m, m);
-  for (int g = 0; g < 2; ++g) {
-    const double w = rule.weights[g] * f.length;
-    const InterfaceOperator J = ops_.jump(f, rule.t[g]);
-    local += penalty_->eps(i) * w * J.transpose() * J;
-  }
+  Eigen::MatrixXd local = ops_.penalty_block(f, penalty_->eps(i));
   if (options_.method == DgMethod::sipg) {
     const Eigen::MatrixXd JT = consistency_block(i, interface_traction(options_));
     local += -JT + options_.sipg_sign * JT.transpose();
@@ -150,17 +143,7 @@ Eigen::VectorXd DgElasticity::interface_load(const Eigen::VectorXd& u) {
 /// rule (exact for the fan and mean stresses, which are constant along the edge and so are
 /// computed once).
 Eigen::MatrixXd DgElasticity::consistency_block(std::size_t i, TractionKind kind) const {
-  const Interface& f = space_.interfaces()[i];
-  const SegmentRule& rule = gauss2_segment();
-  const bool constant = kind != TractionKind::point;
-  const InterfaceOperator fixed =
-      constant ? ops_.traction(f, 0.5, kind, penalty_->weights(i)) : InterfaceOperator();
-  const int m = space_.cell_dof_count(f.cell[0]) + space_.cell_dof_count(f.cell[1]);
-  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(m, m);
-  for (int q = 0; q < 2; ++q)
-    block += rule.weights[q] * f.length * ops_.jump(f, rule.t[q]).transpose() *
-             (constant ? fixed : ops_.traction(f, rule.t[q], kind, penalty_->weights(i)));
-  return block;
+  return ops_.consistency_block(space_.interfaces()[i], kind, penalty_->weights(i));
 }
 
 /// int {sigma(u)} n.[v] as a matrix on all DOFs. Only the rows of the edge's end vertices are

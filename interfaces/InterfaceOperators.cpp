@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/element/StrainOperator.hpp"
+#include "core/quadrature/TriangleRule.hpp"
 
 namespace vorodg {
 
@@ -118,6 +119,37 @@ InterfaceOperator InterfaceOperators::traction(const Interface& f, double t, Tra
   T.leftCols(m1) = w[0] * N * edge_stress(f.cell[0], f.local_edge[0], t, kind);
   T.rightCols(m2) = w[1] * N * edge_stress(f.cell[1], f.local_edge[1], 1.0 - t, kind);
   return T;
+}
+
+Eigen::MatrixXd InterfaceOperators::penalty_block(const Interface& f, double eps) const {
+  const SegmentRule& rule = gauss2_segment();
+  const int m = space_.cell_dof_count(f.cell[0]) + space_.cell_dof_count(f.cell[1]);
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(m, m);
+  for (int g = 0; g < 2; ++g) {
+    const double w = rule.weights[g] * f.length;
+    const InterfaceOperator J = jump(f, rule.t[g]);
+    block += eps * w * J.transpose() * J;
+  }
+  return block;
+}
+
+Eigen::MatrixXd InterfaceOperators::consistency_block(const Interface& f, TractionKind kind,
+                                                      const Eigen::Vector2d& w) const {
+  const SegmentRule& rule = gauss2_segment();
+  const bool constant = kind != TractionKind::point;
+  const InterfaceOperator fixed = constant ? traction(f, 0.5, kind, w) : InterfaceOperator();
+  const int m = space_.cell_dof_count(f.cell[0]) + space_.cell_dof_count(f.cell[1]);
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(m, m);
+  for (int q = 0; q < 2; ++q)
+    block += rule.weights[q] * f.length * jump(f, rule.t[q]).transpose() *
+             (constant ? fixed : traction(f, rule.t[q], kind, w));
+  return block;
+}
+
+Eigen::MatrixXd InterfaceOperators::sipg_block(const Interface& f, double eps, TractionKind kind,
+                                               const Eigen::Vector2d& w) const {
+  const Eigen::MatrixXd C = consistency_block(f, kind, w);
+  return penalty_block(f, eps) - C - C.transpose();
 }
 
 }  // namespace vorodg

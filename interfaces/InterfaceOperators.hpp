@@ -59,6 +59,17 @@ class InterfaceOperators {
   /// Mean stress operator of cell c (3 x 2n): sigma_mean = D * mean(B) u_c.
   const StressOperator& mean_stress_operator(int c) const { return mean_stress_[c]; }
 
+  // Blocks of the interface terms on the interface's two cells' DOFs, with the two-point rule
+  // (exact: jumps are linear along the edge, and fan and mean stresses constant on it).
+  /// eps int_F [u].[v].
+  Eigen::MatrixXd penalty_block(const Interface& f, double eps) const;
+  /// int_F {sigma(u)}_w n . [v] (v the rows, u the columns).
+  Eigen::MatrixXd consistency_block(const Interface& f, TractionKind kind,
+                                    const Eigen::Vector2d& w) const;
+  /// The symmetric interior-penalty block: penalty_block - C - C^T, C the consistency block.
+  Eigen::MatrixXd sipg_block(const Interface& f, double eps, TractionKind kind,
+                             const Eigen::Vector2d& w) const;
+
  private:
   const DgSpace& space_;
   const ElasticityIntegrator& integrator_;

@@ -131,9 +131,27 @@ void CentralDifference::initialize(const Eigen::VectorXd& u0, const Eigen::Vecto
 }
 
 void CentralDifference::restart(bool cells_unchanged) {
-  const double elastic = cells_unchanged ? force_.reassemble(dofs_, f_int_, options_.threads)
-                                         : force_.compute(dofs_, u_, f_int_, options_.threads);
+  double elastic = cells_unchanged ? force_.reassemble(dofs_, f_int_, options_.threads)
+                                   : force_.compute(dofs_, u_, f_int_, options_.threads);
+  elastic += add_coupling(f_int_);
   restart_from(elastic, cells_unchanged);
+}
+
+void CentralDifference::set_interface_coupling(const InterfaceCoupling& coupling) {
+  if (initialized_) throw InputError("interface coupling: set after initialize()");
+  if (coupling.space().num_dofs() != dofs_.num_dofs())
+    throw InputError("interface coupling: built on a map of " +
+                     std::to_string(coupling.space().num_dofs()) + " DOFs, the integrator's has " +
+                     std::to_string(dofs_.num_dofs()));
+  coupling_ = &coupling;
+}
+
+double CentralDifference::add_coupling(Eigen::VectorXd& f_int) {
+  if (!coupling_) return 0.0;
+  f_coupling_.setZero(f_int.size());
+  const double energy = coupling_->add_forces(u_, f_coupling_);
+  f_int -= f_coupling_;
+  return energy;
 }
 
 void CentralDifference::restart_from(double elastic, bool cells_unchanged) {
@@ -195,7 +213,8 @@ const StepRecord& CentralDifference::step() {
     u_[i] += dt_ * v_half_[i];
   }
   const double t_next = double(n + 1) * dt_;
-  const double elastic = force_.compute(dofs_, u_, f_int_, threads);
+  double elastic = force_.compute(dofs_, u_, f_int_, threads);
+  elastic += add_coupling(f_int_);
   external_forces(t_next, f_ext_next_);
   interface_forces(v_half_, f_contact_next_);
   bulk_forces(v_half_, f_bulk_next_);
@@ -242,6 +261,7 @@ const StepRecord& CentralDifference::step() {
 }
 
 void CentralDifference::remap(SplitDofMap dofs) {
+  if (coupling_) throw InputError("remap: the interface coupling is built on the current map");
   if (!initialized_) throw InputError("central difference: remap() before initialize()");
   const double before = record_.kinetic_leapfrog + record_.elastic;
   const SplitDofMap old = std::move(dofs_);
@@ -285,6 +305,7 @@ void CentralDifference::remap(SplitDofMap dofs) {
 }
 
 void CentralDifference::disconnect(const std::vector<char>& connected, std::span<const int> edges) {
+  if (coupling_) throw InputError("disconnect: the interface coupling is built on the current map");
   if (!initialized_) throw InputError("central difference: disconnect() before initialize()");
   const double before = record_.kinetic_leapfrog + record_.elastic;
   const int old_nodes = dofs_.num_nodes();

@@ -21,6 +21,10 @@
 // acceleration like applied forces but are kept apart, so that their work (booked by
 // ContactWork as the trapezoid over the step) goes to StepRecord::contact_work.
 //
+// Interfaces coupled from the start (set_interface_coupling, optional): InterfaceCoupling's
+// interior-penalty forces join the internal force, and their energy 1/2 u.K_F u the elastic
+// energy, so the balance closes to round-off with them (they are linear in u).
+//
 // Cohesive cracks (set_cohesive, optional): CohesiveForces adds the tractions of the cohesive
 // law on the cracked edges at the same evaluations, into the same interface force vector, and
 // books its own share of the trapezoid, which goes to StepRecord::cohesive_work.
@@ -45,6 +49,7 @@
 #include "dynamics/BulkViscosity.hpp"
 #include "dynamics/CohesiveForces.hpp"
 #include "dynamics/ContactForces.hpp"
+#include "dynamics/InterfaceCoupling.hpp"
 #include "dynamics/InternalForce.hpp"
 #include "dynamics/LumpedMass.hpp"
 #include "dynamics/OrderedSum.hpp"
@@ -78,6 +83,10 @@ class CentralDifference {
   /// Cohesive tractions on cracked edges at every step; `cohesive` must outlive the integrator.
   /// It may be set or grown (CohesiveForces::add_edge, then remap) at any time.
   void set_cohesive(CohesiveForces& cohesive);
+  /// Interfaces held together by interior-penalty terms; `coupling` must outlive the
+  /// integrator and be built on dofs(). Throws InputError after initialize() or for another
+  /// map's coupling. The map may no longer be remapped.
+  void set_interface_coupling(const InterfaceCoupling& coupling);
   /// Bulk viscosity on the cells at every step; `bulk` must outlive the integrator. Throws
   /// InputError after initialize().
   void set_bulk_viscosity(BulkViscosity& bulk);
@@ -164,6 +173,10 @@ class CentralDifference {
   ExternalForce external_force_;
   ContactForces* contact_ = nullptr;
   CohesiveForces* cohesive_ = nullptr;
+  const InterfaceCoupling* coupling_ = nullptr;
+  Eigen::VectorXd f_coupling_;  // scratch: the coupling's force -K_F u
+  /// f_int += K_F u of the coupling (none: nothing); returns its energy.
+  double add_coupling(Eigen::VectorXd& f_int);
   BulkViscosity* bulk_ = nullptr;
   std::vector<VelocityBoundary> boundaries_;
 

@@ -37,10 +37,17 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
   Eigen::VectorXd local, force;
   for (std::size_t i = 0; i < blocks_.size(); ++i) {
     const std::vector<int>& d = dofs_[i];
+    // Displacements relative to the first vertex's: K_F annihilates translations, so a body
+    // that has moved far feels no round-off of its translation (as in InternalForce).
     local.resize(d.size());
-    for (std::size_t k = 0; k < d.size(); ++k) local[k] = u[d[k]];
+    for (std::size_t k = 0; k < d.size(); ++k) local[k] = u[d[k]] - u[d[k % 2]];
     force.noalias() = blocks_[i] * local;
     energy += 0.5 * local.dot(force);
+    // Self-equilibrated: the last vertex takes minus the others' sum, so no momentum is made.
+    const std::size_t last = d.size() - 2;
+    double sx = 0.0, sy = 0.0;
+    for (std::size_t k = 0; k < last; k += 2) sx += force[k], sy += force[k + 1];
+    force[last] = -sx, force[last + 1] = -sy;
     for (std::size_t k = 0; k < d.size(); ++k) f[d[k]] -= force[k];
   }
   return energy;

@@ -31,7 +31,7 @@ Ritz top_ritz(const std::vector<double>& alpha, const std::vector<double>& beta)
 
 GlobalTimeStep::GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs,
                                const Eigen::VectorXd& node_masses, const StableTimeStep& bound,
-                               const LanczosOptions& options) {
+                               const LanczosOptions& options, const InterfaceCoupling* coupling) {
   const Eigen::Index n = 2 * node_masses.size();
   if (n != dofs.num_dofs())
     throw InputError("global time step: " + std::to_string(node_masses.size()) +
@@ -39,7 +39,7 @@ GlobalTimeStep::GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs,
   Eigen::VectorXd scale(n);  // M^-1/2 per DOF
   for (Eigen::Index i = 0; i < n; ++i) scale[i] = 1.0 / std::sqrt(node_masses[i / 2]);
   Random random(options.seed);
-  Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), f(n);
+  Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), f(n), coupled(n);
   for (Eigen::Index i = 0; i < n; ++i) q[i] = random.uniform(-1.0, 1.0);
   q /= q.norm();
   std::vector<double> alpha, beta;
@@ -47,6 +47,11 @@ GlobalTimeStep::GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs,
   Ritz ritz;
   for (int j = 0; j < options.max_iterations; ++j) {
     force.compute(dofs, scale.cwiseProduct(q), f, options.threads);
+    if (coupling) {  // K_F q: add_forces gives -K_F q
+      coupled.setZero();
+      coupling->add_forces(scale.cwiseProduct(q), coupled);
+      f -= coupled;
+    }
     w = scale.cwiseProduct(f) - beta_prev * q_prev;
     alpha.push_back(q.dot(w));
     w -= alpha.back() * q;
@@ -63,7 +68,9 @@ GlobalTimeStep::GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs,
   }
   theta_ = ritz.theta;
   residual_ = ritz.residual;
-  const double lambda = std::min(theta_ + residual_, bound.max_eigenvalue());
+  const double cap =
+      bound.max_eigenvalue() + (coupling ? coupling->eigenvalue_bound(node_masses) : 0.0);
+  const double lambda = std::min(theta_ + residual_, cap);
   critical_ = 2.0 / std::sqrt(lambda);
 }
 

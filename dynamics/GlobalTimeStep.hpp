@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 
+#include "dynamics/InterfaceCoupling.hpp"
 #include "dynamics/InternalForce.hpp"
 #include "dynamics/StableTimeStep.hpp"
 
@@ -35,9 +36,11 @@ struct LanczosOptions {
 class GlobalTimeStep {
  public:
   /// `node_masses` are the per-node masses of `dofs`; the force's last-compute buffers are
-  /// overwritten. `bound` caps the eigenvalue.
+  /// overwritten. `bound` caps the eigenvalue. With `coupling` (built on `dofs`), the system is
+  /// the cells' and the coupled interfaces' together, and the cap adds the interfaces' bound.
   GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs, const Eigen::VectorXd& node_masses,
-                 const StableTimeStep& bound, const LanczosOptions& options = {});
+                 const StableTimeStep& bound, const LanczosOptions& options = {},
+                 const InterfaceCoupling* coupling = nullptr);
 
   /// 2 / sqrt(lambda), lambda = min(theta + r, cell bound).
   double critical() const { return critical_; }

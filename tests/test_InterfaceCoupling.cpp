@@ -21,6 +21,7 @@
 
 #include "core/util/Errors.hpp"
 #include "dynamics/CentralDifference.hpp"
+#include "dynamics/GlobalTimeStep.hpp"
 #include "dynamics/InternalForce.hpp"
 #include "support/DynamicsModel.hpp"
 
@@ -148,6 +149,17 @@ TEST(InterfaceCoupling, TheIntegratorKeepsTheCoupledBodysEnergy) {
     largest_jump = std::max(largest_jump, (run.displacement().segment<2>(f.dof_v0[0]) -
                                            run.displacement().segment<2>(f.dof_v0[1]))
                                               .norm());
+  // The price in steps: Lanczos on the coupled system against the continuous map's.
+  InternalForce cells(m.model.mesh, m.model.matrices);
+  const SplitDofMap continuous = SplitDofMap::continuous(m.model.mesh);
+  const double coupled_step =
+      GlobalTimeStep(cells, m.dofs, masses, m.model.limit, {}, &m.coupling).critical();
+  const double continuous_step =
+      GlobalTimeStep(cells, continuous, m.model.mass.node_masses(continuous), m.model.limit)
+          .critical();
+  std::printf("critical steps: coupled (Lanczos) %.3e, bound %.3e; continuous map %.3e\n",
+              coupled_step, dt / 0.9, continuous_step);
+  EXPECT_GE(coupled_step, dt / 0.9 * (1.0 - 1e-12));  // never below what the bound gives
   std::printf(
       "coupled free body: dt %.3e (cells alone %.3e), balance drift %.1e of %.3e, "
       "largest jump %.2e of the largest displacement %.2e\n",

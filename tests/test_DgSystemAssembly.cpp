@@ -13,8 +13,8 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/solve/DirichletConstraints.hpp"
-#include "interfaces/DgSpace.hpp"
 #include "dg/DgSystemAssembly.hpp"
+#include "interfaces/DgSpace.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "verification/problems/AffineField.hpp"
 

@@ -1,4 +1,5 @@
-// The DG interface operators (interfaces/InterfaceOperators), docs/design.md "Discontinuous Galerkin":
+// The DG interface operators (interfaces/InterfaceOperators), docs/design.md "Discontinuous
+// Galerkin":
 // - dofs(f): cell 1's DOFs then cell 2's, contiguous, in each cell's loop order.
 // - jump(f, t) [u] = u_1 - u_2 at a + t (b - a): zero for a continuous (CG-like) field at any t;
 //   for a field that is u on cell 1 and 0 on cell 2 it equals u there (and -u the other way);

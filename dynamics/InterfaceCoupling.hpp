@@ -28,8 +28,8 @@ namespace vorodg {
 class InterfaceCoupling {
  public:
   /// The interfaces of `dofs` (the interior edges it splits) on the table's mesh, with the
-  /// coercive penalty times `kp` (> 1/2 for coercivity; 1 is the quasi-static default). `table`,
-  /// `integrator` and `dofs` must outlive the object. Throws InputError for kp <= 0.
+  /// coercive penalty times `kp` (> 1/2 for coercivity; 1 is the quasi-static default). `table` and
+  /// `integrator` must outlive the object (the map is copied). Throws InputError for kp <= 0.
   InterfaceCoupling(const ElementTable& table, const ElasticityIntegrator& integrator,
                     const ElasticityIntegrator::CellMatrices& cells, const SplitDofMap& dofs,
                     double kp = 1.0, int threads = 1);

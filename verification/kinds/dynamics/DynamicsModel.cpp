@@ -56,7 +56,8 @@ DynamicsModel::DynamicsModel(const DynamicsScene& s, const EnsembleRunId& id)
       // A material varying from cell to cell (each mesh realization its own field).
       variation(MaterialVariation::uniform(bodies.mesh.num_cells(), s.variation,
                                            derive_seed(s.variation_seed, id.seed))) {
-  const SplitDofMap dofs = SplitDofMap::continuous(mesh());
+  const SplitDofMap dofs =
+      s.dg_interfaces ? SplitDofMap::discontinuous(mesh()) : SplitDofMap::continuous(mesh());
   InternalForce force = make_force(dofs);
   make_integrator(std::move(force), dofs);
 }
@@ -68,11 +69,15 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs) {
       for (std::size_t i = matrices.offset[c]; i < matrices.offset[c + 1]; ++i)
         matrices.data[i] *= variation.stiffness[c];
   const StableTimeStep bound(mesh(), matrices, mass);
+  if (scene.dg_interfaces) coupling.emplace(table, integrator, matrices, dofs);
   InternalForce force(mesh(), std::move(matrices));
-  const GlobalTimeStep lanczos(force, dofs, mass.node_masses(dofs),
-                               bound);  // of K: the linear force
+  const GlobalTimeStep lanczos(force, dofs, mass.node_masses(dofs), bound, {},
+                               coupling ? &*coupling : nullptr);  // of K: the linear force
   dt_lanczos = lanczos.critical();
-  dt_cells = bound.critical();
+  // With coupled interfaces the cells' bound holds for the cells alone: theirs is added.
+  dt_cells = coupling ? 2.0 / std::sqrt(bound.max_eigenvalue() +
+                                        coupling->eigenvalue_bound(mass.node_masses(dofs)))
+                      : bound.critical();
   lanczos_iterations = lanczos.iterations();
   // safety x the chosen estimate; >= 1 only got here with --force. With cracks, the cells' bound
   // (valid for every split) and the cohesive springs' share.
@@ -104,6 +109,7 @@ std::vector<double> DynamicsModel::wave_speeds() const {
 
 void DynamicsModel::make_integrator(InternalForce force, const SplitDofMap& dofs) {
   run.emplace(mesh(), mass, std::move(force), dofs, dt, DynamicsOptions{scene.damping, 1});
+  if (coupling) run->set_interface_coupling(*coupling);
   PenaltyParameters penalty = scene.penalty;
   if (scene.quiescent_penetration > 0.0) {
     // The report's choice: the whole resting weight on one vertex sinks it x h_avg at most.

@@ -13,6 +13,7 @@
 #include "dynamics/BulkViscosity.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/ContactForces.hpp"
+#include "dynamics/InterfaceCoupling.hpp"
 #include "dynamics/LumpedMass.hpp"
 #include "dynamics/MaterialVariation.hpp"
 #include "verification/kinds/dynamics/DynamicsMesh.hpp"
@@ -43,7 +44,8 @@ class DynamicsModel {
   double contact_stiffness = NAN;  // a fixed displacement penalty k_d (NaN: alpha m / dt^2)
   double bulk_step_ratio = 0.0;    // dt over the undamped critical estimate (bulk viscosity on)
 
-  std::optional<FragmentationRun> cracks;  // fragmentation runs only
+  std::optional<FragmentationRun> cracks;     // fragmentation runs only
+  std::optional<InterfaceCoupling> coupling;  // interfaces: dg
   std::optional<ContactForces> contact;
   std::optional<BulkViscosity> bulk;  // bulk viscosity on the cells, when a coefficient is > 0
   std::optional<CentralDifference> run;

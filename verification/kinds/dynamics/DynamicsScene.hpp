@@ -58,12 +58,13 @@ struct DynamicsScene {
   double E = 0.0, nu = 0.0, density = 0.0;
   PlaneModel plane = PlaneModel::stress;
   bool mean_dilation = false;
-  ElementOptions element;                  // `element`, `vem_stabilization`: the element family
-  bool corotational = false;               // kinematics: small strain in turning cell frames
-  double variation = 0.0;                  // per-cell factors on E and strength in [1 - x, 1 + x]
-  std::uint64_t variation_seed = 1;        // their stream (MaterialVariation)
-  double damping = 0.0;                    // mass-proportional, 1/s
-  BulkViscosityParameters bulk_viscosity;  // b1, b2 on the cells (off by default)
+  ElementOptions element;            // `element`, `vem_stabilization`: the element family
+  bool corotational = false;         // kinematics: small strain in turning cell frames
+  bool dg_interfaces = false;        // interfaces: every interior edge split and coupled from t = 0
+  double variation = 0.0;            // per-cell factors on E and strength in [1 - x, 1 + x]
+  std::uint64_t variation_seed = 1;  // their stream (MaterialVariation)
+  double damping = 0.0;              // mass-proportional, 1/s
+  BulkViscosityParameters bulk_viscosity;             // b1, b2 on the cells (off by default)
   Eigen::Vector2d gravity = Eigen::Vector2d::Zero();  // body force per unit mass, m/s^2
   // contact
   std::optional<DynamicsWall> wall;

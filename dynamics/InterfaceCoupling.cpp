@@ -1,5 +1,6 @@
 #include "dynamics/InterfaceCoupling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -26,6 +27,8 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
         ops_->sipg_block(faces[i], penalty_->eps(i), TractionKind::fan, penalty_->weights(i));
     dofs_[i] = ops_->dofs(faces[i]);
   }
+  for (const auto& d : dofs_)
+    largest_block_ = std::max(largest_block_, static_cast<Eigen::Index>(d.size()));
 }
 
 double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
@@ -34,21 +37,26 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
                      std::to_string(f.size()) + " forces: expected " + std::to_string(num_dofs_) +
                      " each");
   double energy = 0.0;
-  Eigen::VectorXd local, force;
+  // One buffer of the largest block's size: the loop allocates nothing (cells differ in size).
+  thread_local Eigen::VectorXd local_buffer, force_buffer;
+  local_buffer.resize(largest_block_);
+  force_buffer.resize(largest_block_);
   for (std::size_t i = 0; i < blocks_.size(); ++i) {
     const std::vector<int>& d = dofs_[i];
+    const Eigen::Index m = static_cast<Eigen::Index>(d.size());
+    auto local = local_buffer.head(m);
+    auto force = force_buffer.head(m);
     // Displacements relative to the first vertex's: K_F annihilates translations, so a body
     // that has moved far feels no round-off of its translation (as in InternalForce).
-    local.resize(d.size());
-    for (std::size_t k = 0; k < d.size(); ++k) local[k] = u[d[k]] - u[d[k % 2]];
+    for (Eigen::Index k = 0; k < m; ++k) local[k] = u[d[k]] - u[d[k % 2]];
     force.noalias() = blocks_[i] * local;
     energy += 0.5 * local.dot(force);
     // Self-equilibrated: the last vertex takes minus the others' sum, so no momentum is made.
-    const std::size_t last = d.size() - 2;
+    const Eigen::Index last = m - 2;
     double sx = 0.0, sy = 0.0;
-    for (std::size_t k = 0; k < last; k += 2) sx += force[k], sy += force[k + 1];
+    for (Eigen::Index k = 0; k < last; k += 2) sx += force[k], sy += force[k + 1];
     force[last] = -sx, force[last + 1] = -sy;
-    for (std::size_t k = 0; k < d.size(); ++k) f[d[k]] -= force[k];
+    for (Eigen::Index k = 0; k < m; ++k) f[d[k]] -= force[k];
   }
   return energy;
 }

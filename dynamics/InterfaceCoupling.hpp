@@ -56,6 +56,7 @@ class InterfaceCoupling {
   std::vector<Eigen::MatrixXd> blocks_;
   std::vector<std::vector<int>> dofs_;
   int num_dofs_ = 0;
+  Eigen::Index largest_block_ = 0;
 };
 
 }  // namespace vorodg

@@ -19,6 +19,9 @@
 #include <string>
 
 #include "core/material/CoulombFriction.hpp"
+#include "dynamics/contact/ContactReport.hpp"
+#include "dynamics/contact/PairState.hpp"
+#include "dynamics/contact/PenaltyContact.hpp"
 
 namespace vorodg {
 
@@ -37,6 +40,14 @@ class ContactFriction {
                         double stiffness) const {
     return coulomb_return(previous - stiffness * increment, mu_ * normal_force, stiffness);
   }
+  /// One contact's step, as both surface contact and the planes take it: the vertex moving at
+  /// `relative_velocity` against its target, pushed along `normal` by `pushed` (the penalty's
+  /// response: force and stiffness), with the shear `shear` it carried (updated). Returns the
+  /// friction force on the vertex (along tau = J n) and books the slip work, the stick spring's
+  /// energy and a slip in `report`. `who` names the caller when the state has no velocities.
+  Point force(const Point& normal, const Point& relative_velocity,
+              const PenaltyContact::Response& pushed, const PairState& state, double& shear,
+              ContactReport& report, const char* who) const;
   /// The stick spring's energy at `shear`: shear^2 / (2 k).
   static double stored_energy(double shear, double stiffness) {
     return stiffness > 0.0 ? 0.5 * shear * shear / stiffness : 0.0;

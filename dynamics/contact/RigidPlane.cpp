@@ -62,19 +62,11 @@ ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairStat
 
 void RigidPlane::add_friction(int p, const PenaltyContact::Response& normal, const PairState& state,
                               std::span<Point> force, ContactReport& report) {
-  if (state.velocity.empty())
-    throw InputError("rigid plane: friction needs the velocity of every pair: found none");
-  const Point tangent(-normal_.y(), normal_.x());
   const auto known = shear_.find(p);
-  const double previous = known == shear_.end() ? 0.0 : known->second;
-  const CoulombReturn c = friction_.respond(
-      previous, (state.repeated ? 0.0 : state.dt) * state.velocity[p].dot(tangent), normal.force,
-      normal.stiffness);
-  force[p] += c.shear * tangent;
-  shear_next_.emplace(p, c.shear);
-  report.potential += ContactFriction::stored_energy(c.shear, normal.stiffness);
-  report.friction_dissipated += c.dissipated;
-  report.sliding += c.slipping();
+  double shear = known == shear_.end() ? 0.0 : known->second;
+  const Point velocity = state.velocity.empty() ? Point::Zero() : state.velocity[p];
+  force[p] += friction_.force(normal_, velocity, normal, state, shear, report, "rigid plane");
+  shear_next_.emplace(p, shear);
 }
 
 }  // namespace vorodg

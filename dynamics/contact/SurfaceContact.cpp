@@ -153,18 +153,12 @@ void SurfaceContact::add_friction(std::uint64_t key, const Penetration& pen, int
                                   const PenaltyContact::Response& normal, double previous_shear,
                                   const PairState& state, std::span<Point> force,
                                   ContactReport& report) {
-  if (state.velocity.empty())
-    throw InputError("surface contact: friction needs the velocity of every pair: found none");
-  const Point tangent(-pen.normal.y(), pen.normal.x());
-  const double increment = (state.repeated ? 0.0 : state.dt) *
-                           PenaltyContact::relative_velocity(pen, p, e0, e1, state).dot(tangent);
-  const CoulombReturn c =
-      friction_.respond(previous_shear, increment, normal.force, normal.stiffness);
-  PenaltyContact::distribute(c.shear * tangent, pen.t, p, e0, e1, force);
-  inside_next_[key].shear = c.shear;
-  report.potential += ContactFriction::stored_energy(c.shear, normal.stiffness);
-  report.friction_dissipated += c.dissipated;
-  report.sliding += c.slipping();
+  double shear = previous_shear;
+  const Point f =
+      friction_.force(pen.normal, PenaltyContact::relative_velocity(pen, p, e0, e1, state), normal,
+                      state, shear, report, "surface contact");
+  PenaltyContact::distribute(f, pen.t, p, e0, e1, force);
+  inside_next_[key].shear = shear;
 }
 
 }  // namespace vorodg

@@ -42,10 +42,10 @@ Bar run_bar(const std::string& text) {
 
 TEST(DgInterfacesScene, TheWaveBarKeepsItsSpeed) {
   const Bar continuous = run_bar(wave_bar("")), dg = run_bar(wave_bar(R"("interfaces": "dg")"));
-  std::printf("wave bar, rcp: speed error %+.3f%% continuous, %+.3f%% dg; dt %.3e and %.3e; "
-              "balance %.1e\n",
-              100 * continuous.speed_error, 100 * dg.speed_error, continuous.dt, dg.dt,
-              dg.balance);
+  std::printf(
+      "wave bar, rcp: speed error %+.3f%% continuous, %+.3f%% dg; dt %.3e and %.3e; "
+      "balance %.1e\n",
+      100 * continuous.speed_error, 100 * dg.speed_error, continuous.dt, dg.dt, dg.balance);
   EXPECT_LT(std::abs(dg.speed_error), 0.005);
   EXPECT_LT(dg.balance, 1e-12);
   EXPECT_LT(dg.dt, continuous.dt);

@@ -146,6 +146,14 @@ void CentralDifference::set_interface_coupling(const InterfaceCoupling& coupling
   coupling_ = &coupling;
 }
 
+void CentralDifference::refresh_interfaces() {
+  if (!initialized_)
+    throw InputError("central difference: refresh_interfaces() before initialize()");
+  const double before = record_.kinetic_leapfrog + record_.elastic;
+  restart(true);
+  record_.activation_energy += record_.kinetic_leapfrog + record_.elastic - before;
+}
+
 double CentralDifference::add_coupling(Eigen::VectorXd& f_int) {
   if (!coupling_) return 0.0;
   f_coupling_.setZero(f_int.size());

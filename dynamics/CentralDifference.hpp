@@ -23,7 +23,9 @@
 //
 // Interfaces coupled from the start (set_interface_coupling, optional): InterfaceCoupling's
 // interior-penalty forces join the internal force, and their energy 1/2 u.K_F u the elastic
-// energy, so the balance closes to round-off with them (they are linear in u).
+// energy, so the balance closes to round-off with them (they are linear in u). An interface
+// activated as a crack leaves the coupling for a cohesive face (refresh_interfaces); the jump of
+// K* + elastic at that instant is booked as StepRecord::activation_energy.
 //
 // Cohesive cracks (set_cohesive, optional): CohesiveForces adds the tractions of the cohesive
 // law on the cracked edges at the same evaluations, into the same interface force vector, and
@@ -87,6 +89,10 @@ class CentralDifference {
   /// integrator and be built on dofs(). Throws InputError after initialize() or for another
   /// map's coupling. The map may no longer be remapped.
   void set_interface_coupling(const InterfaceCoupling& coupling);
+  /// After interfaces of the coupling were deactivated and the cohesive faces that replace them
+  /// added and bound (InterfaceActivation): the forces at the current state are recomputed
+  /// (cells unchanged) and the change of K* + elastic goes to activation_energy.
+  void refresh_interfaces();
   /// Bulk viscosity on the cells at every step; `bulk` must outlive the integrator. Throws
   /// InputError after initialize().
   void set_bulk_viscosity(BulkViscosity& bulk);

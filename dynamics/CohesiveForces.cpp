@@ -85,6 +85,45 @@ void CohesiveForces::add_edge(int e) {
   edges_.push_back(e);
 }
 
+Eigen::Vector2d CohesiveForces::carrying_opening(const CohesiveLaw& law,
+                                                 const Eigen::Vector2d& traction) const {
+  const CohesiveParameters& p = law.parameters();
+  const double beta2 = p.shear_factor * p.shear_factor;
+  // On the elastic branch tau = K0 (<d_n>, beta^2 d_t); a closed face's normal traction is the
+  // closure penalty's, k d_n.
+  Eigen::Vector2d s(
+      traction[0] >= 0.0 ? traction[0] / p.initial_stiffness : traction[0] / closure_stiffness(),
+      beta2 > 0.0 ? traction[1] / (beta2 * p.initial_stiffness) : 0.0);
+  const double effective = std::hypot(std::max(s[0], 0.0), p.shear_factor * s[1]);
+  const double peak = p.strength / p.initial_stiffness;
+  if (effective > peak) {  // beyond the law's strength: the peak, in the carried direction
+    if (s[0] > 0.0) s[0] *= peak / effective;
+    s[1] *= peak / effective;
+  }
+  return s;
+}
+
+void CohesiveForces::add_edge(int e, const Carried& carried) {
+  add_edge(e);
+  Face& face = faces_.back();
+  const CohesiveLaw& law = law_of(faces_.size() - 1);
+  const SegmentRule& rule = gauss2_segment();
+  for (int q = 0; q < 2; ++q) {
+    QuadraturePoint& p = face.points[q];
+    const Eigen::Vector2d s = carrying_opening(law, carried.traction[q]);
+    const Eigen::Vector2d& g = carried.jump[q];
+    p.shift = s - Eigen::Vector2d(g.dot(face.n), g.dot(face.t));
+    FacePointResponse r = face_point_response(law, s, closure_stiffness(), p.history);
+    p.friction.slip = s[1];  // the stick spring starts unstressed
+    const double w = rule.weights[q] * face.length;
+    p.opening = s;
+    p.traction = r.traction;
+    p.jump = g;
+    p.force = w * (r.traction[0] * face.n + r.traction[1] * face.t);
+    continuation_energy_ += w * face_point_stored_energy(law, s, closure_stiffness(), p.history);
+  }
+}
+
 double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
                                         const CohesiveLaw& law, const std::vector<char>& eligible,
                                         double friction) {
@@ -189,7 +228,7 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       const double s = rule.t[q], w = rule.weights[q] * face.length;
       const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
       QuadraturePoint& p = face.points[q];
-      const Eigen::Vector2d d(g.dot(n), g.dot(t));
+      const Eigen::Vector2d d = Eigen::Vector2d(g.dot(n), g.dot(t)) + p.shift;
       FacePointResponse r = face_point_response(law, d, closure_stiffness(), p.history);
       add_friction(friction_, closure_stiffness(), d[0], d[1], p.friction, r);
       const Eigen::Vector2d force = w * (r.traction[0] * n + r.traction[1] * t);
@@ -297,6 +336,13 @@ Eigen::VectorXd CohesiveForces::max_openings() const {
   for (const Face& face : faces_)
     w[face.edge] = 0.5 * (face.points[0].history.max_opening + face.points[1].history.max_opening);
   return w;
+}
+
+Eigen::Vector2d CohesiveForces::point_traction(int e, int q) const {
+  if (e < 0 || e >= static_cast<int>(slot_.size()) || slot_[e] < 0 || q < 0 || q > 1)
+    throw InputError("cohesive forces: point " + std::to_string(q) + " of edge " +
+                     std::to_string(e) + ": not a cracked edge's point");
+  return faces_[slot_[e]].points[q].traction;
 }
 
 bool CohesiveForces::broken(int e) const {

@@ -85,6 +85,22 @@ class CohesiveForces {
   /// Interior edge e cracks: its points start from zero opening. Throws InputError for a
   /// boundary edge or an edge already cracked.
   void add_edge(int e);
+  /// What an interface carried when it was activated (InterfaceActivation): at each Gauss point
+  /// (from v0) the jump u_cell1 - u_cell0 (global) and the traction (normal, tangential) of the
+  /// face frame that held it together.
+  struct Carried {
+    std::array<Eigen::Vector2d, 2> jump, traction;
+  };
+  /// Interior edge e cracks carrying `carried`: each point continues with the law from the
+  /// traction it carried, so nothing is released. The law's opening is the jump since then plus
+  /// the point on the elastic branch (and the closure penalty, in compression) whose traction is
+  /// the carried one: d = (g - g_0) + s, tau(s) = tau_0. Where the carried traction is beyond
+  /// the law's peak, s is the peak in the carried direction and the difference is released
+  /// (activation_work()); without a shear factor (beta = 0) the law carries no shear.
+  void add_edge(int e, const Carried& carried);
+  /// The law's energy stored at the starting points s of the edges added with add_edge(e,
+  /// carried), summed: the energy the law starts with, which the interface coupling held before.
+  double continuation_energy() const { return continuation_energy_; }
   /// An upper bound of the largest eigenvalue of M^-1 K_s, K_s the faces' springs at K0 on every
   /// `eligible` interior edge, M the pair masses (the fully split map's; merged nodes only lower
   /// it). Gershgorin on M^-1/2 K_s M^-1/2. Adding it to the cells' bound (StableTimeStep)
@@ -132,6 +148,9 @@ class CohesiveForces {
   double friction_dissipated_energy() const;
   /// Per mesh edge, the mean largest effective opening of its two points (0 if not cracked).
   Eigen::VectorXd max_openings() const;
+  /// The traction (normal, tangential) at Gauss point q (from v0) of cracked edge e, at the
+  /// last evaluation (or as it started). Throws InputError if e is not cracked.
+  Eigen::Vector2d point_traction(int e, int q) const;
   /// Whether cracked edge e is fully broken: both its points past the critical opening.
   bool broken(int e) const;
   int num_broken() const;
@@ -151,6 +170,7 @@ class CohesiveForces {
     Eigen::Vector2d traction = Eigen::Vector2d::Zero();
     Eigen::Vector2d jump = Eigen::Vector2d::Zero();   // u_cell1 - u_cell0, global, last evaluation
     Eigen::Vector2d force = Eigen::Vector2d::Zero();  // w (tau_n n + tau_t t), global, on cell1
+    Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // law opening - face-frame jump (add_edge)
   };
   struct Face {
     int edge;
@@ -208,6 +228,9 @@ class CohesiveForces {
   std::vector<int> slot_;  // per mesh edge: its face, or -1
   std::vector<int> released_;
   double work_ = 0.0;
+  double continuation_energy_ = 0.0;
+  /// The point of the law's elastic branch (closure in compression) carrying `traction`.
+  Eigen::Vector2d carrying_opening(const CohesiveLaw& law, const Eigen::Vector2d& traction) const;
 };
 
 }  // namespace vorodg

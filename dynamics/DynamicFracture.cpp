@@ -1,5 +1,7 @@
 #include "dynamics/DynamicFracture.hpp"
 
+#include <algorithm>
+
 #include "core/util/Stopwatch.hpp"
 
 namespace vorodg {
@@ -23,6 +25,7 @@ int DynamicFracture::step(int threads) {
   run_.step();
   release_faces();
   times_.integrator += clock.seconds();
+  if (activation_) return activate(threads);
   clock.restart();
   const std::vector<CrackInsertion::Failure> failing =
       insertion_.failing_edges(run_.dofs(), run_.displacement(), cracked_, threads);
@@ -31,12 +34,9 @@ int DynamicFracture::step(int threads) {
   clock.restart();
   std::vector<int> edges;
   for (const CrackInsertion::Failure& f : failing) {
-    cracked_[f.edge] = 1;
-    connected_[f.edge] = 0;
+    crack(f.edge);
     edges.push_back(f.edge);
     cohesive_.add_edge(f.edge);
-    if (contact_) contact_->surface().expose(f.edge);
-    events_.push_back({run_.step_count(), f.edge});
   }
   // The first rebuild starts from the edge set alone, whatever map the run began with; after
   // it only the classes at the new cracks' vertices change (SplitDofMap::disconnect).
@@ -46,6 +46,35 @@ int DynamicFracture::step(int threads) {
   } else {
     run_.disconnect(connected_, edges);
   }
+  times_.rebuild += clock.seconds();
+  return static_cast<int>(failing.size());
+}
+
+void DynamicFracture::crack(int edge) {
+  cracked_[edge] = 1;
+  connected_[edge] = 0;
+  if (contact_) contact_->surface().expose(edge);
+  events_.push_back({run_.step_count(), edge});
+}
+
+int DynamicFracture::activate(int threads) {
+  Stopwatch clock;
+  const std::vector<InterfaceActivation::Failure> failing =
+      activation_->failing(run_.displacement(), threads);
+  times_.check += clock.seconds();
+  if (failing.empty()) return 0;
+  clock.restart();
+  activation_->activate(failing, run_.displacement(), cohesive_);
+  std::vector<int> vertices;
+  for (const InterfaceActivation::Failure& f : failing) {
+    crack(f.edge);
+    vertices.push_back(mesh_.edge(f.edge).v0);
+    vertices.push_back(mesh_.edge(f.edge).v1);
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  cohesive_.rebind(run_.dofs(), vertices);
+  run_.refresh_interfaces();
   times_.rebuild += clock.seconds();
   return static_cast<int>(failing.size());
 }

@@ -16,6 +16,12 @@
 // on. Without surface contact no face is released: the closure penalty is then all that keeps
 // crack faces apart.
 //
+// Interfaces coupled from the start (set_activation): the run's map has split the edges that may
+// crack from t = 0 and the interior-penalty coupling holds them; the check is then
+// InterfaceActivation's, on the consistent interface traction, and a failing edge leaves the
+// coupling for a cohesive face that continues from the traction it carried, with no remap (its
+// nodes are split already). Release is the same.
+//
 // One insertion pass per step: a split copies the displacements, so the cells' stresses, and
 // with them every utilization, are the same after it; nothing more fails at that instant.
 #include <vector>
@@ -23,6 +29,7 @@
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/CohesiveForces.hpp"
 #include "dynamics/CrackInsertion.hpp"
+#include "dynamics/InterfaceActivation.hpp"
 #include "fracture/CrackHistory.hpp"
 #include "fracture/CrackState.hpp"
 
@@ -35,6 +42,10 @@ class DynamicFracture {
   /// touch again through surface contact.
   DynamicFracture(const PolygonMesh& mesh, CentralDifference& run, CohesiveForces& cohesive,
                   const CrackInsertion& insertion, ContactForces* contact = nullptr);
+
+  /// Interfaces coupled from the start: `activation` (on the run's coupling) replaces the
+  /// insertion check. Must outlive this object; set before the first step.
+  void set_activation(InterfaceActivation& activation) { activation_ = &activation; }
 
   /// One step of the integrator, then the insertion check; returns the edges cracked after it.
   int step(int threads);
@@ -61,12 +72,17 @@ class DynamicFracture {
  private:
   /// Releases the faces that may let go (see Release above).
   void release_faces();
+  /// The check and the rebuild of the coupled-interface approach; returns the edges activated.
+  int activate(int threads);
+  /// Marks `edge` cracked, exposes it to contact and logs it.
+  void crack(int edge);
 
   const PolygonMesh& mesh_;
   CentralDifference& run_;
   CohesiveForces& cohesive_;
   const CrackInsertion& insertion_;
   ContactForces* contact_;
+  InterfaceActivation* activation_ = nullptr;
   std::vector<char> cracked_;
   std::vector<char> connected_;  // !cracked_: the edge set of the DOF map
   bool split_yet_ = false;       // whether the run's map was built from connected_

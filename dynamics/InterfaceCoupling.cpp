@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -29,6 +30,52 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
   }
   for (const auto& d : dofs_)
     largest_block_ = std::max(largest_block_, static_cast<Eigen::Index>(d.size()));
+  active_.assign(faces.size(), 1);
+  interface_of_edge_.assign(table.mesh().num_edges(), -1);
+  flux_.resize(faces.size());
+  jump_.resize(faces.size());
+  const SegmentRule& rule = gauss2_segment();
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    interface_of_edge_[faces[i].edge] = static_cast<int>(i);
+    const Eigen::Index m = static_cast<Eigen::Index>(dofs_[i].size());
+    flux_[i].resize(4, m);
+    jump_[i].resize(4, m);
+    for (int q = 0; q < 2; ++q) {
+      const InterfaceOperator J = ops_->jump(faces[i], rule.t[q]);
+      jump_[i].middleRows<2>(2 * q) = J;
+      flux_[i].middleRows<2>(2 * q) =
+          ops_->traction(faces[i], rule.t[q], TractionKind::fan, penalty_->weights(i)) -
+          penalty_->eps(i) * J;
+    }
+  }
+}
+
+void InterfaceCoupling::deactivate(int i) {
+  if (i < 0 || i >= num_interfaces() || !active_[i])
+    throw InputError("interface coupling: interface " + std::to_string(i) + " is not active");
+  active_[i] = 0;
+}
+
+Eigen::VectorXd InterfaceCoupling::local(int i, const Eigen::VectorXd& u) const {
+  const std::vector<int>& d = dofs_[i];
+  Eigen::VectorXd x(d.size());
+  for (std::size_t k = 0; k < d.size(); ++k) x[k] = u[d[k]] - u[d[k % 2]];
+  return x;
+}
+
+double InterfaceCoupling::energy(int i, const Eigen::VectorXd& u) const {
+  const Eigen::VectorXd x = local(i, u);
+  return 0.5 * x.dot(blocks_[i] * x);
+}
+
+std::array<Eigen::Vector2d, 2> InterfaceCoupling::traction(int i, const Eigen::VectorXd& u) const {
+  const Eigen::Vector4d t = flux_[i] * local(i, u);
+  return {t.head<2>(), t.tail<2>()};
+}
+
+std::array<Eigen::Vector2d, 2> InterfaceCoupling::opening(int i, const Eigen::VectorXd& u) const {
+  const Eigen::Vector4d j = jump_[i] * local(i, u);
+  return {-j.head<2>(), -j.tail<2>()};
 }
 
 double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
@@ -42,6 +89,7 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
   local_buffer.resize(largest_block_);
   force_buffer.resize(largest_block_);
   for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    if (!active_[i]) continue;
     const std::vector<int>& d = dofs_[i];
     const Eigen::Index m = static_cast<Eigen::Index>(d.size());
     auto local = local_buffer.head(m);

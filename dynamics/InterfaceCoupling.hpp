@@ -13,6 +13,7 @@
 // The blocks are built once (each is (2 n_1 + 2 n_2)^2 doubles); a force evaluation is one dense
 // mat-vec per interface, in interface order, so it is the same for any thread count.
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -41,8 +42,24 @@ class InterfaceCoupling {
   const Eigen::MatrixXd& block(int i) const { return blocks_[i]; }
   const std::vector<int>& block_dofs(int i) const { return dofs_[i]; }
 
+  /// The interface on mesh edge e, or -1 (not split by the map).
+  int interface_of_edge(int e) const { return interface_of_edge_[e]; }
+  bool active(int i) const { return active_[i] != 0; }
+  /// Interface i lets go of its coupling for good (it has been activated as a crack): its block
+  /// no longer acts. Throws InputError if it is not active.
+  void deactivate(int i);
+  /// Interface i's energy 1/2 u_F.K_F u_F now.
+  double energy(int i, const Eigen::VectorXd& u) const;
+  /// The consistent interface traction at interface i's two Gauss points (segment rule, from
+  /// v0): the flux the coupling puts across the interface, {sigma(u)}_w n - eps [u] (n out of
+  /// cell 1, [u] = u_1 - u_2), in the global frame. It is what holds the two cells together;
+  /// for a continuous field it is sigma n.
+  std::array<Eigen::Vector2d, 2> traction(int i, const Eigen::VectorXd& u) const;
+  /// The jump u_2 - u_1 (the cohesive faces' opening) at interface i's two Gauss points.
+  std::array<Eigen::Vector2d, 2> opening(int i, const Eigen::VectorXd& u) const;
+
   /// Adds -K u (the coupling's force) to f (node DOFs of the map) and returns the coupling's
-  /// energy 1/2 u.K u. Throws InputError if u or f has the wrong size.
+  /// energy 1/2 u.K u, over the active interfaces. Throws InputError if u or f has the wrong size.
   double add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
   /// A bound of the largest eigenvalue of M^-1 K_I (K_I all the interface blocks, M the node
   /// masses): Gershgorin on M^-1/2 K_I M^-1/2. Added to the cells' bound it bounds the whole
@@ -55,6 +72,13 @@ class InterfaceCoupling {
   std::unique_ptr<InterfacePenalty> penalty_;
   std::vector<Eigen::MatrixXd> blocks_;
   std::vector<std::vector<int>> dofs_;
+  // Per interface, the flux (4 rows: x, y at Gauss point 0, then at point 1) and the jump [u]
+  // (the same rows) on its DOFs; per interface whether it still couples; per edge its interface.
+  std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> flux_, jump_;
+  std::vector<char> active_;
+  std::vector<int> interface_of_edge_;
+  /// Interface i's DOFs relative to its first vertex's (what K_F, the flux and the jump see).
+  Eigen::VectorXd local(int i, const Eigen::VectorXd& u) const;
   int num_dofs_ = 0;
   Eigen::Index largest_block_ = 0;
 };

@@ -29,6 +29,7 @@ struct StepRecord {
   double damping_dissipation = 0.0;
   double bulk_viscosity_dissipation = 0.0;  // BulkViscosity's work with its sign turned, cumulative
   double remap_energy = 0.0;                // energy changes at node splits or merges, cumulative
+  double activation_energy = 0.0;  // energy changes where coupled interfaces became cracks, cum.
   Eigen::Vector2d momentum = Eigen::Vector2d::Zero();  // sum M v
   double angular_momentum = 0.0;                       // sum (X + u) x M v about the origin
   // The balances at step 0, for the drift of either.
@@ -38,7 +39,8 @@ struct StepRecord {
   /// Energy in the body plus what left it, minus what entered: constant to round-off.
   double balance() const {
     return kinetic_leapfrog + elastic + damping_dissipation + bulk_viscosity_dissipation -
-           external_work - reaction_work - contact_work - cohesive_work - remap_energy;
+           external_work - reaction_work - contact_work - cohesive_work - remap_energy -
+           activation_energy;
   }
   /// The same with 1/2 v.M v (oscillates by dt^2/8 a.M a).
   double balance_integer() const { return balance() + kinetic - kinetic_leapfrog; }

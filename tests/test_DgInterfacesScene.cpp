@@ -4,8 +4,8 @@
 //     the bar speed within 0.5 % (measured -0.25 %, as the continuous map's -0.23 %), the energy
 //     balance closes to round-off, and the step is the coupled system's (smaller than the
 //     continuous map's);
-//   - refused, one line naming the key: in a fragmentation study (activation is not built yet),
-//     beside a varying material, with corotational kinematics.
+//   - refused, one line naming the key: with corotational kinematics (a fragmentation study's
+//     default, or said), beside a varying material.
 #include <gtest/gtest.h>
 
 #include "core/util/Errors.hpp"

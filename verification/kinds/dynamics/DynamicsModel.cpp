@@ -82,7 +82,9 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs) {
   // safety x the chosen estimate; >= 1 only got here with --force. With cracks, the cells' bound
   // (valid for every split) and the cohesive springs' share.
   if (scene.fragmentation) cracks.emplace(scene, mesh(), bodies.h_avg);
-  dt = cracks ? cracks->stable_step(bound, mass, scene.safety)
+  dt = cracks ? cracks->stable_step(
+                    bound, mass, scene.safety,
+                    coupling ? coupling->eigenvalue_bound(mass.node_masses(dofs)) : 0.0)
               : scene.safety * (scene.estimate == StepEstimate::lanczos ? dt_lanczos : dt_cells);
   // Bulk viscosity's linear term damps the highest mode by xi = b1, which lowers the critical
   // step by sqrt(1 + b1^2) - b1; its quadratic term is checked step by step against what is
@@ -130,7 +132,9 @@ void DynamicsModel::make_integrator(InternalForce force, const SplitDofMap& dofs
     bulk->set_current_configuration(scene.corotational);
     run->set_bulk_viscosity(*bulk);
   }
-  if (cracks) cracks->attach(*run, integrator, variation, scene.contact ? &*contact : nullptr, 1);
+  if (cracks)
+    cracks->attach(*run, integrator, variation, scene.contact ? &*contact : nullptr, 1,
+                   coupling ? &*coupling : nullptr);
   run->initialize(Eigen::VectorXd::Zero(run->dofs().num_dofs()),
                   initial_velocity(scene, bodies, *run));
 }

@@ -68,14 +68,10 @@ void DynamicsSceneReader::read_material() {
   s_.bulk_viscosity.linear = number(bulk, "bulk_viscosity.linear", defaults.bulk_linear);
   s_.bulk_viscosity.quadratic = number(bulk, "bulk_viscosity.quadratic", defaults.bulk_quadratic);
   bulk.finish();
-  // The report's second approach: interfaces in the equations from the start. Its activation by
-  // the criterion is not built yet, so only below the strength (a dynamics study), and only for
-  // linear cells of one material (the blocks use the integrator's, unvaried).
+  // The report's second approach: interfaces in the equations from the start, activated by the
+  // criterion in a fragmentation study; only for linear cells of one material (the blocks use
+  // the integrator's, unvaried, in the reference configuration).
   s_.dg_interfaces = word(top_, "interfaces", " insertion dg ") == "dg";
-  if (s_.dg_interfaces && s_.fragmentation)
-    top_.fail_value("interfaces",
-                    "'dg' in a fragmentation study: expected insertion (activation "
-                    "of dg interfaces by the criterion is not built yet)");
   if (s_.dg_interfaces && s_.variation > 0.0)
     top_.fail_value("interfaces", "'dg' beside material.variation " + exact_text(s_.variation) +
                                       ": expected a uniform material");

@@ -72,13 +72,17 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
 }
 
 double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
-                                     double safety) const {
-  return CohesiveForces::stable_step(cells, mesh_, mass, law_, eligible_, safety, friction_);
+                                     double safety, double coupling_eigenvalue) const {
+  // lambda_max of a sum is at most the sum of the parts' (an edge is coupled or cohesive, never
+  // both, so this is conservative with interfaces coupled from the start).
+  return safety * 2.0 /
+         std::sqrt(cells.max_eigenvalue() + coupling_eigenvalue +
+                   CohesiveForces::eigenvalue_bound(mesh_, mass, law_, eligible_, friction_));
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,
                               const MaterialVariation& variation, ContactForces* contact,
-                              int threads) {
+                              int threads, InterfaceCoupling* coupling) {
   run_ = &run;
   contact_ = contact;
   cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
@@ -89,6 +93,11 @@ void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator
   insertion_->vary(variation);
   insertion_->turn_with(run.force().frames());
   fracture_ = std::make_unique<DynamicFracture>(mesh_, run, *cohesive_, *insertion_, contact);
+  if (coupling) {
+    activation_ = std::make_unique<InterfaceActivation>(mesh_, *coupling, criterion_, eligible_,
+                                                        variation.edge_strength(mesh_));
+    fracture_->set_activation(*activation_);
+  }
 }
 
 void FragmentationRun::step() {

@@ -29,12 +29,17 @@ class FragmentationRun {
 
   /// safety x the critical step of the cells and the faces' springs together, for every crack
   /// pattern the run can reach.
-  double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety) const;
+  /// `coupling_eigenvalue`: the bound of coupled interfaces (InterfaceCoupling), added to both.
+  double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety,
+                     double coupling_eigenvalue = 0.0) const;
   /// Starts cracking on `run` (before its initialize()) of a material varying as `variation`
   /// (empty: uniform; the run's cell matrices already scaled); with `contact` (the run's), cracks
-  /// expose new surface to it.
+  /// expose new surface to it. With `coupling` (the run's interfaces coupled from the start),
+  /// cracks are activated on the consistent interface traction (InterfaceActivation) instead
+  /// of inserted.
   void attach(CentralDifference& run, const ElasticityIntegrator& integrator,
-              const MaterialVariation& variation, ContactForces* contact, int threads);
+              const MaterialVariation& variation, ContactForces* contact, int threads,
+              InterfaceCoupling* coupling = nullptr);
   /// One step of the run with the insertion check after it.
   void step();
   /// After a step (the run calls it at its history steps: the closed forms cost a pass over the
@@ -63,6 +68,7 @@ class FragmentationRun {
   std::optional<Point> impact_;
   std::unique_ptr<CohesiveForces> cohesive_;
   std::unique_ptr<CrackInsertion> insertion_;
+  std::unique_ptr<InterfaceActivation> activation_;
   std::unique_ptr<DynamicFracture> fracture_;
   CentralDifference* run_ = nullptr;
   const ContactForces* contact_ = nullptr;

@@ -52,6 +52,9 @@ struct DynamicsMeasures {
   // a body width of the impact point, in the middle third of the body's length, elsewhere
   double broken_near_impact = NAN, broken_mid_length = NAN, broken_elsewhere = NAN;
   double released_edges = NAN;  // broken faces let go to surface contact (CohesiveForces)
+  // interfaces coupled from the start (interfaces: dg): how many were activated, and the work at
+  // activation (the law's starting energy less the coupling energy removed), of the input energy
+  double activated_interfaces = NAN, activation_work = NAN;
   // wall seconds in the insertion check and in the rebuilds after cracks (DynamicFracture)
   double check_seconds = NAN, rebuild_seconds = NAN;
   double law_balance_error = NAN;        // max over steps, with the law's closed-form energies

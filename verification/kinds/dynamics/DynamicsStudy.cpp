@@ -73,6 +73,8 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"broken_mid_length", &M::broken_mid_length},
       {"broken_elsewhere", &M::broken_elsewhere},
       {"released_edges", &M::released_edges},
+      {"activated_interfaces", &M::activated_interfaces},
+      {"activation_work", &M::activation_work},
       {"check_seconds", &M::check_seconds},
       {"rebuild_seconds", &M::rebuild_seconds},
       {"law_balance_error", &M::law_balance_error},

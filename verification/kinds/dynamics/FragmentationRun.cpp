@@ -117,8 +117,11 @@ void FragmentationRun::check_balance(const StepRecord& r) {
                       cohesive_->stored_energy() + r.damping_dissipation +
                       r.bulk_viscosity_dissipation + contact +
                       cohesive_->friction_dissipated_energy();
-  const double put_in = start_ + r.external_work + r.reaction_work;
-  const double balance = std::abs(held - put_in) / std::max(r.input_energy(), 1e-300);
+  // Coupled interfaces: the law starts with energy the coupling held (InterfaceActivation).
+  const double put_in = start_ + r.external_work + r.reaction_work +
+                        (activation_ ? activation_->activation_work() : 0.0);
+  input_energy_ = r.input_energy();
+  const double balance = std::abs(held - put_in) / std::max(input_energy_, 1e-300);
   worst_balance_ = std::max(worst_balance_, balance);
   if (std::isnan(breach_time_) && balance > kLawBalanceLimit) breach_time_ = r.time;
 }
@@ -156,6 +159,10 @@ void FragmentationRun::finish(const fs::path& out, const std::string& id, const 
     m.broken_elsewhere = where.elsewhere;
   }
   m.released_edges = static_cast<double>(cohesive_->released_edges().size());
+  if (activation_) {
+    m.activated_interfaces = activation_->activated();
+    m.activation_work = activation_->activation_work() / std::max(input_energy_, 1e-300);
+  }
   m.check_seconds = fracture_->times().check;
   m.rebuild_seconds = fracture_->times().rebuild;
   m.law_balance_error = worst_balance_;

@@ -72,7 +72,7 @@ class FragmentationRun {
   std::unique_ptr<DynamicFracture> fracture_;
   CentralDifference* run_ = nullptr;
   const ContactForces* contact_ = nullptr;
-  double start_ = 0.0, worst_balance_ = 0.0;
+  double start_ = 0.0, worst_balance_ = 0.0, input_energy_ = 0.0;
   double breach_time_ = NAN;  // when the balance first passed kLawBalanceLimit
 };
 

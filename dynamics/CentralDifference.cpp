@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
+#include "core/util/Stopwatch.hpp"
 
 namespace vorodg {
 
@@ -156,9 +157,11 @@ void CentralDifference::refresh_interfaces() {
 
 double CentralDifference::add_coupling(Eigen::VectorXd& f_int) {
   if (!coupling_) return 0.0;
+  const Stopwatch clock;
   f_coupling_.setZero(f_int.size());
   const double energy = coupling_->add_forces(u_, f_coupling_);
   f_int -= f_coupling_;
+  coupling_seconds_ += clock.seconds();
   return energy;
 }
 

@@ -120,6 +120,8 @@ class CentralDifference {
   /// nodes in their order).
   void disconnect(const std::vector<char>& connected, std::span<const int> edges);
 
+  /// Wall seconds so far in the interface coupling's forces (what coupled interfaces cost).
+  double coupling_seconds() const { return coupling_seconds_; }
   double dt() const { return dt_; }
   double time() const { return record_.time; }
   long step_count() const { return record_.step; }
@@ -181,6 +183,7 @@ class CentralDifference {
   CohesiveForces* cohesive_ = nullptr;
   const InterfaceCoupling* coupling_ = nullptr;
   Eigen::VectorXd f_coupling_;  // scratch: the coupling's force -K_F u
+  double coupling_seconds_ = 0.0;
   /// f_int += K_F u of the coupling (none: nothing); returns its energy.
   double add_coupling(Eigen::VectorXd& f_int);
   BulkViscosity* bulk_ = nullptr;

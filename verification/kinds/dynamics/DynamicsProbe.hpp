@@ -57,6 +57,7 @@ struct DynamicsMeasures {
   double activated_interfaces = NAN, activation_work = NAN;
   // wall seconds in the insertion check and in the rebuilds after cracks (DynamicFracture)
   double check_seconds = NAN, rebuild_seconds = NAN;
+  double coupling_seconds = NAN;  // in the interface coupling's forces (interfaces: dg)
   double law_balance_error = NAN;        // max over steps, with the law's closed-form energies
   double law_balance_breach_time = NAN;  // first time it passed kLawBalanceLimit (NaN: never)
   // small rotations (CorotationalFrames::mean_rotation), sampled at the output steps; NaN under

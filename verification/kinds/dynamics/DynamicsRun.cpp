@@ -227,6 +227,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   r.end_time = model.run->time();
   r.measures = probe.finish();
   if (model.cracks) model.cracks->finish(out, id.id(), model.mass, r.measures);
+  if (model.coupling) r.measures.coupling_seconds = model.run->coupling_seconds();
   r.seconds = clock.seconds();
   r.loop_seconds = r.seconds - setup;
   return r;

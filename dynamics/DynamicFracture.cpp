@@ -60,7 +60,7 @@ void DynamicFracture::crack(int edge) {
 int DynamicFracture::activate(int threads) {
   Stopwatch clock;
   const std::vector<InterfaceActivation::Failure> failing =
-      activation_->failing(run_.displacement(), threads);
+      activation_->failing(threads);  // the fluxes of the step's force evaluation
   times_.check += clock.seconds();
   if (failing.empty()) return 0;
   clock.restart();

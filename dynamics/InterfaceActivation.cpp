@@ -44,6 +44,16 @@ std::array<Eigen::Vector2d, 2> InterfaceActivation::face_tractions(int i,
 
 std::vector<InterfaceActivation::Failure> InterfaceActivation::failing(const Eigen::VectorXd& u,
                                                                        int threads) const {
+  return check([&](int i) { return coupling_.traction(i, u); }, threads);
+}
+
+std::vector<InterfaceActivation::Failure> InterfaceActivation::failing(int threads) const {
+  return check([&](int i) { return coupling_.last_traction(i); }, threads);
+}
+
+template <class Tractions>
+std::vector<InterfaceActivation::Failure> InterfaceActivation::check(const Tractions& tractions,
+                                                                     int threads) const {
   const int n = static_cast<int>(candidates_.size());
   std::vector<double> utilization(n, 0.0);
   std::vector<Eigen::Vector2d> mean(n, Eigen::Vector2d::Zero());
@@ -52,7 +62,7 @@ std::vector<InterfaceActivation::Failure> InterfaceActivation::failing(const Eig
     const int i = candidates_[k];
     if (!coupling_.active(i)) continue;
     // The flux is linear along the edge: the mean of the two Gauss points is the edge mean.
-    const auto global = coupling_.traction(i, u);
+    const std::array<Eigen::Vector2d, 2> global = tractions(i);
     const Eigen::Vector2d g = 0.5 * (global[0] + global[1]);
     mean[k] = Eigen::Vector2d(g.dot(normal_[k]), g.dot(tangent_[k]));
     const int e = coupling_.space().interfaces()[i].edge;

@@ -43,6 +43,9 @@ class InterfaceActivation {
   };
   /// The eligible, still coupled interfaces whose criterion utilization is at least 1, by edge.
   std::vector<Failure> failing(const Eigen::VectorXd& u, int threads) const;
+  /// The same at the coupling's last force evaluation (InterfaceCoupling::last_traction): after
+  /// a step of the run, its current displacements, without evaluating the fluxes again.
+  std::vector<Failure> failing(int threads) const;
   /// The consistent traction of interface i at its two Gauss points, (normal, shear).
   std::array<Eigen::Vector2d, 2> face_tractions(int i, const Eigen::VectorXd& u) const;
   /// Each failure's interface leaves the coupling and its edge becomes a cohesive face carrying
@@ -62,6 +65,9 @@ class InterfaceActivation {
   std::vector<double> edge_strength_;
   std::vector<Eigen::Vector2d> normal_, tangent_;  // per candidate
   double activation_work_ = 0.0;
+  /// The failures with the interface tractions `tractions(i)` (global, at the Gauss points).
+  template <class Tractions>
+  std::vector<Failure> check(const Tractions& tractions, int threads) const;
   int activated_ = 0;
 };
 

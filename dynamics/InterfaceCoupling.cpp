@@ -33,6 +33,7 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
   active_.assign(faces.size(), 1);
   interface_of_edge_.assign(table.mesh().num_edges(), -1);
   flux_.resize(faces.size());
+  last_flux_.assign(faces.size(), Eigen::Vector4d::Zero());
   jump_.resize(faces.size());
   const SegmentRule& rule = gauss2_segment();
   for (std::size_t i = 0; i < faces.size(); ++i) {
@@ -83,6 +84,7 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
     throw InputError("interface coupling: " + std::to_string(u.size()) + " displacements and " +
                      std::to_string(f.size()) + " forces: expected " + std::to_string(num_dofs_) +
                      " each");
+  const SegmentRule& rule = gauss2_segment();
   double energy = 0.0;
   // One buffer of the largest block's size: the loop allocates nothing (cells differ in size).
   thread_local Eigen::VectorXd local_buffer, force_buffer;
@@ -97,8 +99,22 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
     // Displacements relative to the first vertex's: K_F annihilates translations, so a body
     // that has moved far feels no round-off of its translation (as in InternalForce).
     for (Eigen::Index k = 0; k < m; ++k) local[k] = u[d[k]] - u[d[k % 2]];
-    force.noalias() = blocks_[i] * local;
-    energy += 0.5 * local.dot(force);
+    // K_F = sum_q w_q (eps J_q^T J_q - J_q^T T_q - T_q^T J_q), with the flux Phi_q = T_q - eps J_q:
+    // K_F u = -sum_q w_q (J_q^T (phi_q + eps j_q) + Phi_q^T j_q), phi = Phi u, j = J u. Four
+    // rows each way instead of the m x m block (exact: the two-point rule integrates the
+    // blocks exactly).
+    const Eigen::Vector4d phi = flux_[i] * local, j = jump_[i] * local;
+    last_flux_[i] = phi;
+    const double eps = penalty_->eps(i), length = space_->interfaces()[i].length;
+    Eigen::Vector4d wj, wphi;
+    for (int q = 0; q < 2; ++q) {
+      const double w = rule.weights[q] * length;
+      wj.segment<2>(2 * q) = w * j.segment<2>(2 * q);
+      wphi.segment<2>(2 * q) = w * (phi.segment<2>(2 * q) + eps * j.segment<2>(2 * q));
+    }
+    force.noalias() = -(jump_[i].transpose() * wphi);
+    force.noalias() -= flux_[i].transpose() * wj;
+    energy -= 0.5 * (wj.dot(phi) + wphi.dot(j));
     // Self-equilibrated: the last vertex takes minus the others' sum, so no momentum is made.
     const Eigen::Index last = m - 2;
     double sx = 0.0, sy = 0.0;
@@ -107,6 +123,10 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
     for (Eigen::Index k = 0; k < m; ++k) f[d[k]] -= force[k];
   }
   return energy;
+}
+
+std::array<Eigen::Vector2d, 2> InterfaceCoupling::last_traction(int i) const {
+  return {last_flux_[i].head<2>(), last_flux_[i].tail<2>()};
 }
 
 double InterfaceCoupling::eigenvalue_bound(const Eigen::VectorXd& node_masses) const {

@@ -10,8 +10,10 @@
 // interface but is, with the cells' energy, on the whole (the penalty is coercive), so it is
 // booked with the elastic energy.
 //
-// The blocks are built once (each is (2 n_1 + 2 n_2)^2 doubles); a force evaluation is one dense
-// mat-vec per interface, in interface order, so it is the same for any thread count.
+// The blocks are built once (each is (2 n_1 + 2 n_2)^2 doubles), for the step's bound and for
+// tests; a force evaluation uses their factors instead, the flux and the jump at the two Gauss
+// points (4 x m each): four mat-vecs of 4 rows per interface in place of one m x m, in interface
+// order, so it is the same for any thread count.
 #include <Eigen/Core>
 #include <array>
 #include <memory>
@@ -55,6 +57,9 @@ class InterfaceCoupling {
   /// cell 1, [u] = u_1 - u_2), in the global frame. It is what holds the two cells together;
   /// for a continuous field it is sigma n.
   std::array<Eigen::Vector2d, 2> traction(int i, const Eigen::VectorXd& u) const;
+  /// traction(i, u) at the u of the last add_forces (which computes it on the way): what the
+  /// check after a step reads, at no extra cost.
+  std::array<Eigen::Vector2d, 2> last_traction(int i) const;
   /// The jump u_2 - u_1 (the cohesive faces' opening) at interface i's two Gauss points.
   std::array<Eigen::Vector2d, 2> opening(int i, const Eigen::VectorXd& u) const;
 
@@ -76,6 +81,7 @@ class InterfaceCoupling {
   // (the same rows) on its DOFs; per interface whether it still couples; per edge its interface.
   std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> flux_, jump_;
   std::vector<char> active_;
+  mutable std::vector<Eigen::Vector4d> last_flux_;  // per interface, at the last add_forces
   std::vector<int> interface_of_edge_;
   /// Interface i's DOFs relative to its first vertex's (what K_F, the flux and the jump see).
   Eigen::VectorXd local(int i, const Eigen::VectorXd& u) const;

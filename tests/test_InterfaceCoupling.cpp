@@ -3,6 +3,7 @@
 // tractions) as forces on a fully split rcp map, checked without its own assembly:
 //   - the patch test: a linear displacement field (no jumps) is in equilibrium in the interior,
 //     cells and interfaces together, to round-off (the interface terms are consistent);
+//   - the force loop's factored form is -K u with the SIPG blocks, and its energy 1/2 u.K u;
 //   - the forces are linear and symmetric (v.f(u) = u.f(v)) and derive from the energy
 //     1/2 u.K u = -1/2 u.f(u);
 //   - a jump alone is resisted: pulling one cell's copy of a vertex away from its neighbours'
@@ -90,6 +91,26 @@ TEST(InterfaceCoupling, ForcesAreSymmetricAndDeriveFromTheEnergy) {
   Eigen::VectorXd f2 = Eigen::VectorXd::Zero(u.size());
   m.coupling.add_forces(2.0 * u, f2);
   EXPECT_LT((f2 - 2.0 * fu).norm(), 1e-12 * fu.norm());
+}
+
+TEST(InterfaceCoupling, TheFactoredForceIsTheSipgBlocks) {
+  // The force loop uses the blocks' factors (flux and jump at the Gauss points): it must be
+  // -K u with K the quasi-static solver's SIPG blocks, and its energy 1/2 u.K u.
+  const Coupled m;
+  const Eigen::VectorXd u = random_vector(m.dofs.num_dofs(), 1e-3, 5);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(u.size()), reference = f;
+  const double energy = m.coupling.add_forces(u, f);
+  double reference_energy = 0.0;
+  for (int i = 0; i < m.coupling.num_interfaces(); ++i) {
+    const std::vector<int>& d = m.coupling.block_dofs(i);
+    Eigen::VectorXd x(d.size());
+    for (std::size_t k = 0; k < d.size(); ++k) x[k] = u[d[k]];
+    const Eigen::VectorXd Kx = m.coupling.block(i) * x;
+    reference_energy += 0.5 * x.dot(Kx);
+    for (std::size_t k = 0; k < d.size(); ++k) reference[d[k]] -= Kx[k];
+  }
+  EXPECT_LT((f - reference).norm(), 1e-12 * reference.norm());
+  EXPECT_NEAR(energy, reference_energy, 1e-12 * std::abs(reference_energy));
 }
 
 TEST(InterfaceCoupling, AJumpIsResisted) {

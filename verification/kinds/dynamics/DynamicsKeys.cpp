@@ -123,11 +123,14 @@ std::vector<SceneKey> bulk_viscosity_keys() {
 /// The kinematics, gravity, and the column's and the projectile's keys.
 std::vector<SceneKey> impact_keys() {
   return {
-      key("interfaces", "string", "insertion", "insertion or dg (dg: dynamics studies only)",
-          "dg: every interior edge is split from t = 0 and held together by the quasi-static "
-          "solver's symmetric interior-penalty terms (coercive penalty, fan tractions); the "
-          "step is the coupled system's (docs/dynamics.md, \"Interfaces coupled from the "
-          "start\")"),
+      key("interfaces", "string", "insertion", "insertion or dg (dg: with small kinematics)",
+          "how cracks appear. insertion: an edge is split when the criterion holds and its "
+          "cohesive law starts from zero opening. dg: every edge that may crack is split from "
+          "t = 0 and held together by the quasi-static solver's symmetric interior-penalty "
+          "terms (coercive penalty, fan tractions); in a fragmentation study the criterion is "
+          "checked on the consistent interface traction and an activated face continues with "
+          "the law from the traction it carried; the step is the coupled system's "
+          "(docs/dynamics.md, \"Interfaces coupled from the start\")"),
       key("kinematics", "string", "small; fragmentation: corotational", "small or corotational",
           "small: linear small strain (a cell turned by theta is drawn and meets contact stretched "
           "by about theta^2 / 2); corotational: small strain in a frame that turns with each cell, "

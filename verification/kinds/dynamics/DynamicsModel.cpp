@@ -35,6 +35,18 @@ Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& b
   return v;
 }
 
+/// The nodes at t = 0: one per vertex, split along the faces a fragmentation problem puts in from
+/// the start (a notch, a pre-inserted crack line; FragmentationRun gives them their tractions).
+SplitDofMap initial_dofs(const DynamicsScene& scene, const PolygonMesh& mesh) {
+  if (!scene.fragmentation) return SplitDofMap::continuous(mesh);
+  const CrackSites sites = scene.problem->crack_sites(mesh);
+  if (sites.pre_inserted.empty() && sites.free.empty()) return SplitDofMap::continuous(mesh);
+  std::vector<char> connected(mesh.num_edges(), 1);
+  for (const std::vector<int>* edges : {&sites.pre_inserted, &sites.free})
+    for (int e : *edges) connected[e] = 0;
+  return SplitDofMap(mesh, connected);
+}
+
 /// Gravity, and the problem's prescribed velocities and loads.
 void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, CentralDifference& run) {
   if (scene.gravity != Eigen::Vector2d::Zero()) {
@@ -57,7 +69,7 @@ DynamicsModel::DynamicsModel(const DynamicsScene& s, const EnsembleRunId& id)
       variation(MaterialVariation::uniform(bodies.mesh.num_cells(), s.variation,
                                            derive_seed(s.variation_seed, id.seed))) {
   const SplitDofMap dofs =
-      s.dg_interfaces ? SplitDofMap::discontinuous(mesh()) : SplitDofMap::continuous(mesh());
+      s.dg_interfaces ? SplitDofMap::discontinuous(mesh()) : initial_dofs(s, mesh());
   InternalForce force = make_force(dofs);
   make_integrator(std::move(force), dofs);
 }

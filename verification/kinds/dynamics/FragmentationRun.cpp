@@ -64,7 +64,8 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
     : mesh_(mesh),
       law_(make_law(scene, h_avg)),
       criterion_(scene.criterion),
-      eligible_(mesh.num_edges(), 1),
+      sites_(scene.problem->crack_sites(mesh)),
+      eligible_(sites_.eligible.empty() ? std::vector<char>(mesh.num_edges(), 1) : sites_.eligible),
       friction_(scene.face_friction),
       turning_frames_(scene.corotational && scene.turning_faces),
       body_(scene.bodies[0].domain) {
@@ -73,7 +74,10 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
 
 double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
                                      double safety) const {
-  return CohesiveForces::stable_step(cells, mesh_, mass, law_, eligible_, safety, friction_);
+  std::vector<char> springs = eligible_;  // and the faces there from t = 0
+  for (const std::vector<int>* edges : {&sites_.pre_inserted, &sites_.free})
+    for (int e : *edges) springs[e] = 1;
+  return CohesiveForces::stable_step(cells, mesh_, mass, law_, springs, safety, friction_);
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,
@@ -82,9 +86,19 @@ void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator
   run_ = &run;
   contact_ = contact;
   cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
-  cohesive_->set_edge_strength(variation.edge_strength(mesh_));
+  std::vector<double> strength = variation.edge_strength(mesh_);
+  if (!sites_.free.empty() && strength.empty()) strength.assign(mesh_.num_edges(), 1.0);
+  for (int e : sites_.free) strength[e] *= kFreeFaceStrength;
+  cohesive_->set_edge_strength(std::move(strength));
   cohesive_->set_friction(friction_);
   cohesive_->set_turning_frames(turning_frames_);
+  // The faces there from t = 0, exposed to contact like every crack; DynamicFracture takes them
+  // as cracked, and the run's DOF map is split along them from the start (DynamicsModel).
+  for (const std::vector<int>* edges : {&sites_.pre_inserted, &sites_.free})
+    for (int e : *edges) {
+      cohesive_->add_edge(e);
+      if (contact) contact->surface().expose(e);
+    }
   insertion_ = std::make_unique<CrackInsertion>(mesh_, integrator, criterion_, eligible_, threads);
   insertion_->vary(variation);
   insertion_->turn_with(run.force().frames());

@@ -50,6 +50,10 @@ int DynamicFracture::step(int threads) {
   return static_cast<int>(failing.size());
 }
 
+void DynamicFracture::cut(std::span<const int> edges) {
+  for (int e : edges) connected_[e] = 0;
+}
+
 void DynamicFracture::crack(int edge) {
   cracked_[edge] = 1;
   connected_[edge] = 0;

@@ -24,6 +24,7 @@
 //
 // One insertion pass per step: a split copies the displacements, so the cells' stresses, and
 // with them every utilization, are the same after it; nothing more fails at that instant.
+#include <span>
 #include <vector>
 
 #include "dynamics/CentralDifference.hpp"
@@ -46,6 +47,11 @@ class DynamicFracture {
   /// Interfaces coupled from the start: `activation` (on the run's coupling) replaces the
   /// insertion check. Must outlive this object; set before the first step.
   void set_activation(InterfaceActivation& activation) { activation_ = &activation; }
+
+  /// Interior edges split from the start that carry no force (a notch): never joined by a
+  /// rebuilt map, never cracked. The run's map must be split along them already. Call before
+  /// the first step.
+  void cut(std::span<const int> edges);
 
   /// One step of the integrator, then the insertion check; returns the edges cracked after it.
   int step(int threads);

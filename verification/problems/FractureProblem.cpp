@@ -120,6 +120,11 @@ void add_constraints(const PolygonMesh& mesh, const FractureGeometry& g, double 
 
 }  // namespace
 
+MeshSpec fracture_mesh_spec(MeshSpec spec, const FractureGeometry& g) {
+  if (spec.symmetric && g.notch_depth > 0.0) spec.line_marks = {g.domain.y0() + g.notch_depth};
+  return spec;
+}
+
 FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g, CrackingMode mode,
                              double thickness) {
   check_fracture_geometry(g);

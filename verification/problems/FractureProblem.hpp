@@ -19,6 +19,7 @@
 #include "core/material/CohesiveLaw.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "core/meshgen/MeshFamily.hpp"
 #include "dg/FractureSetup.hpp"
 
 namespace vorodg {
@@ -38,6 +39,11 @@ struct FractureGeometry {
 /// Throws InputError (one line naming the scene key) for a line outside the domain, a notch
 /// outside [0, height) (or any notch on the bar).
 void check_fracture_geometry(const FractureGeometry& g);
+
+/// The mesh spec of a fracture problem's run: on a symmetric mesh the notch tip must be a vertex
+/// of the line, so its height is marked (the quasi-static and the dynamic studies both mesh
+/// through this, so that one realization is the same mesh in both).
+MeshSpec fracture_mesh_spec(MeshSpec spec, const FractureGeometry& g);
 
 /// The setup on `mesh`; throws InputError if the line, notch or load point is not in the mesh.
 FractureSetup fracture_setup(const PolygonMesh& mesh, const FractureGeometry& g, CrackingMode mode,

@@ -46,6 +46,32 @@ std::vector<SceneKey> study_keys() {
   };
 }
 
+/// The notched beam's keys (three-point-bend, fragmentation): the quasi-static fracture study's
+/// where it has them (notch_depth, cracking.mode), and the load point's speed.
+std::vector<SceneKey> bend_keys() {
+  return {
+      bounded(
+          "notch_depth", "number", "0", "0 <= notch_depth <= 1e6, below the height",
+          "three-point-bend: a traction-free slit at the crack line (mid-span) from the bottom, "
+          "m (as in a fracture study)",
+          0.0, false, 1e6),
+      key("cracking.mode", "string", "restricted", "pre-inserted or restricted",
+          "three-point-bend: cohesive faces on every edge of the crack line above the notch from "
+          "t = 0 (the law from zero opening), or only the crack line's edges checked by the "
+          "insertion criterion (docs/dynamics.md, \"Three-point bend\")"),
+      bounded("rate.speed", "number", "0.1", "0 < speed <= 1e4",
+              "three-point-bend: the load point's downward speed, m/s", 0.0, true, 1e4),
+      bounded("rate.rise", "number", "5 H / c_d", "0 < rise <= 1e3",
+              "three-point-bend: the speed rises as (1 - cos) / 2 from 0 over this time, s (H the "
+              "beam's depth, c_d the dilatational speed)",
+              0.0, true, 1e3),
+      bounded("rate.max_displacement", "number", "span / 1000", "0 < max_displacement <= 1e3",
+              "three-point-bend: the load point's travel that ends the run where time.end and "
+              "time.steps are not given, m",
+              0.0, true, 1e3),
+  };
+}
+
 /// How the bodies are thrown, and the wave bar's input.
 std::vector<SceneKey> body_keys() {
   return {
@@ -87,6 +113,10 @@ std::vector<SceneKey> material_keys() {
   return {
       bounded("material.density", "number", "7800", "0 < density <= 1e5", "mass density, kg/m^3",
               0.0, true, 1e5),
+      bounded("material.thickness", "number", "1", "0 < thickness <= 1000 (three-point-bend only)",
+              "three-point-bend: out of plane, m: its load in newtons and its energies in joules "
+              "include it (every other problem works per unit thickness and refuses it)",
+              0.0, true, 1e3),
       key("material.mean_dilation", "bool", "false", "true or false", "B-bar strain operator"),
       bounded("material.variation", "number", "0", "0 <= x < 1",
               "per-cell factors uniform in [1 - x, 1 + x] on E and, independently, on the strength "
@@ -250,6 +280,7 @@ std::vector<SceneKey> output_keys() {
 std::vector<SceneKey> make_keys() {
   std::vector<SceneKey> keys = naming_keys();
   append_keys(keys, study_keys());
+  append_keys(keys, bend_keys());
   append_keys(keys, cohesive_keys({"3e8", "100", "10", "0",
                                    "dynamics needs an initially elastic law; its springs share "
                                    "the stable step",

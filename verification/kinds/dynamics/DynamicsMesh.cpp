@@ -15,7 +15,8 @@ namespace {
 PolygonMesh body_mesh(const DynamicsScene& scene, const EnsembleRunId& run, int body) {
   const SceneMesh& block = scene.meshes[run.mesh];
   const Rectangle& domain = scene.bodies[body].domain;
-  MeshSpec spec = block.spec(scene.bodies[0].domain, run.level, run.seed);
+  // The first body as its problem needs it (a notch tip made a vertex).
+  MeshSpec spec = scene.problem->mesh_spec(block.spec(scene.bodies[0].domain, run.level, run.seed));
   if (body > 0 && block.family != MeshFamily::file) {
     spec.domain = domain;
     spec.seed = derive_seed(run.seed, static_cast<std::uint64_t>(body));
@@ -68,6 +69,7 @@ BodiesMesh bodies_mesh(const DynamicsScene& scene, const EnsembleRunId& run) {
   out.mesh = PolygonMesh(Rectangle(lo.x(), lo.y(), hi.x(), hi.y()), std::move(vertices),
                          std::move(offsets), std::move(loops));
   out.h_avg = std::sqrt(area / out.mesh.num_cells());
+  scene.problem->check_mesh(out.mesh);
   return out;
 }
 

@@ -25,7 +25,9 @@ struct BodiesMesh {
 
 /// Builds and validates the bodies' mesh of one run. Body 0 is meshed with the run's seed; body
 /// 1 (two-blocks) with a seed derived from it, or, for family file, as body 0's mesh moved.
-/// Throws InputError for a bad mesh spec, NumericalError for an invalid mesh.
+/// The problem adjusts body 0's spec and checks the mesh (DynamicsProblem::mesh_spec, check_mesh).
+/// Throws InputError for a bad mesh spec or a mesh the problem cannot use, NumericalError for an
+/// invalid mesh.
 BodiesMesh bodies_mesh(const DynamicsScene& scene, const EnsembleRunId& run);
 
 }  // namespace vorodg

@@ -35,6 +35,27 @@ Eigen::VectorXd initial_velocity(const DynamicsScene& scene, const BodiesMesh& b
   return v;
 }
 
+/// Where a fragmentation run's cracks are and may form (none for a dynamics study).
+CrackSites crack_sites(const DynamicsScene& scene, const PolygonMesh& mesh) {
+  return scene.fragmentation ? scene.problem->crack_sites(mesh) : CrackSites{};
+}
+
+/// The nodes at t = 0: one per vertex, split along the faces there from the start (a notch, a
+/// pre-inserted crack line; FragmentationRun gives them their tractions), and with interfaces
+/// coupled from the start along every edge that may crack too (every interior edge of a
+/// dynamics study).
+SplitDofMap initial_dofs(const DynamicsScene& scene, const PolygonMesh& mesh,
+                         const CrackSites& sites) {
+  if (scene.dg_interfaces && (!scene.fragmentation || sites.eligible.empty()))
+    return SplitDofMap::discontinuous(mesh);
+  std::vector<char> connected(mesh.num_edges(), 1);
+  if (scene.dg_interfaces)
+    for (int e = 0; e < mesh.num_edges(); ++e) connected[e] = !sites.eligible[e];
+  for (const std::vector<int>* edges : {&sites.pre_inserted, &sites.free})
+    for (int e : *edges) connected[e] = 0;
+  return SplitDofMap(mesh, connected);
+}
+
 /// Gravity, and the problem's prescribed velocities and loads.
 void add_boundaries(const DynamicsScene& scene, const PolygonMesh& mesh, CentralDifference& run) {
   if (scene.gravity != Eigen::Vector2d::Zero()) {
@@ -56,9 +77,14 @@ DynamicsModel::DynamicsModel(const DynamicsScene& s, const EnsembleRunId& id)
       // A material varying from cell to cell (each mesh realization its own field).
       variation(MaterialVariation::uniform(bodies.mesh.num_cells(), s.variation,
                                            derive_seed(s.variation_seed, id.seed))) {
-  const SplitDofMap dofs =
-      s.dg_interfaces ? SplitDofMap::discontinuous(mesh()) : SplitDofMap::continuous(mesh());
+  const CrackSites sites = crack_sites(s, mesh());
+  const SplitDofMap dofs = initial_dofs(s, mesh(), sites);
   InternalForce force = make_force(dofs);
+  // The faces there from t = 0 are cracks or a notch, never coupled (the step above counted
+  // them: it only errs on the safe side).
+  if (coupling)
+    for (const std::vector<int>* edges : {&sites.pre_inserted, &sites.free})
+      for (int e : *edges) coupling->deactivate(coupling->interface_of_edge(e));
   make_integrator(std::move(force), dofs);
 }
 

@@ -72,6 +72,14 @@ void DynamicsProbe::observe() {
   observe_contact();
 }
 
+void DynamicsProbe::watch_cracks(const CohesiveForces& cohesive) {
+  if (problem_) problem_->watch_cracks(cohesive);
+}
+
+void DynamicsProbe::write(const std::filesystem::path& out, const std::string& run) const {
+  if (problem_) problem_->write(out, run);
+}
+
 const DynamicsMeasures& DynamicsProbe::finish() {
   m_.contact_ended = !in_contact_;
   // A contact from the step it was first seen to the last: within a step of its duration.

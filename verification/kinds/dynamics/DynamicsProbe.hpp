@@ -4,7 +4,9 @@
 // rebound, each set beside its theory (the 1D elastic bar: rebound speed = impact speed, contact
 // time = 2 L / c_bar), and what the problem measures of its own (a wave's arrival).
 #include <cmath>
+#include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "dynamics/CentralDifference.hpp"
@@ -37,6 +39,11 @@ struct DynamicsMeasures {
   double peak_wall_force = NAN, peak_wall_force_estimate = NAN;
   // column-impact: the first time a vertex of the column's rear (upper) half touches the plane
   double rear_strike_time = NAN;
+  // three-point-bend: the largest load (N: the load point's reaction times the thickness), the
+  // load point's displacement and the crack mouth opening then (m), and the kinetic energy over
+  // the work put in then and at the end (how far from quasi-static the run was)
+  double peak_load = NAN, peak_load_displacement = NAN, peak_load_cmod = NAN;
+  double kinetic_over_work_at_peak = NAN, kinetic_over_work_end = NAN;
   // the slip work of Coulomb friction: between surfaces and on the wall, and on crack faces
   double contact_friction_dissipated = NAN, face_friction_dissipated = NAN;
   // what contact's velocity penalty (damping or plastic) and the cells' bulk viscosity took
@@ -57,7 +64,7 @@ struct DynamicsMeasures {
   double activated_interfaces = NAN, activation_work = NAN;
   // wall seconds in the insertion check and in the rebuilds after cracks (DynamicFracture)
   double check_seconds = NAN, rebuild_seconds = NAN;
-  double coupling_seconds = NAN;  // in the interface coupling's forces (interfaces: dg)
+  double coupling_seconds = NAN;         // in the interface coupling's forces (interfaces: dg)
   double law_balance_error = NAN;        // max over steps, with the law's closed-form energies
   double law_balance_breach_time = NAN;  // first time it passed kLawBalanceLimit (NaN: never)
   // small rotations (CorotationalFrames::mean_rotation), sampled at the output steps; NaN under
@@ -81,6 +88,10 @@ class DynamicsProbe {
   void observe_rotation();
   /// After the last step: the rebound, the contact time.
   const DynamicsMeasures& finish();
+  /// Fragmentation: the run's cohesive faces, for the problem's measures of their energies.
+  void watch_cracks(const CohesiveForces& cohesive);
+  /// After the run: the problem's own per-run files under `out` (ProblemProbe::write).
+  void write(const std::filesystem::path& out, const std::string& run) const;
   const DynamicsMeasures& measures() const { return m_; }
 
  private:

@@ -215,6 +215,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   r.dofs = model.run->dofs().num_dofs();
   RunOutputs outputs(model, out, id.id());
   DynamicsProbe probe(scene, model.bodies, *model.run);
+  if (model.cracks) probe.watch_cracks(model.cracks->cohesive());
   const double setup = clock.seconds();
   try {
     time_loop(model, outputs, probe);
@@ -226,6 +227,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   r.steps = model.run->step_count();  // those done: fewer if the run stopped
   r.end_time = model.run->time();
   r.measures = probe.finish();
+  probe.write(out, id.id());
   if (model.cracks) model.cracks->finish(out, id.id(), model.mass, r.measures);
   if (model.coupling) r.measures.coupling_seconds = model.run->coupling_seconds();
   r.seconds = clock.seconds();

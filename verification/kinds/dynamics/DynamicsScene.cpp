@@ -57,6 +57,10 @@ void DynamicsSceneReader::read_material() {
   s_.plane = word(m, "material.plane", " stress strain ") == "stress" ? PlaneModel::stress
                                                                       : PlaneModel::strain;
   s_.density = number(m, "material.density");
+  if (m.has("thickness") && !problem_->uses_thickness())
+    m.fail_value("thickness", "not used by problem " + problem_->name() +
+                                  " (its forces and energies are per unit thickness)");
+  s_.thickness = number(m, "material.thickness");
   s_.mean_dilation = flag(m, "material.mean_dilation");
   s_.variation = number(m, "material.variation");
   s_.variation_seed = static_cast<std::uint64_t>(integer(m, "material.variation_seed"));

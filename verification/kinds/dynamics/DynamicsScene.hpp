@@ -57,6 +57,7 @@ struct DynamicsScene {
   std::vector<DynamicsBody> bodies;  // one; two-blocks: two
   double E = 0.0, nu = 0.0, density = 0.0;
   PlaneModel plane = PlaneModel::stress;
+  double thickness = 1.0;  // out of plane, m: only problems whose loads are in newtons read it
   bool mean_dilation = false;
   ElementOptions element;            // `element`, `vem_stabilization`: the element family
   bool corotational = false;         // kinematics: small strain in turning cell frames

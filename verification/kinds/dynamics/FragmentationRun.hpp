@@ -1,8 +1,9 @@
 #pragma once
 // The cracks of one fragmentation run (docs/fragmentation.md): the cohesive law with K0 in units
-// of E / h_avg, the Mohr-Coulomb insertion check on every interior edge, and DynamicFracture on
-// the run's integrator; the stable step with the faces' springs; after the run, the fragments and
-// the crack log as files, and the figures for results.csv.
+// of E / h_avg, the Mohr-Coulomb insertion check on the interior edges the problem lets crack
+// (every one unless it says otherwise, DynamicsProblem::crack_sites), faces the problem puts in at
+// t = 0, and DynamicFracture on the run's integrator; the stable step with the faces' springs;
+// after the run, the fragments and the crack log as files, and the figures for results.csv.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -56,15 +57,18 @@ class FragmentationRun {
   double main_body_rotation(const Fragments& pieces, const LumpedMass& mass) const;
   void finish(const std::filesystem::path& out, const std::string& id, const LumpedMass& mass,
               DynamicsMeasures& m) const;
+  /// The faces (after attach).
+  const CohesiveForces& cohesive() const { return *cohesive_; }
 
  private:
   const PolygonMesh& mesh_;
   CohesiveLaw law_;
   MohrCoulomb criterion_;
-  std::vector<char> eligible_;
-  double friction_;      // on closed faces
-  bool turning_frames_;  // the faces' frames turn with them (corotational kinematics)
-  Rectangle body_;       // the (first) body, and the wall's point if there is one: where cracks are
+  CrackSites sites_;            // the problem's: where cracks may form, and those at t = 0
+  std::vector<char> eligible_;  // per edge: checked by the criterion
+  double friction_;             // on closed faces
+  bool turning_frames_;         // the faces' frames turn with them (corotational kinematics)
+  Rectangle body_;  // the (first) body, and the wall's point if there is one: where cracks are
   std::optional<Point> impact_;
   std::unique_ptr<CohesiveForces> cohesive_;
   std::unique_ptr<CrackInsertion> insertion_;

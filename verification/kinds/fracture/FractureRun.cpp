@@ -83,15 +83,17 @@ std::string crack_faces(const CohesiveFracture& model, const std::vector<Interfa
   return csv_text(t);
 }
 
-GeneratedMesh run_mesh(const FractureScene& scene, const EnsembleRunId& run) {
-  MeshSpec spec = scene.meshes[run.mesh].spec(scene.geometry.domain, run.level, run.seed);
-  if (spec.symmetric && scene.geometry.notch_depth > 0.0)  // the notch tip must be a vertex
-    spec.line_marks = {scene.geometry.domain.y0() + scene.geometry.notch_depth};
-  GeneratedMesh generated = generate_mesh(spec);
+}  // namespace
+
+GeneratedMesh fracture_run_mesh(const FractureScene& scene, const EnsembleRunId& run) {
+  GeneratedMesh generated = generate_mesh(fracture_mesh_spec(
+      scene.meshes[run.mesh].spec(scene.geometry.domain, run.level, run.seed), scene.geometry));
   if (const auto report = validate_mesh(generated.mesh); !report.ok())
     throw NumericalError("invalid mesh: " + report.defects.front().what);
   return generated;
 }
+
+namespace {
 
 /// What a run keeps of each converged point of its path: a row of its curve (rewritten every
 /// kCurveWriteEvery points, so a stopped run keeps a whole file), the record's running figures
@@ -178,7 +180,8 @@ void check_fracture_meshes(const FractureScene& scene, const std::vector<Ensembl
   check_each_level(
       runs,
       [&](const EnsembleRunId& run) {
-        fracture_setup(run_mesh(scene, run).mesh, scene.geometry, scene.mode, scene.thickness);
+        fracture_setup(fracture_run_mesh(scene, run).mesh, scene.geometry, scene.mode,
+                       scene.thickness);
       },
       "");
 }
@@ -188,7 +191,7 @@ FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run
   const Stopwatch clock;
   FractureRecord r;
   r.run = run;
-  const GeneratedMesh generated = run_mesh(scene, run);
+  const GeneratedMesh generated = fracture_run_mesh(scene, run);
   const PolygonMesh& mesh = generated.mesh;
   r.cells = mesh.num_cells();
   r.full_dg_dofs = 2 * mesh.offsets().back();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/meshgen/MeshFamily.hpp"
 #include "verification/harness/EnsembleRun.hpp"
 #include "verification/kinds/fracture/FractureScene.hpp"
 
@@ -27,6 +28,10 @@ struct FractureRecord {
   double seconds = 0.0;
   double path_seconds = 0.0;  // of which following the path (after mesh, element and setup)
 };
+
+/// The mesh of one run (generated and validated): what the dynamic three-point bend of the same
+/// family, size, seed and realization meshes too.
+GeneratedMesh fracture_run_mesh(const FractureScene& scene, const EnsembleRunId& run);
 
 /// Builds the first realization of every mesh level and its fracture setup, so that a scene
 /// whose geometry the meshes cannot carry (no vertex at the load point, no edges along the crack

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Format.hpp"
 #include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
@@ -17,6 +18,10 @@ DynamicsWall DynamicsProblem::default_wall(const DynamicsScene& scene) const {
   const double reach = 0.5 * (std::abs(ahead.x()) * body.domain.width() +
                               std::abs(ahead.y()) * body.domain.height());
   return {Point(centre + reach * ahead), Point(-ahead)};
+}
+
+MeshSpec DynamicsProblem::mesh_spec(const MeshSpec& spec) const {
+  return spec;
 }
 
 std::unique_ptr<ProblemProbe> DynamicsProblem::probe(const DynamicsScene&, const BodiesMesh&,

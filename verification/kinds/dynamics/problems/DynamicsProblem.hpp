@@ -8,6 +8,7 @@
 // of them names one. The problems are listed once, in DynamicsProblems.cpp.
 #include <Eigen/Core>
 #include <array>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -26,6 +27,7 @@ struct DynamicsScene;
 struct DynamicsWall;
 class DynamicsSceneReader;
 class PolygonMesh;
+struct MeshSpec;
 
 /// Measures a problem takes beside the common ones (energy, momenta, contact, rotations).
 class ProblemProbe {
@@ -33,6 +35,18 @@ class ProblemProbe {
   virtual ~ProblemProbe() = default;
   /// After every step.
   virtual void observe(DynamicsMeasures& m) = 0;
+  /// Fragmentation: the run's cohesive faces (before the first step), for their closed-form
+  /// energies.
+  virtual void watch_cracks(const CohesiveForces&) {}
+  /// After the run (complete or stopped): the problem's own per-run files under `out`.
+  virtual void write(const std::filesystem::path& /*out*/, const std::string& /*run*/) const {}
+};
+
+/// Where a fragmentation run's cracks may form, and those there at t = 0, by mesh edge.
+struct CrackSites {
+  std::vector<char> eligible;  // per edge: checked by the insertion criterion (empty: every edge)
+  std::vector<int> pre_inserted;  // cohesive faces from t = 0, the law from zero opening
+  std::vector<int> free;          // split from t = 0 with no cohesive traction (a notch)
 };
 
 /// A column of report.md: its header and the text of a run's cell.
@@ -79,6 +93,18 @@ class DynamicsProblem {
   /// That default in words, for the key table.
   virtual std::string default_length_doc() const = 0;
   virtual ContactDefaults default_contact() const { return {}; }
+  /// True where `material.thickness` means something (a load in newtons): the others refuse it.
+  virtual bool uses_thickness() const { return false; }
+
+  // ---- the mesh
+  /// The (first) body's mesh spec as the problem needs it (a notch tip made a vertex).
+  virtual MeshSpec mesh_spec(const MeshSpec& spec) const;
+  /// Throws InputError where the bodies' mesh cannot carry the problem (no edges along a crack
+  /// line, no vertex at a load point).
+  virtual void check_mesh(const PolygonMesh&) const {}
+  /// Fragmentation: where cracks may form and where they are at t = 0; by default every interior
+  /// edge may crack and none has.
+  virtual CrackSites crack_sites(const PolygonMesh&) const { return {}; }
 
   // ---- the run
   /// True where a velocity is prescribed on part of the boundary (momentum enters there).

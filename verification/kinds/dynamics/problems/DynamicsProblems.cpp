@@ -10,7 +10,8 @@
   PROBLEM(two_blocks)                     \
   PROBLEM(strip_expansion)                \
   PROBLEM(column_impact)                  \
-  PROBLEM(projectile_impact)
+  PROBLEM(projectile_impact)              \
+  PROBLEM(three_point_bend)
 
 namespace vorodg {
 

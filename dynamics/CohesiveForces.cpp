@@ -60,6 +60,12 @@ void CohesiveForces::set_edge_strength(std::vector<double> factor) {
   edge_strength_ = std::move(factor);
 }
 
+void CohesiveForces::set_closure_fraction(double fraction) {
+  require_parameter(std::isfinite(fraction) && fraction > 0.0 && fraction <= 1.0,
+                    "cohesive forces: closure stiffness (of K0)", fraction, "0 < fraction <= 1");
+  closure_fraction_ = fraction;
+}
+
 void CohesiveForces::set_friction(double mu) {
   require_parameter(std::isfinite(mu) && mu >= 0.0 && mu <= 10.0, "cohesive forces: friction", mu,
                     "0 <= mu <= 10");
@@ -126,11 +132,11 @@ void CohesiveForces::add_edge(int e, const Carried& carried) {
 
 double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
                                         const CohesiveLaw& law, const std::vector<char>& eligible,
-                                        double friction) {
+                                        double friction, double closure_fraction) {
   const double beta = law.parameters().shear_factor;
   // The law's tangent never exceeds K0 diag(1, beta^2) on any branch; a sticking face adds the
   // closure stiffness to the shear.
-  const double shear = beta * beta + (friction > 0.0 ? kClosureFraction : 0.0);
+  const double shear = beta * beta + (friction > 0.0 ? closure_fraction : 0.0);
   const double k0 = law.parameters().initial_stiffness * std::max(1.0, shear);
   std::vector<std::vector<double>> row(mesh.num_cells());
   for (int c = 0; c < mesh.num_cells(); ++c) row[c].assign(mesh.cell_size(c), 0.0);
@@ -160,9 +166,10 @@ double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMas
 double CohesiveForces::stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
                                    const LumpedMass& mass, const CohesiveLaw& law,
                                    const std::vector<char>& eligible, double safety,
-                                   double friction) {
+                                   double friction, double closure_fraction) {
   return safety * 2.0 /
-         std::sqrt(cells.max_eigenvalue() + eigenvalue_bound(mesh, mass, law, eligible, friction));
+         std::sqrt(cells.max_eigenvalue() +
+                   eigenvalue_bound(mesh, mass, law, eligible, friction, closure_fraction));
 }
 
 void CohesiveForces::bind(const SplitDofMap& dofs) {

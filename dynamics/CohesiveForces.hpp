@@ -66,6 +66,12 @@ class CohesiveForces {
   /// strength factor[e] x sigma_c, with G and K0 unchanged. Call before the first add_edge.
   /// Throws InputError naming the edge where the scaled law is invalid, or if edges cracked.
   void set_edge_strength(std::vector<double> factor);
+  /// The overclosure penalty's stiffness as a fraction of K0 (see closure_stiffness below for
+  /// why the default is a tenth). Faces that stay closed under a slow load (the compressed part of
+  /// a pre-inserted crack line) want it stiff, as the quasi-static solver's penalty is. Throws
+  /// InputError unless 0 < fraction <= 1 (the springs' bound assumes at most K0).
+  void set_closure_fraction(double fraction);
+  static constexpr double kDefaultClosureFraction = 0.1;
   /// Coulomb friction mu on the closed faces (fracture/FacePoint: a stick spring of the closure
   /// stiffness, slipping at mu times the closure's pressure). Throws InputError unless
   /// 0 <= mu <= 10 (finite). 0, the default, is frictionless.
@@ -109,13 +115,14 @@ class CohesiveForces {
   /// With friction the stick spring adds the closure stiffness to the shear.
   static double eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
                                  const CohesiveLaw& law, const std::vector<char>& eligible,
-                                 double friction = 0.0);
+                                 double friction = 0.0,
+                                 double closure_fraction = kDefaultClosureFraction);
   /// safety x the critical step of the cells (`cells`, the cell-by-cell bound, valid for every
   /// split) and the springs together: stable for every crack pattern a run can reach.
   static double stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
                             const LumpedMass& mass, const CohesiveLaw& law,
-                            const std::vector<char>& eligible, double safety,
-                            double friction = 0.0);
+                            const std::vector<char>& eligible, double safety, double friction = 0.0,
+                            double closure_fraction = kDefaultClosureFraction);
   /// The cracked edges, in the order they cracked.
   const std::vector<int>& edges() const { return edges_; }
   bool cracked(int e) const { return slot_[e] >= 0; }
@@ -202,14 +209,14 @@ class CohesiveForces {
   /// four bound nodes.
   static void add_point_force(const Face& face, int q, const Eigen::Vector2d& force,
                               Eigen::VectorXd& f);
-  /// The penalty against overclosure: a fraction of K0. At K0 itself a closing face is a
-  /// spring whose contact lasts about one step at the stable step, and the switching of such a
-  /// spring on and off feeds energy in (measured: half the initial energy on a stretched strip
-  /// at safety 0.9); at a tenth its contact lasts about three times longer.
+  /// The penalty against overclosure: a fraction of K0 (set_closure_fraction). At K0 itself a
+  /// closing face is a spring whose contact lasts about one step at the stable step, and the
+  /// switching of such a spring on and off feeds energy in (measured: half the initial energy on a
+  /// stretched strip at safety 0.9); at a tenth its contact lasts about three times longer.
   double closure_stiffness() const {
-    return kClosureFraction * law_.parameters().initial_stiffness;
+    return closure_fraction_ * law_.parameters().initial_stiffness;
   }
-  static constexpr double kClosureFraction = 0.1;
+  double closure_fraction_ = kDefaultClosureFraction;
   double friction_ = 0.0;  // Coulomb's mu on closed faces
   bool turning_ = false;   // the faces' frames turn with them
   /// The law of face `slot` (the shared one unless the strength varies).

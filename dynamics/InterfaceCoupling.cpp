@@ -132,6 +132,7 @@ std::array<Eigen::Vector2d, 2> InterfaceCoupling::last_traction(int i) const {
 double InterfaceCoupling::eigenvalue_bound(const Eigen::VectorXd& node_masses) const {
   Eigen::VectorXd row = Eigen::VectorXd::Zero(num_dofs_);
   for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    if (!active_[i]) continue;
     const std::vector<int>& d = dofs_[i];
     for (std::size_t a = 0; a < d.size(); ++a)
       for (std::size_t b = 0; b < d.size(); ++b)

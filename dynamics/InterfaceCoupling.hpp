@@ -66,9 +66,10 @@ class InterfaceCoupling {
   /// Adds -K u (the coupling's force) to f (node DOFs of the map) and returns the coupling's
   /// energy 1/2 u.K u, over the active interfaces. Throws InputError if u or f has the wrong size.
   double add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const;
-  /// A bound of the largest eigenvalue of M^-1 K_I (K_I all the interface blocks, M the node
-  /// masses): Gershgorin on M^-1/2 K_I M^-1/2. Added to the cells' bound it bounds the whole
-  /// system's, since lambda_max(A + B) <= lambda_max(A) + lambda_max(B).
+  /// A bound of the largest eigenvalue of M^-1 K_I (K_I the active interfaces' blocks, M the
+  /// node masses; an interface deactivated later only lowers it): Gershgorin on M^-1/2 K_I M^-1/2.
+  /// Added to the cells' bound it bounds the whole system's, since lambda_max(A + B) <=
+  /// lambda_max(A) + lambda_max(B).
   double eigenvalue_bound(const Eigen::VectorXd& node_masses) const;
 
  private:

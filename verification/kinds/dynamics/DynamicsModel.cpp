@@ -79,23 +79,23 @@ DynamicsModel::DynamicsModel(const DynamicsScene& s, const EnsembleRunId& id)
                                            derive_seed(s.variation_seed, id.seed))) {
   const CrackSites sites = crack_sites(s, mesh());
   const SplitDofMap dofs = initial_dofs(s, mesh(), sites);
-  InternalForce force = make_force(dofs);
-  // The faces there from t = 0 are cracks or a notch, never coupled (the step above counted
-  // them: it only errs on the safe side).
-  if (coupling)
-    for (const std::vector<int>* edges : {&sites.pre_inserted, &sites.free})
-      for (int e : *edges) coupling->deactivate(coupling->interface_of_edge(e));
+  InternalForce force = make_force(dofs, sites);
   make_integrator(std::move(force), dofs);
 }
 
-InternalForce DynamicsModel::make_force(const SplitDofMap& dofs) {
+InternalForce DynamicsModel::make_force(const SplitDofMap& dofs, const CrackSites& sites) {
   auto matrices = integrator.all_cell_matrices(1);
   if (!variation.empty())
     for (int c = 0; c < mesh().num_cells(); ++c)
       for (std::size_t i = matrices.offset[c]; i < matrices.offset[c + 1]; ++i)
         matrices.data[i] *= variation.stiffness[c];
   const StableTimeStep bound(mesh(), matrices, mass);
-  if (scene.dg_interfaces) coupling.emplace(table, integrator, matrices, dofs);
+  if (scene.dg_interfaces) {
+    coupling.emplace(table, integrator, matrices, dofs);
+    // The faces there from t = 0 are cracks or a notch, never coupled.
+    for (const std::vector<int>* edges : {&sites.pre_inserted, &sites.free})
+      for (int e : *edges) coupling->deactivate(coupling->interface_of_edge(e));
+  }
   InternalForce force(mesh(), std::move(matrices));
   const GlobalTimeStep lanczos(force, dofs, mass.node_masses(dofs), bound, {},
                                coupling ? &*coupling : nullptr);  // of K: the linear force

@@ -54,7 +54,7 @@ class DynamicsModel {
 
  private:
   /// The internal force of the (varied) cell matrices; sets the two critical-step estimates.
-  InternalForce make_force(const SplitDofMap& dofs);
+  InternalForce make_force(const SplitDofMap& dofs, const CrackSites& sites);
   /// Each cell's dilatational speed (its stiffness factor's square root, if the material varies).
   std::vector<double> wave_speeds() const;
   /// The integrator with contact, boundaries, loads, cracks and its initial state.

@@ -88,6 +88,7 @@ struct DynamicsScene {
   CohesiveParameters cohesive;
   double stiffness_factor = 0.0;  // K0 in units of E / h_avg
   double face_friction = 0.0;     // Coulomb's mu on closed crack faces
+  double closure_fraction = 0.1;  // the faces' overclosure penalty, of K0
   bool turning_faces = false;     // corotational: faces read openings in turning frames
   MohrCoulombParameters criterion;
   std::vector<SceneMesh> meshes;

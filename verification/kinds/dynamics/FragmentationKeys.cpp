@@ -25,6 +25,7 @@ void DynamicsSceneReader::read_fracture() {
   m.finish();
   // The faces are the material's failure planes: by default they slide with its friction.
   s_.face_friction = number(c, "cohesive.face_friction", s_.criterion.friction);
+  s_.closure_fraction = number(c, "cohesive.closure_stiffness");
   s_.turning_faces = flag(c, "cohesive.turning_frames");
   if (s_.turning_faces && !s_.corotational)
     c.fail_value("turning_frames", "true with kinematics small: expected corotational");

@@ -67,6 +67,7 @@ class FragmentationRun {
   CrackSites sites_;            // the problem's: where cracks may form, and those at t = 0
   std::vector<char> eligible_;  // per edge: checked by the criterion
   double friction_;             // on closed faces
+  double closure_fraction_;     // the overclosure penalty, of K0
   bool turning_frames_;         // the faces' frames turn with them (corotational kinematics)
   Rectangle body_;  // the (first) body, and the wall's point if there is one: where cracks are
   std::optional<Point> impact_;

@@ -61,13 +61,17 @@ std::vector<InterfaceActivation::Failure> InterfaceActivation::check(const Tract
   for (int k = 0; k < n; ++k) {
     const int i = candidates_[k];
     if (!coupling_.active(i)) continue;
-    // The flux is linear along the edge: the mean of the two Gauss points is the edge mean.
+    // Each Gauss point is checked, as the quasi-static solver checks its points: the flux is
+    // linear along the edge, and at a notch tip its peak is at one end. The edge activates as a
+    // whole when either point fails; `traction` reports the more loaded point's.
     const std::array<Eigen::Vector2d, 2> global = tractions(i);
-    const Eigen::Vector2d g = 0.5 * (global[0] + global[1]);
-    mean[k] = Eigen::Vector2d(g.dot(normal_[k]), g.dot(tangent_[k]));
     const int e = coupling_.space().interfaces()[i].edge;
-    utilization[k] =
-        face_utilization(criterion_, mean[k], edge_strength_.empty() ? 1.0 : edge_strength_[e]);
+    const double factor = edge_strength_.empty() ? 1.0 : edge_strength_[e];
+    for (const Eigen::Vector2d& g : global) {
+      const Eigen::Vector2d t(g.dot(normal_[k]), g.dot(tangent_[k]));
+      const double u = face_utilization(criterion_, t, factor);
+      if (u >= utilization[k]) utilization[k] = u, mean[k] = t;
+    }
   }
   std::vector<Failure> out;
   for (int k = 0; k < n; ++k)

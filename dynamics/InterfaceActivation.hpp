@@ -3,7 +3,8 @@
 // Radovitzky et al., CMAME 2011): while intact, an interface is held by the interior-penalty
 // coupling (InterfaceCoupling); after each step the Mohr-Coulomb criterion is evaluated on the
 // consistent interface traction, the flux {sigma}_w n - eps [u] the coupling puts across it
-// (its edge mean, in the face frame: normal out of cell 1, tension positive; tangent v0 -> v1).
+// (at each of its two Gauss points, in the face frame: normal out of cell 1, tension positive;
+// tangent v0 -> v1); the edge activates when either point fails.
 // An interface that fails leaves the coupling for a cohesive face that continues with the law
 // from the traction each of its points carried (CohesiveForces::add_edge with Carried), so the
 // traction does not jump and nothing is released where the carried traction is within the
@@ -39,7 +40,7 @@ class InterfaceActivation {
   struct Failure {
     int edge;
     int interface;
-    Eigen::Vector2d traction;  // edge mean (normal, shear), at the check
+    Eigen::Vector2d traction;  // (normal, shear) at the more loaded Gauss point, at the check
   };
   /// The eligible, still coupled interfaces whose criterion utilization is at least 1, by edge.
   std::vector<Failure> failing(const Eigen::VectorXd& u, int threads) const;

@@ -125,32 +125,39 @@ def write_table(rows, out):
 
 
 def plot(rows, out):
+    """One PNG per case and speed: every realization's curves over the quasi-static ones, the
+    whole range on the left and the quasi-static curve's range on the right (dg drawn last)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    colours = {"insertion": "tab:red", "dg": "tab:blue"}
+    order = {"insertion": 0, "dg": 1}
     for case, speed in sorted({(r["case"], r["speed"]) for r in rows}):
-        fig, ax = plt.subplots(figsize=(7, 4.5))
-        colours = {"insertion": "tab:red", "dg": "tab:blue"}
-        drawn = set()
-        for r in rows:
-            if (r["case"], r["speed"]) != (case, speed):
-                continue
-            dyn, qs = r["_curves"]
-            label = r["approach"] if r["approach"] not in drawn else None
-            ax.plot(1e3 * dyn["cmod"], dyn["load"], color=colours.get(r["approach"], "k"), lw=0.8,
-                    alpha=0.8, label=label)
-            drawn.add(r["approach"])
-            ax.plot(1e3 * qs["cmod"], qs["load"], "k--", lw=1.0,
-                    label="quasi-static" if "qs" not in drawn else None)
-            drawn.add("qs")
-        ax.set_xlabel("CMOD (mm)")
-        ax.set_ylabel("load (N)")
-        ax.set_title(f"three-point bend, {case}, load point at {speed:g} m/s")
-        ax.set_xlim(0, 1.0)
-        ax.legend()
+        group = sorted((r for r in rows if (r["case"], r["speed"]) == (case, speed)),
+                       key=lambda r: order.get(r["approach"], 2))
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+        for ax in axes:
+            drawn = set()
+            for r in group:
+                dyn, qs = r["_curves"]
+                ax.plot(1e3 * dyn["cmod"], dyn["load"], color=colours.get(r["approach"], "k"),
+                        lw=0.8, alpha=0.8,
+                        label=r["approach"] if r["approach"] not in drawn else None)
+                drawn.add(r["approach"])
+                ax.plot(1e3 * qs["cmod"], qs["load"], "k--", lw=1.2,
+                        label="quasi-static" if "qs" not in drawn else None)
+                drawn.add("qs")
+            ax.set_xlabel("CMOD (mm)")
+            ax.set_ylabel("load (N)")
+            ax.set_xlim(0, 1.0)
+            ax.legend()
+        peak = max(r["peak_qs"] for r in group)
+        axes[1].set_ylim(-0.25 * peak, 1.5 * peak)
+        axes[0].set_title(f"{case}, load point at {speed:g} m/s")
+        axes[1].set_title("the quasi-static curve's range")
         fig.tight_layout()
         path = os.path.join(out, f"tpb-dynamic-{case}-v{speed:g}.png")
-        fig.savefig(path + ".tmp.png", dpi=120)
+        fig.savefig(path + ".tmp.png", dpi=110)
         os.replace(path + ".tmp.png", path)
         plt.close(fig)
 

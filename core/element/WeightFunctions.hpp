@@ -56,6 +56,12 @@ class WeightFunctions {
   void evaluate(int cell, int fan, const Eigen::Vector3d& bary, double* w,
                 Eigen::Vector2d* grad) const;
 
+  /// Bytes held: the nodal values, their offsets and the centroids.
+  std::size_t bytes() const {
+    return values_.size() * sizeof(double) + offsets_.size() * sizeof(std::size_t) +
+           centroids_.size() * sizeof(Point);
+  }
+
   /// Centroids of the cells (the fan centres).
   const std::vector<Point>& centroids() const { return centroids_; }
 

@@ -10,6 +10,7 @@
 //     edge and at the vertex;
 //   - evaluate() interpolates the nodal values and its gradient matches finite differences;
 //   - results with 2 threads are bitwise identical to 1 thread (dense and sparse patch solves);
+//   - the condensed cells (small lattices) give the per-patch solution to round-off;
 //   - option checking.
 #include <gtest/gtest.h>
 
@@ -359,6 +360,30 @@ TEST(WeightFunctions, ThreadCountDoesNotChangeTheResult) {
                                   << i;
         }
       }
+    }
+  }
+}
+
+TEST(WeightFunctions, CondensedCellsGiveThePatchSolution) {
+  // Eliminating each cell's inner nodes first is the same linear algebra in another order.
+  for (const Family& f : kFamilies) {
+    const PolygonMesh& mesh = mesh_of(f);
+    for (const WeightFunctionOptions& o :
+         {WeightFunctionOptions{0, 1}, WeightFunctionOptions{1, 1}, WeightFunctionOptions{0, 2},
+          WeightFunctionOptions{1, 2}}) {
+      WeightFunctionOptions per_patch = o;
+      per_patch.condense = false;
+      const WeightFunctions condensed(mesh, o), patches(mesh, per_patch);
+      double worst = 0.0;
+      for (int c = 0; c < mesh.num_cells(); ++c)
+        for (int k = 0; k < mesh.cell_size(c); ++k) {
+          const auto a = condensed.values(c, k), b = patches.values(c, k);
+          ASSERT_EQ(a.size(), b.size());
+          for (std::size_t i = 0; i < a.size(); ++i)
+            worst = std::max(worst, std::abs(a[i] - b[i]) / weight_scale(mesh, c));
+        }
+      EXPECT_LT(worst, 1e-12) << label(f, o);
+      std::cout << label(f, o) << ": largest difference " << worst << " of the cell's area\n";
     }
   }
 }

@@ -97,6 +97,8 @@ class ElementTable {
   /// to the bit.
   void release_weights();
   void restore_weights();
+  /// Bytes the weight functions hold (0 when released or for the families without them).
+  std::size_t weights_bytes() const { return weights_ ? weights_->bytes() : 0; }
   /// Whether restore_weights() has anything to compute (RK weights released).
   bool weights_released() const { return !weights_ && options_.family == ElementFamily::rk; }
 

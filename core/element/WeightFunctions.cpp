@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "core/element/LatticeBasis.hpp"
@@ -69,6 +70,26 @@ SubTriangleMatrices sub_triangle_matrices(const Point& C, const Point& A, const 
   return out;
 }
 
+/// Calls add(nodes, matrices) for every sub-triangle of the cell's lattice (N divisions per fan
+/// triangle side, m sub-triangles), with its cell-local nodes and its stiffness and load.
+template <class Add>
+void for_each_sub_triangle(const PolygonMesh& mesh, const Point& centroid, int cell, int N, int m,
+                           int degree, Add&& add) {
+  const auto loop = mesh.cell_vertices(cell);
+  const int n = static_cast<int>(loop.size());
+  const FanLattice lattice(n, N);
+  for (int k = 0; k < n; ++k) {
+    const auto local = sub_triangle_matrices(centroid, mesh.vertex(loop[k]),
+                                             mesh.vertex(loop[(k + 1) % n]), m, degree);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; a + b < m; ++b)
+        for (bool up : {true, false}) {
+          if (!up && a + b > m - 2) continue;
+          add(sub_triangle_nodes(lattice, k, a, b, up, degree), local);
+        }
+  }
+}
+
 /// Unknown numbering of one patch: per patch cell, the unknown of each cell-local node, or -1
 /// where the weight function is held at zero (every node on an edge not incident to the patch
 /// vertex, including the other vertices).
@@ -123,6 +144,131 @@ void number_patch(const PolygonMesh& mesh, int vertex, int N, PatchNumbering& pa
   }
 }
 
+/// Lattices up to this many nodes per cell are solved by condensing each cell onto its boundary
+/// (the default, P2 unrefined, has 3n + 1); finer ones by one sparse or dense solve per patch.
+constexpr int kMaxCondensedNodes = 64;
+
+/// Cholesky factor in place of the dense symmetric n x n matrix A (row-major, lower triangle
+/// read and overwritten); false if A is not positive definite.
+bool cholesky_in_place(double* A, int n) {
+  for (int j = 0; j < n; ++j) {
+    double d = A[j * n + j];
+    for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k];
+    if (!(d > 0.0)) return false;
+    d = std::sqrt(d);
+    A[j * n + j] = d;
+    for (int i = j + 1; i < n; ++i) {
+      double v = A[i * n + j];
+      for (int k = 0; k < j; ++k) v -= A[i * n + k] * A[j * n + k];
+      A[i * n + j] = v / d;
+    }
+  }
+  return true;
+}
+
+/// x := L^-1 x, L the factor of cholesky_in_place.
+void forward_solve(const double* L, int n, double* x) {
+  for (int i = 0; i < n; ++i) {
+    double v = x[i];
+    for (int k = 0; k < i; ++k) v -= L[i * n + k] * x[k];
+    x[i] = v / L[i * n + i];
+  }
+}
+
+/// x := L^-T x.
+void backward_solve(const double* L, int n, double* x) {
+  for (int i = n - 1; i >= 0; --i) {
+    double v = x[i];
+    for (int k = i + 1; k < n; ++k) v -= L[k * n + i] * x[k];
+    x[i] = v / L[i * n + i];
+  }
+}
+
+/// One cell's weight-function problem, -lap w = 1 on its lattice, split into the nodes inside
+/// the cell (centroid, spokes, fan interiors: `inner`) and those on its boundary (vertices and
+/// edge nodes). Every weight function of a vertex is, inside each cell of its patch, the solution
+/// of this problem for its boundary values, so the inner nodes are eliminated cell by cell, once
+/// for all the cell's vertices, and the patch problems keep only the vertex and the nodes of the
+/// edges at it.
+struct CellCondensation {
+  int n = 0, N = 0, nodes = 0, n_inner = 0;
+  std::array<int, kMaxCondensedNodes> inner{};                      // inner nodes, in node order
+  std::array<double, kMaxCondensedNodes * kMaxCondensedNodes> K{};  // full, row-major
+  std::array<double, kMaxCondensedNodes> f{};
+  std::array<double, kMaxCondensedNodes * kMaxCondensedNodes> L{};  // factor of K(inner, inner)
+
+  /// The nodes whose values a vertex's weight function may have nonzero on the cell's boundary:
+  /// vertex k, then the nodes of edge k and of edge k-1, each by distance from vertex k.
+  static void boundary_nodes(const FanLattice& lattice, int n, int N, int k, int* out) {
+    out[0] = 1 + k;
+    for (int s = 1; s < N; ++s) {
+      out[s] = lattice.edge_node(k, s);
+      out[N - 1 + s] = lattice.edge_node((k + n - 1) % n, N - s);
+    }
+  }
+};
+
+/// Stiffness and load of the cell's lattice, and the factor of its inner block.
+void condense_cell(const PolygonMesh& mesh, const Point& centroid, int cell, int N, int m,
+                   int degree, CellCondensation& cc) {
+  const int n = mesh.cell_size(cell);
+  const FanLattice lattice(n, N);
+  cc.n = n;
+  cc.N = N;
+  cc.nodes = lattice.node_count();
+  const int nn = cc.nodes;
+  std::fill(cc.K.begin(), cc.K.begin() + nn * nn, 0.0);
+  std::fill(cc.f.begin(), cc.f.begin() + nn, 0.0);
+  for_each_sub_triangle(mesh, centroid, cell, N, m, degree,
+                        [&](const SubTriangleNodes& sub, const SubTriangleMatrices& local) {
+                          for (int i = 0; i < sub.count; ++i) {
+                            cc.f[sub.node[i]] += local.f[i];
+                            for (int j = 0; j < sub.count; ++j)
+                              cc.K[sub.node[i] * nn + sub.node[j]] += local.K(i, j);
+                          }
+                        });
+  const int first_edge_node = 1 + n + n * (N - 1);
+  cc.n_inner = 0;
+  for (int node = 0; node < nn; ++node)
+    if (node == 0 || (node > n && node < first_edge_node) || node >= lattice.first_interior())
+      cc.inner[cc.n_inner++] = node;
+  const int ni = cc.n_inner;
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j <= i; ++j) cc.L[i * ni + j] = cc.K[cc.inner[i] * nn + cc.inner[j]];
+  if (!cholesky_in_place(cc.L.data(), ni))
+    throw NumericalError("cell " + std::to_string(cell) +
+                         ": its weight-function lattice matrix is not positive definite (a "
+                         "degenerate fan triangle)");
+}
+
+/// Per vertex k of the condensed cell: the Schur complement of the inner nodes on the vertex's
+/// 2N - 1 boundary nodes (row-major) and its load, `block` entries then `2N - 1`.
+void vertex_blocks(const CellCondensation& cc, double* out) {
+  const int ni = cc.n_inner, nn = cc.nodes, nb = 2 * cc.N - 1;
+  const FanLattice lattice(cc.n, cc.N);
+  double y_f[kMaxCondensedNodes], y[2 * kMaxCondensedNodes][kMaxCondensedNodes];
+  for (int i = 0; i < ni; ++i) y_f[i] = cc.f[cc.inner[i]];
+  forward_solve(cc.L.data(), ni, y_f);
+  for (int k = 0; k < cc.n; ++k, out += nb * nb + nb) {
+    int bn[2 * kMaxCondensedNodes];
+    CellCondensation::boundary_nodes(lattice, cc.n, cc.N, k, bn);
+    for (int a = 0; a < nb; ++a) {
+      for (int i = 0; i < ni; ++i) y[a][i] = cc.K[cc.inner[i] * nn + bn[a]];
+      forward_solve(cc.L.data(), ni, y[a]);
+    }
+    for (int a = 0; a < nb; ++a) {
+      for (int b = 0; b < nb; ++b) {
+        double v = cc.K[bn[a] * nn + bn[b]];
+        for (int i = 0; i < ni; ++i) v -= y[a][i] * y[b][i];
+        out[a * nb + b] = v;
+      }
+      double g = cc.f[bn[a]];
+      for (int i = 0; i < ni; ++i) g -= y[a][i] * y_f[i];
+      out[nb * nb + a] = g;
+    }
+  }
+}
+
 }  // namespace
 
 void check_weight_options(const WeightFunctionOptions& o) {
@@ -145,11 +291,120 @@ WeightFunctions::WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOp
         offsets_[c] + static_cast<std::size_t>(mesh.cell_size(c)) * lattice(c).node_count();
   }
   values_.assign(offsets_.back(), 0.0);
+  int largest = 0;
+  for (int c = 0; c < mesh.num_cells(); ++c) largest = std::max(largest, lattice(c).node_count());
+  if (options.condense && largest <= kMaxCondensedNodes) {
+    solve_by_condensation(threads);
+    return;
+  }
 #pragma omp parallel num_threads(std::max(threads, 1))
   {
 #pragma omp for schedule(dynamic, 64)
     for (int v = 0; v < mesh.num_vertices(); ++v) solve_patch(v);
   }
+}
+
+/// The patch problems with every cell's inner nodes eliminated: (1) per cell, the Schur
+/// complement on each vertex's boundary nodes; (2) per vertex, the patch problem on its own node
+/// and the nodes of the edges at it; (3) per cell, the inner values of each of its vertices'
+/// weight functions from those boundary values. The same solution as one solve per patch, to
+/// round-off, with each cell's matrix assembled and factored twice instead of once per vertex.
+void WeightFunctions::solve_by_condensation(int threads) {
+  const int N = divisions(), m = lattice_size(), degree = options_.degree, nb = 2 * N - 1;
+  const int nc = mesh_.num_cells();
+  const int per_vertex = nb * nb + nb;
+  std::vector<std::size_t> block_offsets(nc + 1, 0);
+  for (int c = 0; c < nc; ++c)
+    block_offsets[c + 1] =
+        block_offsets[c] + static_cast<std::size_t>(mesh_.cell_size(c)) * per_vertex;
+  std::vector<double> blocks(block_offsets.back());
+#pragma omp parallel num_threads(std::max(threads, 1))
+  {
+    CellCondensation cc;
+#pragma omp for schedule(dynamic, 256)
+    for (int c = 0; c < nc; ++c) {
+      condense_cell(mesh_, centroids_[c], c, N, m, degree, cc);
+      vertex_blocks(cc, blocks.data() + block_offsets[c]);
+    }
+    std::vector<double> A, rhs;
+    std::vector<int> local;  // per patch cell, its block's nodes as patch unknowns
+    std::vector<int> edges;  // the patch's edges at the vertex
+#pragma omp for schedule(dynamic, 256)
+    for (int v = 0; v < mesh_.num_vertices(); ++v) {
+      const auto cells = mesh_.vertex_cells(v);
+      // Patch unknowns: the vertex, then N - 1 per edge at it, by distance from the vertex.
+      edges.clear();
+      const auto slot = [&](int e) {
+        const auto it = std::find(edges.begin(), edges.end(), e);
+        if (it != edges.end()) return static_cast<int>(it - edges.begin());
+        edges.push_back(e);
+        return static_cast<int>(edges.size()) - 1;
+      };
+      local.resize(cells.size() * nb);
+      for (std::size_t pc = 0; pc < cells.size(); ++pc) {
+        const int c = cells[pc], n = mesh_.cell_size(c), k = vertex_position(c, v);
+        const int after = slot(mesh_.cell_edges(c)[k]);
+        const int before = slot(mesh_.cell_edges(c)[(k + n - 1) % n]);
+        int* idx = local.data() + pc * nb;
+        idx[0] = 0;
+        for (int s = 1; s < N; ++s) {
+          idx[s] = 1 + after * (N - 1) + s - 1;
+          idx[N - 1 + s] = 1 + before * (N - 1) + s - 1;
+        }
+      }
+      const int p = 1 + static_cast<int>(edges.size()) * (N - 1);
+      A.assign(static_cast<std::size_t>(p) * p, 0.0);
+      rhs.assign(p, 0.0);
+      for (std::size_t pc = 0; pc < cells.size(); ++pc) {
+        const int c = cells[pc];
+        const double* block = blocks.data() + block_offsets[c] +
+                              static_cast<std::size_t>(vertex_position(c, v)) * per_vertex;
+        const int* idx = local.data() + pc * nb;
+        for (int a = 0; a < nb; ++a) {
+          rhs[idx[a]] += block[nb * nb + a];
+          for (int b = 0; b < nb; ++b) A[idx[a] * p + idx[b]] += block[a * nb + b];
+        }
+      }
+      // A sum of Schur complements of positive definite cell matrices: positive definite.
+      cholesky_in_place(A.data(), p);
+      forward_solve(A.data(), p, rhs.data());
+      backward_solve(A.data(), p, rhs.data());
+      for (std::size_t pc = 0; pc < cells.size(); ++pc) {
+        const int c = cells[pc], n = mesh_.cell_size(c), k = vertex_position(c, v);
+        const FanLattice lat(n, N);
+        double* out = values_.data() + offsets_[c] + static_cast<std::size_t>(k) * lat.node_count();
+        int bn[2 * kMaxCondensedNodes];
+        CellCondensation::boundary_nodes(lat, n, N, k, bn);
+        const int* idx = local.data() + pc * nb;
+        for (int a = 0; a < nb; ++a) out[bn[a]] = rhs[idx[a]];
+      }
+    }
+#pragma omp for schedule(dynamic, 256)
+    for (int c = 0; c < nc; ++c) {
+      condense_cell(mesh_, centroids_[c], c, N, m, degree, cc);
+      const int nn = cc.nodes, ni = cc.n_inner;
+      const FanLattice lat(cc.n, N);
+      for (int k = 0; k < cc.n; ++k) {
+        double* out = values_.data() + offsets_[c] + static_cast<std::size_t>(k) * nn;
+        int bn[2 * kMaxCondensedNodes];
+        CellCondensation::boundary_nodes(lat, cc.n, N, k, bn);
+        double x[kMaxCondensedNodes];
+        for (int i = 0; i < ni; ++i) {
+          double r = cc.f[cc.inner[i]];
+          for (int a = 0; a < nb; ++a) r -= cc.K[cc.inner[i] * nn + bn[a]] * out[bn[a]];
+          x[i] = r;
+        }
+        forward_solve(cc.L.data(), ni, x);
+        backward_solve(cc.L.data(), ni, x);
+        for (int i = 0; i < ni; ++i) out[cc.inner[i]] = x[i];
+      }
+    }
+  }
+}
+
+int WeightFunctions::vertex_position(int cell, int vertex) const {
+  const auto loop = mesh_.cell_vertices(cell);
+  return static_cast<int>(std::find(loop.begin(), loop.end(), vertex) - loop.begin());
 }
 
 void WeightFunctions::solve_patch(int vertex) {
@@ -169,37 +424,26 @@ void WeightFunctions::solve_patch(int vertex) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n_u);
 
   // -lap w = 1: stiffness and load of every sub-triangle, scattered to the unknowns.
-  for (const auto& cd : patch.cells) {
-    const auto loop = mesh_.cell_vertices(cd.cell);
-    const int n = static_cast<int>(loop.size());
-    const FanLattice lattice(n, N);
-    for (int k = 0; k < n; ++k) {
-      const auto local = sub_triangle_matrices(centroids_[cd.cell], mesh_.vertex(loop[k]),
-                                               mesh_.vertex(loop[(k + 1) % n]), m, degree);
-      for (int a = 0; a < m; ++a)
-        for (int b = 0; a + b < m; ++b)
-          for (bool up : {true, false}) {
-            if (!up && a + b > m - 2) continue;
-            const auto nodes = sub_triangle_nodes(lattice, k, a, b, up, degree);
-            int dofs[6];
-            for (int i = 0; i < nodes.count; ++i) dofs[i] = cd.dof[nodes.node[i]];
-            // Lower triangle only: both factorizations read nothing else.
-            for (int i = 0; i < nodes.count; ++i) {
-              const int di = dofs[i];
-              if (di < 0) continue;
-              f[di] += local.f[i];
-              for (int j = 0; j < nodes.count; ++j) {
-                const int dj = dofs[j];
-                if (dj < 0 || dj > di) continue;
-                if (dense)
-                  K_dense(di, dj) += local.K(i, j);
-                else
-                  triplets.emplace_back(di, dj, local.K(i, j));
-              }
-            }
-          }
-    }
-  }
+  for (const auto& cd : patch.cells)
+    for_each_sub_triangle(mesh_, centroids_[cd.cell], cd.cell, N, m, degree,
+                          [&](const SubTriangleNodes& nodes, const SubTriangleMatrices& local) {
+                            int dofs[6];
+                            for (int i = 0; i < nodes.count; ++i) dofs[i] = cd.dof[nodes.node[i]];
+                            // Lower triangle only: both factorizations read nothing else.
+                            for (int i = 0; i < nodes.count; ++i) {
+                              const int di = dofs[i];
+                              if (di < 0) continue;
+                              f[di] += local.f[i];
+                              for (int j = 0; j < nodes.count; ++j) {
+                                const int dj = dofs[j];
+                                if (dj < 0 || dj > di) continue;
+                                if (dense)
+                                  K_dense(di, dj) += local.K(i, j);
+                                else
+                                  triplets.emplace_back(di, dj, local.K(i, j));
+                              }
+                            }
+                          });
   Eigen::VectorXd w;
   if (dense) {
     Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(K_dense);  // factorizes in place

@@ -21,6 +21,10 @@ namespace vorodg {
 struct WeightFunctionOptions {
   int refinement = 0;  // each fan triangle cut into 4^refinement sub-triangles
   int degree = 2;      // 1 (P1) or 2 (P2) on the sub-triangles
+  /// Solve small lattices (up to 64 nodes per cell, the default's 3n + 1 among them) by
+  /// eliminating each cell's inner nodes once for all its vertices; false: one solve per patch
+  /// (always so for larger lattices). The same weights to round-off.
+  bool condense = true;
   bool operator==(const WeightFunctionOptions&) const = default;
 };
 
@@ -56,12 +60,21 @@ class WeightFunctions {
   void evaluate(int cell, int fan, const Eigen::Vector3d& bary, double* w,
                 Eigen::Vector2d* grad) const;
 
+  /// Bytes held: the nodal values, their offsets and the centroids.
+  std::size_t bytes() const {
+    return values_.size() * sizeof(double) + offsets_.size() * sizeof(std::size_t) +
+           centroids_.size() * sizeof(Point);
+  }
+
   /// Centroids of the cells (the fan centres).
   const std::vector<Point>& centroids() const { return centroids_; }
 
  private:
   int divisions() const { return lattice_size() * options_.degree; }
   void solve_patch(int vertex);
+  void solve_by_condensation(int threads);
+  /// Position of `vertex` in the cell's loop.
+  int vertex_position(int cell, int vertex) const;
 
   const PolygonMesh& mesh_;
   WeightFunctionOptions options_;

@@ -8,87 +8,12 @@
 #include <string>
 
 #include "core/element/LatticeBasis.hpp"
+#include "core/element/LatticeStiffness.hpp"
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
 namespace {
-
-/// Stiffness and load of one sub-triangle of fan triangle (C, A, B): every sub-triangle of the
-/// lattice, up or down, has the same matrices in its local node order (the down triangles are
-/// the up ones turned by 180 degrees).
-struct SubTriangleMatrices {
-  Eigen::Matrix<double, 6, 6> K;
-  Eigen::Matrix<double, 6, 1> f;
-};
-
-/// Reference integrals R_ab(i, j) = int d_a phi_i d_b phi_j over the reference triangle, for the
-/// (xi, eta) derivatives a, b, and int phi_i: a sub-triangle's matrices are a combination of
-/// them with its metric, so no quadrature runs per sub-triangle.
-struct ReferenceIntegrals {
-  Eigen::Matrix<double, 6, 6> R[2][2];
-  Eigen::Matrix<double, 6, 1> mass;
-};
-
-ReferenceIntegrals make_reference(int degree) {
-  ReferenceIntegrals ref;
-  for (auto& row : ref.R)
-    for (auto& m : row) m.setZero();
-  ref.mass.setZero();
-  const int n = degree == 1 ? 3 : 6;
-  const TriangleRule& rule = triangle_rule(3);  // exact: the integrands are quadratic at most
-  for (int q = 0; q < rule.size(); ++q) {
-    double phi[6], dphi[6][2];
-    lattice_basis(degree, rule.bary[q][1], rule.bary[q][2], phi, dphi);
-    const double w = 0.5 * rule.weights[q];  // the reference triangle's area is 1/2
-    for (int i = 0; i < n; ++i) {
-      ref.mass[i] += w * phi[i];
-      for (int j = 0; j < n; ++j)
-        for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 2; ++b) ref.R[a][b](i, j) += w * dphi[i][a] * dphi[j][b];
-    }
-  }
-  return ref;
-}
-
-const ReferenceIntegrals& reference_integrals(int degree) {
-  static const ReferenceIntegrals p1 = make_reference(1), p2 = make_reference(2);
-  return degree == 1 ? p1 : p2;
-}
-
-SubTriangleMatrices sub_triangle_matrices(const Point& C, const Point& A, const Point& B, int m,
-                                          int degree) {
-  const Eigen::Matrix2d J = sub_triangle_jacobian(C, A, B, m, true);
-  const double det = std::abs(J.determinant());
-  const Eigen::Matrix2d Jinv = J.inverse();
-  const Eigen::Matrix2d metric = det * Jinv * Jinv.transpose();  // |J| J^-1 J^-T
-  const ReferenceIntegrals& ref = reference_integrals(degree);
-  SubTriangleMatrices out;
-  out.K = metric(0, 0) * ref.R[0][0] + metric(0, 1) * (ref.R[0][1] + ref.R[1][0]) +
-          metric(1, 1) * ref.R[1][1];
-  out.f = det * ref.mass;
-  return out;
-}
-
-/// Calls add(nodes, matrices) for every sub-triangle of the cell's lattice (N divisions per fan
-/// triangle side, m sub-triangles), with its cell-local nodes and its stiffness and load.
-template <class Add>
-void for_each_sub_triangle(const PolygonMesh& mesh, const Point& centroid, int cell, int N, int m,
-                           int degree, Add&& add) {
-  const auto loop = mesh.cell_vertices(cell);
-  const int n = static_cast<int>(loop.size());
-  const FanLattice lattice(n, N);
-  for (int k = 0; k < n; ++k) {
-    const auto local = sub_triangle_matrices(centroid, mesh.vertex(loop[k]),
-                                             mesh.vertex(loop[(k + 1) % n]), m, degree);
-    for (int a = 0; a < m; ++a)
-      for (int b = 0; a + b < m; ++b)
-        for (bool up : {true, false}) {
-          if (!up && a + b > m - 2) continue;
-          add(sub_triangle_nodes(lattice, k, a, b, up, degree), local);
-        }
-  }
-}
 
 /// Unknown numbering of one patch: per patch cell, the unknown of each cell-local node, or -1
 /// where the weight function is held at zero (every node on an edge not incident to the patch

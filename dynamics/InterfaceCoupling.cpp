@@ -35,6 +35,8 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
   flux_.resize(faces.size());
   last_flux_.assign(faces.size(), Eigen::Vector4d::Zero());
   jump_.resize(faces.size());
+  jump_compact_.resize(faces.size());
+  jump_columns_.resize(faces.size());
   const SegmentRule& rule = gauss2_segment();
   for (std::size_t i = 0; i < faces.size(); ++i) {
     interface_of_edge_[faces[i].edge] = static_cast<int>(i);
@@ -47,6 +49,20 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
       flux_[i].middleRows<2>(2 * q) =
           ops_->traction(faces[i], rule.t[q], TractionKind::fan, penalty_->weights(i)) -
           penalty_->eps(i) * J;
+    }
+    // The jump's nonzero columns, in column order (a shape function is linear along an edge).
+    int found = 0;
+    for (Eigen::Index c = 0; c < m; ++c)
+      if (jump_[i].col(c).cwiseAbs().maxCoeff() > 0.0) {
+        if (found == 8)
+          throw NumericalError("interface coupling: interface " + std::to_string(i) +
+                               ": its jump involves more than the edge's 8 end DOFs");
+        jump_columns_[i][found] = static_cast<int>(c);
+        jump_compact_[i].col(found++) = jump_[i].col(c);
+      }
+    for (; found < 8; ++found) {  // an end DOF whose jump entries vanish: a zero column
+      jump_columns_[i][found] = 0;
+      jump_compact_[i].col(found).setZero();
     }
   }
 }
@@ -103,7 +119,11 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
     // K_F u = -sum_q w_q (J_q^T (phi_q + eps j_q) + Phi_q^T j_q), phi = Phi u, j = J u. Four
     // rows each way instead of the m x m block (exact: the two-point rule integrates the
     // blocks exactly).
-    const Eigen::Vector4d phi = flux_[i] * local, j = jump_[i] * local;
+    const std::array<int, 8>& cols = jump_columns_[i];
+    Eigen::Matrix<double, 8, 1> ends;
+    for (int c = 0; c < 8; ++c) ends[c] = local[cols[c]];
+    const Eigen::Vector4d phi = flux_[i] * local;
+    const Eigen::Vector4d j = jump_compact_[i] * ends;
     last_flux_[i] = phi;
     const double eps = penalty_->eps(i), length = space_->interfaces()[i].length;
     Eigen::Vector4d wj, wphi;
@@ -112,8 +132,9 @@ double InterfaceCoupling::add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& 
       wj.segment<2>(2 * q) = w * j.segment<2>(2 * q);
       wphi.segment<2>(2 * q) = w * (phi.segment<2>(2 * q) + eps * j.segment<2>(2 * q));
     }
-    force.noalias() = -(jump_[i].transpose() * wphi);
-    force.noalias() -= flux_[i].transpose() * wj;
+    force.noalias() = -(flux_[i].transpose() * wj);
+    const Eigen::Matrix<double, 8, 1> end_force = jump_compact_[i].transpose() * wphi;
+    for (int c = 0; c < 8; ++c) force[cols[c]] -= end_force[c];
     energy -= 0.5 * (wj.dot(phi) + wphi.dot(j));
     // Self-equilibrated: the last vertex takes minus the others' sum, so no momentum is made.
     const Eigen::Index last = m - 2;

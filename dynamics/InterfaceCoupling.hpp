@@ -81,6 +81,9 @@ class InterfaceCoupling {
   // Per interface, the flux (4 rows: x, y at Gauss point 0, then at point 1) and the jump [u]
   // (the same rows) on its DOFs; per interface whether it still couples; per edge its interface.
   std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> flux_, jump_;
+  // The jump's nonzero columns: only the edge's end vertices of each cell enter it (8 of m).
+  std::vector<Eigen::Matrix<double, 4, 8>> jump_compact_;
+  std::vector<std::array<int, 8>> jump_columns_;
   std::vector<char> active_;
   mutable std::vector<Eigen::Vector4d> last_flux_;  // per interface, at the last add_forces
   std::vector<int> interface_of_edge_;

@@ -34,7 +34,6 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
   interface_of_edge_.assign(table.mesh().num_edges(), -1);
   flux_.resize(faces.size());
   last_flux_.assign(faces.size(), Eigen::Vector4d::Zero());
-  jump_.resize(faces.size());
   jump_compact_.resize(faces.size());
   jump_columns_.resize(faces.size());
   const SegmentRule& rule = gauss2_segment();
@@ -42,10 +41,10 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
     interface_of_edge_[faces[i].edge] = static_cast<int>(i);
     const Eigen::Index m = static_cast<Eigen::Index>(dofs_[i].size());
     flux_[i].resize(4, m);
-    jump_[i].resize(4, m);
+    Eigen::Matrix<double, 4, Eigen::Dynamic> jump(4, m);
     for (int q = 0; q < 2; ++q) {
       const InterfaceOperator J = ops_->jump(faces[i], rule.t[q]);
-      jump_[i].middleRows<2>(2 * q) = J;
+      jump.middleRows<2>(2 * q) = J;
       flux_[i].middleRows<2>(2 * q) =
           ops_->traction(faces[i], rule.t[q], TractionKind::fan, penalty_->weights(i)) -
           penalty_->eps(i) * J;
@@ -53,12 +52,12 @@ InterfaceCoupling::InterfaceCoupling(const ElementTable& table,
     // The jump's nonzero columns, in column order (a shape function is linear along an edge).
     int found = 0;
     for (Eigen::Index c = 0; c < m; ++c)
-      if (jump_[i].col(c).cwiseAbs().maxCoeff() > 0.0) {
+      if (jump.col(c).cwiseAbs().maxCoeff() > 0.0) {
         if (found == 8)
           throw NumericalError("interface coupling: interface " + std::to_string(i) +
                                ": its jump involves more than the edge's 8 end DOFs");
         jump_columns_[i][found] = static_cast<int>(c);
-        jump_compact_[i].col(found++) = jump_[i].col(c);
+        jump_compact_[i].col(found++) = jump.col(c);
       }
     for (; found < 8; ++found) {  // an end DOF whose jump entries vanish: a zero column
       jump_columns_[i][found] = 0;
@@ -91,7 +90,10 @@ std::array<Eigen::Vector2d, 2> InterfaceCoupling::traction(int i, const Eigen::V
 }
 
 std::array<Eigen::Vector2d, 2> InterfaceCoupling::opening(int i, const Eigen::VectorXd& u) const {
-  const Eigen::Vector4d j = jump_[i] * local(i, u);
+  const Eigen::VectorXd x = local(i, u);
+  Eigen::Matrix<double, 8, 1> ends;
+  for (int c = 0; c < 8; ++c) ends[c] = x[jump_columns_[i][c]];
+  const Eigen::Vector4d j = jump_compact_[i] * ends;
   return {-j.head<2>(), -j.tail<2>()};
 }
 

@@ -78,10 +78,10 @@ class InterfaceCoupling {
   std::unique_ptr<InterfacePenalty> penalty_;
   std::vector<Eigen::MatrixXd> blocks_;
   std::vector<std::vector<int>> dofs_;
-  // Per interface, the flux (4 rows: x, y at Gauss point 0, then at point 1) and the jump [u]
-  // (the same rows) on its DOFs; per interface whether it still couples; per edge its interface.
-  std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> flux_, jump_;
-  // The jump's nonzero columns: only the edge's end vertices of each cell enter it (8 of m).
+  // Per interface, the flux (4 rows: x, y at Gauss point 0, then at point 1) on its DOFs, and
+  // the jump [u] (the same rows) on its nonzero columns only: the edge's end vertices of each
+  // cell (8 of m); per interface whether it still couples; per edge its interface.
+  std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> flux_;
   std::vector<Eigen::Matrix<double, 4, 8>> jump_compact_;
   std::vector<std::array<int, 8>> jump_columns_;
   std::vector<char> active_;

@@ -22,17 +22,21 @@ void add_friction(double mu, double k, double gn, double gt, FrictionState& fric
                   FacePointResponse& r) {
   if (mu == 0.0) return;
   if (gn >= 0.0) {  // open: no pressure, no friction; it closes again unstressed
+    friction.dissipated += 0.5 * friction.shear * (gt - friction.slip);  // the spring let go
     friction.slip = gt;
+    friction.shear = 0.0;
     return;
   }
   const double limit = mu * k * -gn;  // mu p
   const CoulombReturn c = coulomb_return(k * (gt - friction.slip), limit, k);
   r.traction[1] += c.shear;
+  const double previous = friction.shear;
+  friction.shear = c.shear;
   if (!c.slipping()) {
     r.tangent(1, 1) += k;
     return;
   }
-  friction.dissipated += c.dissipated;
+  friction.dissipated += 0.5 * (previous + c.shear) * c.slip;
   friction.slip += c.slip;
   r.tangent(1, 0) -= std::copysign(mu * k, c.shear);  // d(mu k (-gn)) / d gn, signed
 }

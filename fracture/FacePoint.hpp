@@ -13,10 +13,18 @@
 //     shear the face carries beyond the law's is at most mu p, p = k <g_n>_- the closure's
 //     pressure. It is regularized as explicit codes do (a return mapping, as in plasticity): a
 //     stick spring of the closure's stiffness k on the tangential opening less the slip so far;
-//     where its force passes mu p the face slips, the slip grows until the spring carries mu p,
-//     and mu p |slip increment| is dissipated. An open face carries no friction, and its slip
-//     follows the tangential opening, so that it closes again unstressed. The spring's energy
-//     tau^2 / (2 k) is stored; as p -> 0 it goes to 0 with the limit, so opening loses none.
+//     where its force passes mu p the face slips, the slip grows until the spring carries mu p.
+//     An open face carries no friction, and its slip follows the tangential opening, so that it
+//     closes again unstressed. The spring's energy tau^2 / (2 k) is stored.
+//     The dissipation is booked as the trapezoid of the shear over the slip increment,
+//     (tau_old + tau_new) / 2 * slip increment, not mu p_new |slip increment|: with tau = k (gt -
+//     slip) at both ends of an evaluation step, the trapezoid of the shear's work over the step's
+//     tangential opening is then exactly the change of tau^2 / (2 k) plus that, so the face's
+//     energy closes as tightly as the explicit step's works do however the pressure varies (the
+//     end-point form left (mu p_old - mu p_new) / 2 |slip increment| unbooked per step). Where
+//     the face opens, the spring's shear does tau_old (gt - slip_old) / 2 over the step and its
+//     energy is gone: booked as dissipated too. At constant pressure both forms are Coulomb's
+//     mu p |slip|.
 //
 // A driver supplies k (dg: the interface's eps; dynamics: a fraction of K0) and, for the law,
 // its own opening (dg measures it from the jump at insertion; dynamics from zero).
@@ -40,7 +48,8 @@ double closure_energy(double k, double gn);
 /// What friction remembers at a point: how far the face has slid, and the energy that took.
 struct FrictionState {
   double slip = 0.0;        // the tangential opening at which the stick spring is unstressed
-  double dissipated = 0.0;  // sum of mu p |slip increment|, per unit area
+  double shear = 0.0;       // the friction shear at the last evaluation (0 while open)
+  double dissipated = 0.0;  // sum of the shear's trapezoid over the slip increments, per unit area
 };
 
 /// Coulomb friction mu on the face at opening (gn, gt), the closure stiffness k also the stick

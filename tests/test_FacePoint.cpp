@@ -111,7 +111,10 @@ TEST(FacePoint, CoulombFrictionSticksSlipsAndReverses) {
   add_friction(mu, k, gn, gt, state, slip);
   EXPECT_NEAR(slip.traction[1], limit, 1e-15 * limit);
   EXPECT_NEAR(state.slip, gt - limit / k, 1e-15 * gt);
-  EXPECT_NEAR(state.dissipated, limit * 2 * limit / k, 1e-12 * limit * limit / k);
+  // The trapezoid of the shear (0.5 limit at the start of the step, limit at its end) over the
+  // slip 2 limit / k: what the trapezoid of the shear's work leaves beyond the spring's energy.
+  EXPECT_NEAR(state.dissipated, 0.5 * (0.5 * limit + limit) * 2 * limit / k,
+              1e-12 * limit * limit / k);
   EXPECT_NEAR(friction_stored_energy(mu, k, gn, gt, state), 0.5 * limit * limit / k,
               1e-12 * limit * limit / k);
   FacePointResponse back;  // reversed by limit / k: sticks, the spring unloaded to zero

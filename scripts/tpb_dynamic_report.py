@@ -4,10 +4,11 @@
     tpb_dynamic_report.py DYNAMIC_DIR STATIC_DIR [-o OUT]
 
 DYNAMIC_DIR is a `vorodg run` of a fragmentation scene of problem three-point-bend whose variant
-labels are <case>-<approach>-<speed> (e.g. case2-dg-v0.005); STATIC_DIR a `vorodg run` of the
-fracture scene with variants labelled <case> on the same meshes (same family, size, seed and
-realizations: the run ids match). For every dynamic run the load-CMOD curve is set against the
-quasi-static one of the same case and mesh, and tabulated:
+labels begin with the name of their case (e.g. case2-dg-v0.005: case2); STATIC_DIR a `vorodg run`
+of the fracture scene with variants labelled <case> on the same meshes (same family, size, seed
+and realizations: the run ids match). What each variant ran with (interfaces, rate.speed,
+rate.rise, damping) is read from its settings.json, never from the label. For every dynamic run
+the load-CMOD curve is set against the quasi-static one of the same case and mesh, and tabulated:
 
   peak, peak_qs      the largest load (N) of each curve; peak_error = peak / peak_qs - 1
   deviation          after the quasi-static peak, the largest |P(cmod) - P_qs(cmod)| over the
@@ -19,13 +20,13 @@ quasi-static one of the same case and mesh, and tabulated:
   balance            the run's worst balance with the law's energies (results.csv)
   seconds            the run's wall time
 
-Writes OUT/tpb-dynamic.csv, OUT/tpb-dynamic.md (medians over realizations) and one PNG per case
-and speed with every realization's curves over the quasi-static ones.
+Writes OUT/tpb-dynamic.csv, OUT/tpb-dynamic.md (medians over realizations) and one PNG per case,
+speed, rise and damping with every realization's curves over the quasi-static ones.
 """
 import argparse
 import csv
+import json
 import os
-import re
 import sys
 
 import numpy as np
@@ -42,7 +43,12 @@ def results(path):
         return {r["id"]: r for r in csv.DictReader(f)}
 
 
-LABEL = re.compile(r"^(?P<case>[^-]+)-(?P<approach>[^-]+)-v(?P<speed>[0-9.e+-]+)$")
+def settings(folder):
+    """What a variant ran with: (interfaces, speed, rise, damping) from its settings.json."""
+    with open(os.path.join(folder, "settings.json")) as f:
+        s = json.load(f)
+    return dict(approach=s["interfaces"], speed=float(s["rate.speed"]),
+                rise=float(s["rate.rise"]), damping=float(s["damping"]))
 
 
 def compare(dyn, qs):
@@ -68,16 +74,18 @@ def main():
     os.makedirs(out, exist_ok=True)
     rows = []
     for variant in sorted(os.listdir(a.dynamic)):
-        m = LABEL.match(variant)
-        if not m or not os.path.exists(os.path.join(a.dynamic, variant, "results.csv")):
+        folder = os.path.join(a.dynamic, variant)
+        if not os.path.exists(os.path.join(folder, "results.csv")):
             continue
-        static = os.path.join(a.static, m["case"])
+        case = variant.split("-")[0]
+        static = os.path.join(a.static, case)
         if not os.path.isdir(static):
-            sys.exit(f"{static}: no quasi-static runs for case {m['case']}")
-        for run_id, r in results(os.path.join(a.dynamic, variant, "results.csv")).items():
-            dyn = read_csv(os.path.join(a.dynamic, variant, "curves", run_id + ".csv"))
+            sys.exit(f"{static}: no quasi-static runs for case {case}")
+        ran = settings(folder)
+        for run_id, r in results(os.path.join(folder, "results.csv")).items():
+            dyn = read_csv(os.path.join(folder, "curves", run_id + ".csv"))
             qs = read_csv(os.path.join(static, "curves", run_id + ".csv"))
-            row = dict(case=m["case"], approach=m["approach"], speed=float(m["speed"]), run=run_id)
+            row = dict(case=case, run=run_id, **ran)
             row.update(compare(dyn, qs))
             work = dyn["external_work"] + dyn["reaction_work"]
             at = dyn["load"].argmax()
@@ -89,8 +97,8 @@ def main():
             row["_curves"] = (dyn, qs)
             rows.append(row)
     if not rows:
-        sys.exit(f"{a.dynamic}: no variants labelled <case>-<approach>-v<speed>")
-    columns = ["case", "approach", "speed", "run", "peak", "peak_qs", "peak_error", "deviation",
+        sys.exit(f"{a.dynamic}: no variants with results.csv")
+    columns = ["case", "approach", "speed", "rise", "damping", "run", "peak", "peak_qs", "peak_error", "deviation",
                "oscillation", "kinetic_at_peak", "dissipated", "balance", "steps", "seconds"]
     tmp = os.path.join(out, "tpb-dynamic.csv.tmp")
     with open(tmp, "w") as f:
@@ -104,14 +112,16 @@ def main():
 
 
 def write_table(rows, out):
-    keys = sorted({(r["case"], r["speed"], r["approach"]) for r in rows})
-    lines = ["| case | speed (m/s) | approach | runs | peak (N) | QS peak (N) | peak error | "
-             "deviation | oscillation | kinetic at peak | dissipated / work | worst balance | "
-             "steps | seconds |", "|" + "---|" * 14]
-    for case, speed, approach in keys:
-        g = [r for r in rows if (r["case"], r["speed"], r["approach"]) == (case, speed, approach)]
+    key = lambda r: (r["case"], r["speed"], r["rise"], r["damping"], r["approach"])
+    lines = ["| case | speed (m/s) | rise (s) | damping (1/s) | approach | runs | peak (N) | "
+             "QS peak (N) | peak error | deviation | oscillation | kinetic at peak | "
+             "dissipated / work | worst balance | steps | seconds |", "|" + "---|" * 16]
+    for k in sorted({key(r) for r in rows}):
+        g = [r for r in rows if key(r) == k]
+        case, speed, rise, damping, approach = k
         med = lambda k: float(np.median([r[k] for r in g]))
-        lines.append(f"| {case} | {speed:g} | {approach} | {len(g)} | {med('peak'):.1f} | "
+        lines.append(f"| {case} | {speed:g} | {rise:g} | {damping:g} | {approach} | {len(g)} | "
+                     f"{med('peak'):.1f} | "
                      f"{med('peak_qs'):.1f} | {med('peak_error'):+.3f} | {med('deviation'):.3f} | "
                      f"{med('oscillation'):.3f} | {med('kinetic_at_peak'):.4f} | "
                      f"{med('dissipated'):.3f} | {max(r['balance'] for r in g):.1e} | "
@@ -132,8 +142,9 @@ def plot(rows, out):
     import matplotlib.pyplot as plt
     colours = {"insertion": "tab:red", "dg": "tab:blue"}
     order = {"insertion": 0, "dg": 1}
-    for case, speed in sorted({(r["case"], r["speed"]) for r in rows}):
-        group = sorted((r for r in rows if (r["case"], r["speed"]) == (case, speed)),
+    key = lambda r: (r["case"], r["speed"], r["rise"], r["damping"])
+    for case, speed, rise, damping in sorted({key(r) for r in rows}):
+        group = sorted((r for r in rows if key(r) == (case, speed, rise, damping)),
                        key=lambda r: order.get(r["approach"], 2))
         fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
         for ax in axes:
@@ -153,10 +164,12 @@ def plot(rows, out):
             ax.legend()
         peak = max(r["peak_qs"] for r in group)
         axes[1].set_ylim(-0.25 * peak, 1.5 * peak)
-        axes[0].set_title(f"{case}, load point at {speed:g} m/s")
+        axes[0].set_title(f"{case}, load point at {speed:g} m/s, rise {1e3 * rise:g} ms"
+                          + (f", damping {damping:g} /s" if damping > 0 else ""))
         axes[1].set_title("the quasi-static curve's range")
         fig.tight_layout()
-        path = os.path.join(out, f"tpb-dynamic-{case}-v{speed:g}.png")
+        name = f"tpb-dynamic-{case}-v{speed:g}-rise{1e3 * rise:g}ms"
+        path = os.path.join(out, name + (f"-damping{damping:g}" if damping > 0 else "") + ".png")
         fig.savefig(path + ".tmp.png", dpi=110)
         os.replace(path + ".tmp.png", path)
         plt.close(fig)

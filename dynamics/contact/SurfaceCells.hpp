@@ -55,6 +55,9 @@ class SurfaceCells {
   bool neighbours(int a, int b) const;
 
   const PolygonMesh& mesh() const { return *mesh_; }
+  /// Changes whenever the set of cells or of released edges does (both only grow): what a
+  /// cached candidate list depends on.
+  long revision() const { return static_cast<long>(cells_.size()) + num_released_; }
 
  private:
   void check_cell(int cell) const;

@@ -36,7 +36,7 @@ Box box_of(std::span<const Point> loop, int cell) {
 
 SurfaceContact::SurfaceContact(const PenaltyContact& law, double grid_spacing,
                                const ContactFriction& friction)
-    : law_(law), friction_(friction), grid_(grid_spacing) {}
+    : law_(law), friction_(friction), candidates_(grid_spacing) {}
 
 const std::vector<IndexPair>& SurfaceContact::find_pairs(const SurfaceCells& surface,
                                                          std::span<const Point> position) {
@@ -49,14 +49,10 @@ const std::vector<IndexPair>& SurfaceContact::find_pairs(const SurfaceCells& sur
   boxes_.resize(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i)
     boxes_[i] = box_of(loop_of(mesh, position, cells[i]), cells[i]);
-  surface_pairs_.clear();
+  surface_pairs_ = candidates_.overlapping(surface, position, boxes_);
   cell_pairs_.clear();
-  for (const IndexPair& ij : grid_.find(boxes_)) {
-    const int a = cells[ij.first], b = cells[ij.second];
-    if (surface.neighbours(a, b)) continue;
-    surface_pairs_.push_back(ij);
-    cell_pairs_.push_back({a, b});
-  }
+  for (const IndexPair& ij : surface_pairs_)
+    cell_pairs_.push_back({cells[ij.first], cells[ij.second]});
   return cell_pairs_;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Contact between the surface cells of one mesh (all bodies and fragments live in it), one step
-// at a time: the current bounding box of every surface cell, the grid search for overlapping
-// boxes, the neighbour filter (cells that share a mesh vertex are never tested, SurfaceCells),
-// both passes of vertex-in-polygon (A's vertices in B, then B's in A) and the penalty law.
+// at a time: the current bounding box of every surface cell, the pairs whose boxes overlap and
+// that are not neighbours (ContactCandidates: a grid search with a skin, kept while nothing has
+// moved by the skin; cells that share a mesh vertex are never tested, SurfaceCells), both passes of
+// vertex-in-polygon (A's vertices in B, then B's in A) and the penalty law.
 //
 // A node seen by several of its pairs counts once: a body's vertex is a pair of each cell around
 // it, and when it is inside a cell B, every surface cell of its that is a candidate with B finds
@@ -36,8 +37,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "dynamics/contact/ContactCandidates.hpp"
 #include "dynamics/contact/ContactFriction.hpp"
-#include "dynamics/contact/ContactGrid.hpp"
 #include "dynamics/contact/ContactReport.hpp"
 #include "dynamics/contact/PairState.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
@@ -61,15 +62,15 @@ class SurfaceContact {
                            std::span<Point> force, std::span<Point> velocity_force = {});
 
   /// Only the search: the cell pairs (mesh cell ids, the first earlier in the surface order)
-  /// whose current boxes overlap and that are not neighbours, each once, in a deterministic
-  /// order. These are what add_forces tests.
+  /// whose current boxes overlap and that are not neighbours, each once, in a fixed order (by
+  /// place in the surface order, first then second). These are what add_forces tests.
   const std::vector<IndexPair>& find_pairs(const SurfaceCells& surface,
                                            std::span<const Point> position);
   const std::vector<IndexPair>& cell_pairs() const { return cell_pairs_; }
 
   const PenaltyContact& law() const { return law_; }
   const ContactFriction& friction() const { return friction_; }
-  const ContactGrid& grid() const { return grid_; }
+  const ContactCandidates& candidates() const { return candidates_; }
 
  private:
   /// Pushes the vertices of surface cell i out of surface cell j (indices in surface order).
@@ -99,7 +100,7 @@ class SurfaceContact {
 
   PenaltyContact law_;
   ContactFriction friction_;
-  ContactGrid grid_;
+  ContactCandidates candidates_;
   std::vector<Box> boxes_;                   // per surface cell, in surface order
   std::vector<IndexPair> surface_pairs_;     // the same pairs, by index in surface order
   std::vector<IndexPair> cell_pairs_;        // mesh cell ids

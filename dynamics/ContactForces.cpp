@@ -68,18 +68,47 @@ void ContactForces::gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd
     throw InputError("contact: " + std::to_string(u.size()) + " displacements and " +
                      std::to_string(v.size()) + " velocities: expected " +
                      std::to_string(num_dofs_) + " each");
-  for (std::size_t p = 0; p < reference_.size(); ++p) {
-    const int n = node_[p];
-    position_[p] = reference_[p] + Point(u[2 * n], u[2 * n + 1]);
-    velocity_[p] = Point(v[2 * n], v[2 * n + 1]);
+  // Only the surface cells' pairs: no other pair is read (the set only grows, so a pair read
+  // once is read at every later step).
+  const auto& o = mesh_.offsets();
+  for (int c : surface_.cells())
+    for (int p = o[c]; p < o[c + 1]; ++p) {
+      const int n = node_[p];
+      position_[p] = reference_[p] + Point(u[2 * n], u[2 * n + 1]);
+      velocity_[p] = Point(v[2 * n], v[2 * n + 1]);
+    }
+}
+
+void ContactForces::clear_forces() {
+  for (int p : support_) {
+    force_[p] = Point::Zero();
+    plane_pair_force_[p] = Point::Zero();
+    if (!velocity_force_.empty()) velocity_force_[p] = Point::Zero();
   }
+}
+
+void ContactForces::collect_support() {
+  // Surface pairs in surface order, each cell's in CSR order: a fixed order for every sum below.
+  const auto& o = mesh_.offsets();
+  const bool planes = !planes_.empty(), velocity = !velocity_force_.empty();
+  support_.clear();
+  for (int c : surface_.cells())
+    for (int p = o[c]; p < o[c + 1]; ++p) {
+      if (planes) {
+        plane_force_ += plane_pair_force_[p];
+        force_[p] += plane_pair_force_[p];
+      }
+      const bool loaded = !force_[p].isZero(0.0) || (planes && !plane_pair_force_[p].isZero(0.0)) ||
+                          (velocity && !velocity_force_[p].isZero(0.0));
+      if (loaded) support_.push_back(p);
+    }
 }
 
 void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double dt,
                              Eigen::VectorXd& f) {
   gather_state(u, v);
-  std::fill(force_.begin(), force_.end(), Point::Zero());
-  std::fill(velocity_force_.begin(), velocity_force_.end(), Point::Zero());
+  evaluated_ = true;
+  clear_forces();
   const PairState state{position_, velocity_, mass_, node_, dt, repeat_};
   repeat_ = false;
   surface_report_ =
@@ -87,28 +116,26 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
   // The planes into their own buffer first: their net force is the wall's reaction, reported.
   plane_report_ = ContactReport{};
   plane_force_.setZero();
-  if (!planes_.empty()) {
-    std::fill(plane_pair_force_.begin(), plane_pair_force_.end(), Point::Zero());
-    for (RigidPlane& plane : planes_)
-      plane_report_ += plane.add_forces(surface_, state, plane_pair_force_, velocity_force_);
-    for (std::size_t p = 0; p < force_.size(); ++p) {
-      plane_force_ += plane_pair_force_[p];
-      force_[p] += plane_pair_force_[p];
-    }
-  }
+  for (RigidPlane& plane : planes_)
+    plane_report_ += plane.add_forces(surface_, state, plane_pair_force_, velocity_force_);
+  collect_support();
   friction_dissipated_ += surface_report_.friction_dissipated + plane_report_.friction_dissipated;
-  work_.add(position_, force_);
-  if (!velocity_force_.empty()) velocity_work_.add(position_, velocity_force_);
+  work_.add(force_, support_, velocity_, dt);
+  if (!velocity_force_.empty()) velocity_work_.add(velocity_force_, support_, velocity_, dt);
   f.setZero(num_dofs_);
-  // Pair by pair in CSR order: a fixed order, so the nodal sums are reproducible.
-  for (std::size_t p = 0; p < force_.size(); ++p) {
+  for (int p : support_) {
     f[2 * node_[p]] += force_[p].x();
     f[2 * node_[p] + 1] += force_[p].y();
   }
 }
 
 bool ContactForces::overlapping(int a, int b) const {
-  if (position_.empty()) return false;
+  for (int c : {a, b})
+    if (!surface_.contains(c))
+      throw InputError("contact: overlapping(" + std::to_string(a) + ", " + std::to_string(b) +
+                       "): cell " + std::to_string(c) +
+                       " is not a surface cell, whose positions are not gathered");
+  if (!evaluated_) return false;
   const auto& o = mesh_.offsets();
   const std::span<const Point> pa(position_.data() + o[a], position_.data() + o[a + 1]);
   const std::span<const Point> pb(position_.data() + o[b], position_.data() + o[b + 1]);

@@ -4,12 +4,13 @@
 // one way: dynamics links contact, contact never includes dynamics/).
 //
 // Each evaluation reads the node displacements and velocities as pair positions x = X + u and
-// pair velocities, lets SurfaceContact (surface cells against surface cells, every body of the
-// mesh) and the rigid planes add their forces per pair, sums the pairs of each node into the
-// nodal force, and books the work of those forces with ContactWork: the trapezoid
-// (f_n + f_n+1) / 2 . (x_n+1 - x_n), which with central differences is exactly the change the
-// contact forces make in the half-step kinetic energy. So StepRecord's balance closes with
-// contact to the integrator's round-off, whatever the penalty law does.
+// pair velocities (of the surface cells' pairs: no other pair is ever touched), lets SurfaceContact
+// (surface cells against surface cells, every body of the mesh) and the rigid planes add their
+// forces per pair, sums the pairs of each node into the nodal force, and books the work of those
+// forces with ContactWork: the trapezoid (f_n + f_n+1) / 2 . (x_n+1 - x_n), which with central
+// differences is exactly the change the contact forces make in the half-step kinetic energy. So
+// StepRecord's balance closes with contact to the integrator's round-off, whatever the penalty law
+// does.
 //
 // Friction (ContactFriction) follows the contact's tangential motion from one evaluation to the
 // next; an evaluation repeated at the same positions (after restart) sees none.
@@ -90,11 +91,15 @@ class ContactForces {
   std::span<const Point> pair_forces() const { return force_; }
   /// Whether a vertex of cell a lies inside cell b or one of b inside a, at the positions of
   /// the last evaluation: what surface contact would push apart (PolygonPenetration's test).
-  /// False before the first evaluation.
+  /// False before the first evaluation. Throws InputError unless both are surface cells.
   bool overlapping(int a, int b) const;
 
  private:
   void gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
+  /// Zeroes the pair forces of the last evaluation (the other pairs are zero already).
+  void clear_forces();
+  /// Adds the planes' pair forces in, sums their net force and lists the pairs with a force.
+  void collect_support();
   /// Node i's number and mass on each of its pairs.
   void bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses, int i);
 
@@ -116,6 +121,8 @@ class ContactForces {
   std::vector<int> node_;         // node per pair, of the bound map
   std::vector<double> mass_;      // node mass per pair
   std::vector<Point> position_, velocity_, force_, plane_pair_force_;
+  std::vector<int> support_;  // the pairs with a force at the last evaluation
+  bool evaluated_ = false;
   int num_dofs_ = -1;
   ContactReport surface_report_, plane_report_;
   Point plane_force_ = Point::Zero();

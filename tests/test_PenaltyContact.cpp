@@ -198,10 +198,11 @@ Bounce bounce(double alpha, double zeta, double phase, bool plastic = false) {
   Bounce out;
   const double e0 = kinetic();
   ContactWork work;
+  const std::vector<int> every_pair{0, 1, 2, 3};
   for (int step = 0; step < 2000 && x[0].y() < 0.02; ++step) {
     std::fill(f.begin(), f.end(), Point::Zero());
     const auto report = floor.add_forces(surface, state, f);
-    work.add(x, f);
+    work.add(f, every_pair, v, dt);  // v: what moved x to here
     out.dissipated += report.dissipation_power * dt;
     out.max_depth = std::max(out.max_depth, report.max_depth / (v0 * dt));
     for (int i = 0; i < 4; ++i) {

@@ -6,18 +6,24 @@
 
 namespace vorodg {
 
-void ContactWork::add(std::span<const Point> x, std::span<const Point> f) {
-  if (x.size() != f.size() || (started_ && x.size() != x_.size()))
-    throw InputError("contact work: " + std::to_string(x.size()) + " positions and " +
-                     std::to_string(f.size()) + " forces: expected " +
-                     std::to_string(started_ ? x_.size() : x.size()) + " of each");
+void ContactWork::add(std::span<const Point> f, std::span<const int> support,
+                      std::span<const Point> velocity, double dt) {
+  if (f.size() != velocity.size())
+    throw InputError("contact work: " + std::to_string(f.size()) + " forces and " +
+                     std::to_string(velocity.size()) +
+                     " velocities: expected one of each per pair");
+  for (int p : support)
+    if (p < 0 || p >= static_cast<int>(f.size()))
+      throw InputError("contact work: pair " + std::to_string(p) + " out of range [0, " +
+                       std::to_string(f.size()) + ")");
   if (started_) {
-    double step = 0.0;  // in pair order: the same sum on every run
-    for (std::size_t p = 0; p < x.size(); ++p) step += 0.5 * (f_[p] + f[p]).dot(x[p] - x_[p]);
+    double step = 0.0;  // in a fixed order: the same sum on every run
+    for (const auto& [p, old] : last_) step += 0.5 * dt * old.dot(velocity[p]);
+    for (int p : support) step += 0.5 * dt * f[p].dot(velocity[p]);
     work_ += step;
   }
-  x_.assign(x.begin(), x.end());
-  f_.assign(f.begin(), f.end());
+  last_.clear();
+  for (int p : support) last_.emplace_back(p, f[p]);
   started_ = true;
 }
 

@@ -60,33 +60,41 @@ double BulkViscosity::pressure(int c, double rate) const {
 }
 
 void BulkViscosity::cell_force(int c, const int* node, const double* v, const double* u) {
-  // Velocities relative to vertex 0 (sum_k b_k = 0, so the same rate): a translating cell has
-  // exactly zero rate, whatever its speed.
-  thread_local std::vector<double> w, x;
+  // Velocities (and displacements) relative to vertex 0 (sum_k b_k = 0, so the same gradient): a
+  // translating cell has exactly zero rate, whatever its speed. One pass over the vertices, both
+  // gradients at once, straight from the node arrays: the gathered copies in per-thread buffers
+  // were most of this term's cost.
   const int n = gradient_.cell_size(c);
-  auto relative = [&](const double* field, std::vector<double>& out) {
-    out.resize(2 * n);
-    const double ox = field[2 * node[0]], oy = field[2 * node[0] + 1];
+  const double* b = gradient_.weights(c);
+  const double vx0 = v[2 * node[0]], vy0 = v[2 * node[0] + 1];
+  Eigen::Matrix2d gv = Eigen::Matrix2d::Zero(), gu = Eigen::Matrix2d::Zero();
+  if (u) {
+    const double ux0 = u[2 * node[0]], uy0 = u[2 * node[0] + 1];
     for (int k = 0; k < n; ++k) {
-      out[2 * k] = field[2 * node[k]] - ox;
-      out[2 * k + 1] = field[2 * node[k] + 1] - oy;
+      const double wx = v[2 * node[k]] - vx0, wy = v[2 * node[k] + 1] - vy0;
+      const double xx = u[2 * node[k]] - ux0, xy = u[2 * node[k] + 1] - uy0;
+      const double bx = b[2 * k], by = b[2 * k + 1];
+      gv(0, 0) += wx * bx, gv(0, 1) += wx * by, gv(1, 0) += wy * bx, gv(1, 1) += wy * by;
+      gu(0, 0) += xx * bx, gu(0, 1) += xx * by, gu(1, 0) += xy * bx, gu(1, 1) += xy * by;
     }
-  };
-  relative(v, w);
+  } else {
+    for (int k = 0; k < n; ++k) {
+      const double wx = v[2 * node[k]] - vx0, wy = v[2 * node[k] + 1] - vy0;
+      gv(0, 0) += wx * b[2 * k], gv(1, 1) += wy * b[2 * k + 1];
+    }
+  }
   // The cofactor of F maps b_k to the current configuration's weights (the identity at rest).
   Eigen::Matrix2d cofactor = Eigen::Matrix2d::Identity();
   double rate = 0.0;
   if (u) {
-    relative(u, x);
-    const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + gradient_.gradient(c, x.data());
+    const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + gu;
     cofactor << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
-    rate = (cofactor.cwiseProduct(gradient_.gradient(c, w.data()))).sum() / F.determinant();
+    rate = cofactor.cwiseProduct(gv).sum() / F.determinant();
   } else {
-    rate = gradient_.divergence(c, w.data());
+    rate = gv(0, 0) + gv(1, 1);
   }
   rate_[c] = rate;
   const double qa = pressure(c, rate) * gradient_.area(c);
-  const double* b = gradient_.weights(c);
   double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
   // f_k = -q A cof(F) b_k; the last vertex takes minus the sum of the others, so that round-off
   // moves no momentum (as InternalForce does).

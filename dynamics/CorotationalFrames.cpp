@@ -24,11 +24,16 @@ double CorotationalFrames::Turn::angle() const {
 
 const double* CorotationalFrames::relative(int c, const SplitDofMap& dofs,
                                            const Eigen::VectorXd& u) const {
-  thread_local Eigen::VectorXd w;  // the check runs after every step: no allocation per cell
+  // The check runs after every step: no allocation per cell. A std::vector keeps its capacity
+  // when resized; an Eigen vector reallocates at every change of size, so at every other cell.
+  thread_local std::vector<double> w;
   const int n = cell_size(c);
   w.resize(2 * n);
-  const Eigen::Vector2d origin = u.segment<2>(2 * dofs.node(c, 0));
-  for (int k = 0; k < n; ++k) w.segment<2>(2 * k) = u.segment<2>(2 * dofs.node(c, k)) - origin;
+  const double ox = u[2 * dofs.node(c, 0)], oy = u[2 * dofs.node(c, 0) + 1];
+  for (int k = 0; k < n; ++k) {
+    w[2 * k] = u[2 * dofs.node(c, k)] - ox;
+    w[2 * k + 1] = u[2 * dofs.node(c, k) + 1] - oy;
+  }
   return w.data();
 }
 
@@ -44,25 +49,6 @@ double CorotationalFrames::largest_mean_rotation(const SplitDofMap& dofs,
   for (int c = 0; c + 1 < static_cast<int>(offsets_.size()); ++c)
     largest = std::max(largest, std::abs(mean_rotation(c, dofs, u)));
   return largest;
-}
-
-CorotationalFrames::Turn CorotationalFrames::local_displacements(int c, const double* w,
-                                                                 double* local) const {
-  const int first = offsets_[c], n = offsets_[c + 1] - first;
-  const double* p = p_.data() + 2 * std::size_t(first);
-  const Eigen::Matrix2d g = displacement_gradient(c, w);
-  Turn t;
-  t.trace = 2.0 + g(0, 0) + g(1, 1);
-  t.skew = g(1, 0) - g(0, 1);
-  const double r = std::hypot(t.trace, t.skew);
-  t.cos = t.trace / r, t.sin = t.skew / r;
-  // u^_k = R^T q_k - p_k, written so that no rotation leaves u^ = w exactly.
-  for (int k = 0; k < n; ++k) {
-    const double qx = p[2 * k] + w[2 * k], qy = p[2 * k + 1] + w[2 * k + 1];
-    local[2 * k] = w[2 * k] + ((t.cos - 1.0) * qx + t.sin * qy);
-    local[2 * k + 1] = w[2 * k + 1] + (-t.sin * qx + (t.cos - 1.0) * qy);
-  }
-  return t;
 }
 
 CorotationalFrames::Turn CorotationalFrames::local_displacements(int c, const SplitDofMap& dofs,

@@ -20,6 +20,7 @@
 // its shape; for small rotations f = K u to first order. The force is not linear in u, so the
 // integrator's energy identity closes to O(dt^2), not to round-off.
 #include <Eigen/Core>
+#include <cmath>
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
@@ -41,7 +42,28 @@ class CorotationalFrames {
   };
   /// Cell c's turn from its vertices' displacements relative to vertex 0 (w[2k], w[2k+1];
   /// w_0 = 0), and its local displacements u^ (2n, written to `local`).
-  Turn local_displacements(int c, const double* w, double* local) const;
+  Turn local_displacements(int c, const double* w, double* local) const {
+    return local_displacements(c, cell_size(c), w, local);
+  }
+  /// The same for a caller that knows n (inline: the force's fixed-size loops unroll it).
+  Turn local_displacements(int c, int n, const double* w, double* local) const {
+    const double* p = p_.data() + 2 * std::size_t(offsets_[c]);
+    const Eigen::Matrix2d g = gradient_.gradient(c, n, w);
+    Turn t;
+    t.trace = 2.0 + g(0, 0) + g(1, 1);
+    t.skew = g(1, 0) - g(0, 1);
+    // sqrt, not hypot: the trace is near 2, so nothing over- or underflows, and libm's hypot
+    // (careful scaling) was 4 % of a column run.
+    const double inverse = 1.0 / std::sqrt(t.trace * t.trace + t.skew * t.skew);
+    t.cos = t.trace * inverse, t.sin = t.skew * inverse;
+    // u^_k = R^T q_k - p_k, written so that no rotation leaves u^ = w exactly.
+    for (int k = 0; k < n; ++k) {
+      const double qx = p[2 * k] + w[2 * k], qy = p[2 * k + 1] + w[2 * k + 1];
+      local[2 * k] = w[2 * k] + ((t.cos - 1.0) * qx + t.sin * qy);
+      local[2 * k + 1] = w[2 * k + 1] + (-t.sin * qx + (t.cos - 1.0) * qy);
+    }
+    return t;
+  }
   /// G = F - I = sum_k w_k (x) b_k of cell c from displacements relative to vertex 0 (w_0 = 0;
   /// absolute displacements give the same, since sum_k b_k = 0).
   Eigen::Matrix2d displacement_gradient(int c, const double* w) const {
@@ -59,6 +81,12 @@ class CorotationalFrames {
   /// The same from node displacements u of `dofs` (`local` resized to 2n).
   Turn local_displacements(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u,
                            Eigen::VectorXd& local) const;
+  /// The same into `local`, which has room for 2n: for loops over cells of varying size, where
+  /// resizing one vector per cell allocated at every change of size.
+  Turn local_displacements(int c, const SplitDofMap& dofs, const Eigen::VectorXd& u,
+                           double* local) const {
+    return local_displacements(c, relative(c, dofs, u), local);
+  }
   /// A Voigt stress (xx, yy, xy) of a cell's turned frame in the global one: R s R^T.
   static Eigen::Vector3d global_stress(const Turn& turn, const Eigen::Vector3d& s);
   /// Cell c's global force (2n, written to `global`) from its turn, its local displacements and

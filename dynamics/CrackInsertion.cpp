@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "core/util/Errors.hpp"
 #include "fracture/FaceInsertion.hpp"
@@ -38,8 +39,13 @@ void CrackInsertion::vary(const MaterialVariation& variation) {
 }
 
 Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
-                                               int threads) const {
+                                               int threads, std::span<const double> local) const {
   const int cells = mesh_.num_cells();
+  const std::size_t pairs = 2 * std::size_t(mesh_.offsets().back());
+  if (!local.empty() && local.size() != pairs)
+    throw InputError("crack insertion: " + std::to_string(local.size()) +
+                     " local displacements: expected 2 per (cell, vertex) pair, " +
+                     std::to_string(pairs));
   Eigen::Matrix3Xd sigma(3, cells);
 #pragma omp parallel for schedule(static, 256) num_threads(std::max(threads, 1))
   for (int c = 0; c < cells; ++c) {
@@ -47,10 +53,16 @@ Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Ei
     Eigen::Vector3d s = Eigen::Vector3d::Zero();
     if (frames_) {
       // In the cell's turning frame, where the edges keep their reference normals.
-      thread_local Eigen::VectorXd local;
-      frames_->local_displacements(c, dofs, u, local);
+      thread_local std::vector<double> turned;
+      const double* l = local.data() + 2 * std::size_t(mesh_.offsets()[c]);
+      if (local.empty()) {
+        turned.resize(2 * mesh_.cell_size(c));  // within its capacity after the largest cell
+        frames_->local_displacements(c, dofs, u, turned.data());
+        l = turned.data();
+      }
       for (int k = 0; k < mesh_.cell_size(c); ++k, S += 6)
-        s += Eigen::Map<const Eigen::Matrix<double, 3, 2>>(S) * local.segment<2>(2 * k);
+        s += Eigen::Map<const Eigen::Matrix<double, 3, 2>>(S) *
+             Eigen::Map<const Eigen::Vector2d>(l + 2 * k);
     } else {
       for (int k = 0; k < mesh_.cell_size(c); ++k, S += 6) {
         const int node = dofs.node(c, k);
@@ -69,11 +81,10 @@ Eigen::Vector2d CrackInsertion::traction(const Eigen::Matrix3Xd& stresses, int e
   return face_traction(s, Eigen::Vector2d(t.y(), -t.x()), t);
 }
 
-std::vector<CrackInsertion::Failure> CrackInsertion::failing_edges(const SplitDofMap& dofs,
-                                                                   const Eigen::VectorXd& u,
-                                                                   const std::vector<char>& cracked,
-                                                                   int threads) const {
-  const Eigen::Matrix3Xd sigma = cell_stresses(dofs, u, threads);
+std::vector<CrackInsertion::Failure> CrackInsertion::failing_edges(
+    const SplitDofMap& dofs, const Eigen::VectorXd& u, const std::vector<char>& cracked,
+    int threads, std::span<const double> local) const {
+  const Eigen::Matrix3Xd sigma = cell_stresses(dofs, u, threads, local);
   std::vector<Failure> failing;
   for (int e = 0; e < mesh_.num_edges(); ++e) {
     if (!eligible_[e] || cracked[e] || mesh_.edge(e).cell1 < 0) continue;

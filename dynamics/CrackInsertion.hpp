@@ -12,6 +12,7 @@
 // takes the mask. Cell stresses are computed in parallel into their own slots and edges are
 // checked in order, so the list of failing edges does not depend on the thread count.
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
@@ -40,9 +41,11 @@ class CrackInsertion {
   void turn_with(const CorotationalFrames* frames) { frames_ = frames; }
 
   /// Mean stress (Voigt xx, yy, xy) of every cell at node displacements u of `dofs` (in the
-  /// cell's turning frame under turn_with).
-  Eigen::Matrix3Xd cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
-                                 int threads) const;
+  /// cell's turning frame under turn_with). Under turning frames, `local` may hold every cell's
+  /// local displacements at u (InternalForce::local_displacements, 2 per pair), which are then
+  /// read instead of turning each cell again; the stresses are the same to the bit.
+  Eigen::Matrix3Xd cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u, int threads,
+                                 std::span<const double> local = {}) const;
   /// The traction (normal, shear) on interior edge e from the given cell stresses, in the frame
   /// of CohesiveForces (normal out of the edge's cell0, tangent v0 -> v1).
   Eigen::Vector2d traction(const Eigen::Matrix3Xd& stresses, int e) const;
@@ -53,7 +56,8 @@ class CrackInsertion {
   /// The eligible interior edges not yet `cracked` whose criterion utilization is at least 1,
   /// ascending, with their tractions.
   std::vector<Failure> failing_edges(const SplitDofMap& dofs, const Eigen::VectorXd& u,
-                                     const std::vector<char>& cracked, int threads) const;
+                                     const std::vector<char>& cracked, int threads,
+                                     std::span<const double> local = {}) const;
 
  private:
   const PolygonMesh& mesh_;

@@ -57,16 +57,17 @@ double cell_force_any(int n, const double* K, const int* node, const double* u, 
 /// derivative; returns 1/2 u^.K u^. Both forces are self-equilibrated as above.
 template <int N>
 double corotational_force(const CorotationalFrames& frames, int c, const double* K, const int* node,
-                          const double* u, double* f) {
+                          const double* u, double* f, double* local_out) {
   constexpr int M = N > 0 ? 2 * N : Eigen::Dynamic;
   const int n = N > 0 ? N : frames.cell_size(c);
-  Eigen::Matrix<double, M, 1> w(2 * n), local(2 * n), f_local(2 * n);
+  Eigen::Matrix<double, M, 1> w(2 * n), f_local(2 * n);
+  Eigen::Map<Eigen::Matrix<double, M, 1>> local(local_out, 2 * n);
   const double rx = u[2 * node[0]], ry = u[2 * node[0] + 1];
   for (int k = 0; k < n; ++k) {
     w[2 * k] = u[2 * node[k]] - rx;
     w[2 * k + 1] = u[2 * node[k] + 1] - ry;
   }
-  const CorotationalFrames::Turn turn = frames.local_displacements(c, w.data(), local.data());
+  const CorotationalFrames::Turn turn = frames.local_displacements(c, n, w.data(), local.data());
   f_local.noalias() = Eigen::Map<const Eigen::Matrix<double, M, M>>(K, 2 * n, 2 * n) * local;
   equilibrate(n, f_local.data());
   frames.global_force(c, turn, local.data(), f_local.data(), f);
@@ -78,7 +79,10 @@ double corotational_force(const CorotationalFrames& frames, int c, const double*
 
 InternalForce::InternalForce(const PolygonMesh& mesh, CellMatrices matrices, bool corotational)
     : offsets_(mesh.offsets()), K_(std::move(matrices)) {
-  if (corotational) frames_.emplace(mesh);
+  if (corotational) {
+    frames_.emplace(mesh);
+    local_.assign(2 * std::size_t(offsets_.back()), 0.0);
+  }
   const int nc = mesh.num_cells();
   const bool whole = K_.first == 0 && static_cast<int>(K_.offset.size()) == nc + 1;
   if (!whole)
@@ -129,12 +133,19 @@ void InternalForce::cell_forces(const int* pair_node, const double* u, int threa
     double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
     double& e = cell_energy_[c];
     if (frames_) {
+      double* local = local_.data() + 2 * std::size_t(offsets_[c]);
       switch (cell_size(c)) {
-        case 4: e = corotational_force<4>(*frames_, c, K, node, u, f); break;
-        case 5: e = corotational_force<5>(*frames_, c, K, node, u, f); break;
-        case 6: e = corotational_force<6>(*frames_, c, K, node, u, f); break;
-        case 7: e = corotational_force<7>(*frames_, c, K, node, u, f); break;
-        default: e = corotational_force<0>(*frames_, c, K, node, u, f);
+        // The sizes of the plain force's: the dynamic-size path allocates its three vectors
+        // per cell and step (malloc and free were a third of the frames' time on rcp).
+        case 3: e = corotational_force<3>(*frames_, c, K, node, u, f, local); break;
+        case 4: e = corotational_force<4>(*frames_, c, K, node, u, f, local); break;
+        case 5: e = corotational_force<5>(*frames_, c, K, node, u, f, local); break;
+        case 6: e = corotational_force<6>(*frames_, c, K, node, u, f, local); break;
+        case 7: e = corotational_force<7>(*frames_, c, K, node, u, f, local); break;
+        case 8: e = corotational_force<8>(*frames_, c, K, node, u, f, local); break;
+        case 9: e = corotational_force<9>(*frames_, c, K, node, u, f, local); break;
+        case 10: e = corotational_force<10>(*frames_, c, K, node, u, f, local); break;
+        default: e = corotational_force<0>(*frames_, c, K, node, u, f, local);
       }
       continue;
     }

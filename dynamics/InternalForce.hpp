@@ -67,6 +67,10 @@ class InternalForce {
   /// (x, y) at pair_forces()[2 (offset_c + k) + d].
   std::span<const double> cell_energies() const { return cell_energy_; }
   std::span<const double> pair_forces() const { return pair_force_; }
+  /// Under turning frames, every cell's local displacements u^ at the last compute (2 per
+  /// pair, the pair layout); empty for small rotations. The insertion check's cell stresses read
+  /// them instead of turning every cell again (CrackInsertion::cell_stresses).
+  std::span<const double> local_displacements() const { return local_; }
 
  private:
   void cell_forces(const int* pair_node, const double* u, int threads);
@@ -76,6 +80,7 @@ class InternalForce {
   std::vector<int> offsets_;  // the mesh's cell offsets: pair index = offsets_[c] + k
   CellMatrices K_;
   std::vector<double> pair_force_, cell_energy_;
+  std::vector<double> local_;  // per pair, under turning frames
   OrderedSum energy_sum_;
   std::optional<CorotationalFrames> frames_;
 };

@@ -33,17 +33,6 @@ MeanGradient::MeanGradient(const PolygonMesh& mesh)
   }
 }
 
-Eigen::Matrix2d MeanGradient::gradient(int c, const double* w) const {
-  const int n = cell_size(c);
-  const double* b = weights(c);
-  Eigen::Matrix2d g = Eigen::Matrix2d::Zero();
-  for (int k = 0; k < n; ++k) {
-    g(0, 0) += w[2 * k] * b[2 * k], g(0, 1) += w[2 * k] * b[2 * k + 1];
-    g(1, 0) += w[2 * k + 1] * b[2 * k], g(1, 1) += w[2 * k + 1] * b[2 * k + 1];
-  }
-  return g;
-}
-
 double MeanGradient::divergence(int c, const double* w) const {
   const Eigen::Matrix2d g = gradient(c, w);
   return g(0, 0) + g(1, 1);

@@ -27,8 +27,19 @@ class MeanGradient {
   /// Cell c's area (> 0 whatever its orientation).
   double area(int c) const { return area_[c]; }
   /// G = sum_k w_k (x) b_k of cell c from vertex values w[2k], w[2k + 1] (absolute or relative
-  /// to vertex 0: the same, since sum_k b_k = 0).
-  Eigen::Matrix2d gradient(int c, const double* w) const;
+  /// to vertex 0: the same, since sum_k b_k = 0). Inline: every cell calls it every step.
+  Eigen::Matrix2d gradient(int c, const double* w) const { return gradient(c, cell_size(c), w); }
+  /// The same for a caller that knows the cell's size n (a compile-time constant in the
+  /// force's fixed-size loops, which the compiler then unrolls).
+  Eigen::Matrix2d gradient(int c, int n, const double* w) const {
+    const double* b = weights(c);
+    Eigen::Matrix2d g = Eigen::Matrix2d::Zero();
+    for (int k = 0; k < n; ++k) {
+      g(0, 0) += w[2 * k] * b[2 * k], g(0, 1) += w[2 * k] * b[2 * k + 1];
+      g(1, 0) += w[2 * k + 1] * b[2 * k], g(1, 1) += w[2 * k + 1] * b[2 * k + 1];
+    }
+    return g;
+  }
   /// tr G, the mean divergence of cell c's field w.
   double divergence(int c, const double* w) const;
 

@@ -8,12 +8,15 @@
 //     at a turned, strained and randomly perturbed state;
 //   - for small displacements the force is K u up to second order: at |u| ~ 1e-6 of the cell
 //     size they differ by less than 1e-4 of |K u|;
+//   - the insertion check's cell stresses from the force's local displacements are those it
+//     computes by turning every cell itself, to the bit;
 //   - a free body spun through 6 rad by central differences keeps its size to 1 %, its energy
 //     balance to 1e-4 of its kinetic energy, and its linear and angular momentum to round-off.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "dynamics/CrackInsertion.hpp"
 #include "dynamics/InternalForce.hpp"
 #include "support/DynamicsModel.hpp"
 
@@ -83,6 +86,22 @@ TEST_P(CorotationalFrames, ForceIsTheEnergysGradient) {
     worst = std::max(worst, std::abs(numeric - f[i]));
   }
   EXPECT_LT(worst, 1e-6 * f.cwiseAbs().maxCoeff());
+}
+
+TEST_P(CorotationalFrames, TheChecksStressesReadTheForcesLocalDisplacements) {
+  InternalForce rotating(model.mesh, model.matrices, true);
+  Eigen::Matrix2d strain;
+  strain << 2e-3, -1e-3, -1e-3, 1e-3;
+  Eigen::VectorXd u = affine(turn(2.5) * (Eigen::Matrix2d::Identity() + strain));
+  u += random_vector(int(u.size()), 1e-3, 11);
+  energy(rotating, u);
+  CrackInsertion check(model.mesh, model.integrator, MohrCoulomb({1.0, 0.5, 1.0}),
+                       std::vector<char>(model.mesh.num_edges(), 1));
+  check.turn_with(rotating.frames());
+  const Eigen::Matrix3Xd turned_here = check.cell_stresses(dofs, u, 1);
+  const Eigen::Matrix3Xd read = check.cell_stresses(dofs, u, 1, rotating.local_displacements());
+  EXPECT_EQ(read, turned_here);
+  EXPECT_GT(read.cwiseAbs().maxCoeff(), 1e-4);  // strained: not trivially zero
 }
 
 TEST_P(CorotationalFrames, SmallDisplacementsGiveKu) {

@@ -2,6 +2,7 @@
 
 #include "dynamics/contact/PolygonPenetration.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "core/util/Errors.hpp"
@@ -88,20 +89,19 @@ void ContactForces::clear_forces() {
 }
 
 void ContactForces::collect_support() {
-  // Surface pairs in surface order, each cell's in CSR order: a fixed order for every sum below.
-  const auto& o = mesh_.offsets();
-  const bool planes = !planes_.empty(), velocity = !velocity_force_.empty();
+  // What surface contact and the planes pushed, ascending and once each: a fixed order for every
+  // sum below, and no pass over the pairs contact left alone.
   support_.clear();
-  for (int c : surface_.cells())
-    for (int p = o[c]; p < o[c + 1]; ++p) {
-      if (planes) {
-        plane_force_ += plane_pair_force_[p];
-        force_[p] += plane_pair_force_[p];
-      }
-      const bool loaded = !force_[p].isZero(0.0) || (planes && !plane_pair_force_[p].isZero(0.0)) ||
-                          (velocity && !velocity_force_[p].isZero(0.0));
-      if (loaded) support_.push_back(p);
-    }
+  if (surfaces_) support_.assign(contact_.touched().begin(), contact_.touched().end());
+  for (const RigidPlane& plane : planes_)
+    support_.insert(support_.end(), plane.touched().begin(), plane.touched().end());
+  std::sort(support_.begin(), support_.end());
+  support_.erase(std::unique(support_.begin(), support_.end()), support_.end());
+  if (planes_.empty()) return;
+  for (int p : support_) {
+    plane_force_ += plane_pair_force_[p];
+    force_[p] += plane_pair_force_[p];
+  }
 }
 
 void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double dt,

@@ -98,7 +98,8 @@ class ContactForces {
   void gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
   /// Zeroes the pair forces of the last evaluation (the other pairs are zero already).
   void clear_forces();
-  /// Adds the planes' pair forces in, sums their net force and lists the pairs with a force.
+  /// Lists the pairs with a force (what contact and the planes pushed), adds the planes' pair
+  /// forces in and sums their net force.
   void collect_support();
   /// Node i's number and mass on each of its pairs.
   void bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses, int i);

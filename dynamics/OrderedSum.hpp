@@ -21,9 +21,12 @@ class OrderedSum {
     partial_.assign(static_cast<std::size_t>(chunks) * K, 0.0);  // no reallocation once grown
 #pragma omp parallel for schedule(static) num_threads(std::max(threads, 1))
     for (int b = 0; b < chunks; ++b) {
-      double* acc = partial_.data() + static_cast<std::size_t>(b) * K;
+      // A local accumulator: no store the term makes (to its own double arrays) can alias it, so
+      // it stays in registers; one into partial_ had to be reloaded after every such store.
+      std::array<double, K> acc{};
       const int end = std::min(n, (b + 1) * kChunk);
-      for (int i = b * kChunk; i < end; ++i) term(i, acc);
+      for (int i = b * kChunk; i < end; ++i) term(i, acc.data());
+      std::copy(acc.begin(), acc.end(), partial_.begin() + static_cast<std::ptrdiff_t>(b) * K);
     }
     std::array<double, K> total{};
     for (int b = 0; b < chunks; ++b)

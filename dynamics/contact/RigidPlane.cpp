@@ -32,6 +32,7 @@ ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairStat
                      std::to_string(state.position.size()));
   ContactReport report;
   shear_next_.clear();
+  touched_.clear();
   // Penetrating pairs are few: a set of their nodes is cheaper than a flag per node.
   std::unordered_set<int> taken;
   constexpr double kRigid = std::numeric_limits<double>::infinity();
@@ -48,6 +49,7 @@ ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairStat
       const double rate = state.velocity.empty() ? 0.0 : -state.velocity[p].dot(normal_);
       const auto r = law_.respond(depth, rate, mass, state.dt);
       force[p] += r.force * normal_;
+      touched_.push_back(p);
       if (!velocity_force.empty()) velocity_force[p] += r.velocity_force * normal_;
       if (friction_.active()) add_friction(p, r, state, force, report);
       ++report.contacts;

@@ -9,6 +9,7 @@
 // carries its shear along the plane from step to step, keyed by its pair.
 #include <span>
 #include <unordered_map>
+#include <vector>
 
 #include "dynamics/contact/ContactFriction.hpp"
 #include "dynamics/contact/ContactReport.hpp"
@@ -36,6 +37,8 @@ class RigidPlane {
   /// to `velocity_force` if it is not empty, and reports the step.
   ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
                            std::span<Point> force, std::span<Point> velocity_force = {});
+  /// The pairs the last add_forces gave a force, in the order it did.
+  std::span<const int> touched() const { return touched_; }
 
  private:
   /// Friction on pair p, pushed by `normal` of stiffness k: adds the shear along the plane.
@@ -48,6 +51,7 @@ class RigidPlane {
   ContactFriction friction_;
   // The shear of each contacting pair at the last evaluation and at this one.
   std::unordered_map<int, double> shear_, shear_next_;
+  std::vector<int> touched_;
 };
 
 }  // namespace vorodg

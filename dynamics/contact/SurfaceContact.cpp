@@ -66,6 +66,7 @@ ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const Pair
                      std::to_string(state.position.size()));
   find_pairs(surface, state.position);
   taken_.clear();
+  touched_.clear();
   ContactReport report;
   report.candidates = static_cast<int>(surface_pairs_.size());
   inside_next_.clear();
@@ -136,6 +137,7 @@ void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const 
     Penetration acting = *pen;
     acting.depth = depth->depth;
     const auto r = law_.apply(acting, p, e0, e1, state, force, velocity_force);
+    touched_.insert(touched_.end(), {p, e0, e1});
     if (friction_.active())
       add_friction(key_of(p, b), acting, p, e0, e1, r, depth->shear, state, force, report);
     ++report.contacts;

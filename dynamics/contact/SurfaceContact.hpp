@@ -67,6 +67,9 @@ class SurfaceContact {
   const std::vector<IndexPair>& find_pairs(const SurfaceCells& surface,
                                            std::span<const Point> position);
   const std::vector<IndexPair>& cell_pairs() const { return cell_pairs_; }
+  /// The pairs the last add_forces gave a force (each contact's vertex and edge ends, in the
+  /// order it pushed them; with repeats).
+  std::span<const int> touched() const { return touched_; }
 
   const PenaltyContact& law() const { return law_; }
   const ContactFriction& friction() const { return friction_; }
@@ -105,6 +108,7 @@ class SurfaceContact {
   std::vector<IndexPair> surface_pairs_;     // the same pairs, by index in surface order
   std::vector<IndexPair> cell_pairs_;        // mesh cell ids
   std::unordered_set<std::uint64_t> taken_;  // (node, target cell) keys of this step
+  std::vector<int> touched_;
   // (pair, target cell) keys of the penetrations found at the last evaluation and at this one:
   // those that got a force, with their offsets and friction shears, and those left alone as
   // tunnelled.

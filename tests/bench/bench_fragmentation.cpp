@@ -144,7 +144,15 @@ void BM_CrackingStep(benchmark::State& state) {
   state.counters["remaps_per_step"] = double(remaps) / double(std::max(steps, 1L));
 }
 
-BENCHMARK(BM_PlainStep)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
+// 640, 2500 and 10000 cells: the sizes of the column-impact meshes at h = 4, 2 and 1, the
+// reference of a fragmentation step's cost (docs/performance-fracture.md).
+BENCHMARK(BM_PlainStep)
+    ->Arg(640)
+    ->Arg(2500)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_InsertionCheck)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Remap)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CrackingStep)

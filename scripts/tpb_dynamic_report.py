@@ -7,7 +7,7 @@ DYNAMIC_DIR is a `vorodg run` of a fragmentation scene of problem three-point-be
 labels begin with the name of their case (e.g. case2-dg-v0.005: case2); STATIC_DIR a `vorodg run`
 of the fracture scene with variants labelled <case> on the same meshes (same family, size, seed
 and realizations: the run ids match). What each variant ran with (interfaces, rate.speed,
-rate.rise, damping) is read from its settings.json, never from the label. For every dynamic run
+rate.rise, damping) is read from the settings in its summary.json, never from the label. For every dynamic run
 the load-CMOD curve is set against the quasi-static one of the same case and mesh, and tabulated:
 
   peak, peak_qs      the largest load (N) of each curve; peak_error = peak / peak_qs - 1
@@ -44,9 +44,9 @@ def results(path):
 
 
 def settings(folder):
-    """What a variant ran with: (interfaces, speed, rise, damping) from its settings.json."""
-    with open(os.path.join(folder, "settings.json")) as f:
-        s = json.load(f)
+    """What a variant ran with: (interfaces, speed, rise, damping) from its summary.json."""
+    with open(os.path.join(folder, "summary.json")) as f:
+        s = json.load(f)["settings"]
     return dict(approach=s["interfaces"], speed=float(s["rate.speed"]),
                 rise=float(s["rate.rise"]), damping=float(s["damping"]))
 

@@ -4,7 +4,6 @@
 #include <iostream>
 #include <sstream>
 
-#include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "verification/model/SettingsSchema.hpp"
@@ -48,14 +47,6 @@ double checked_number(SceneObject& o, const std::string& name, const SceneKey& k
 
 void echo_settings(const std::vector<std::pair<std::string, std::string>>& settings) {
   for (const auto& [key, value] : settings) std::cout << "#   " << key << " = " << value << "\n";
-}
-
-void write_settings(const std::filesystem::path& folder,
-                    const std::vector<std::pair<std::string, std::string>>& settings) {
-  nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  for (const auto& [key, value] : settings) j[key] = value;
-  std::filesystem::create_directories(folder);
-  write_file_atomically(folder / "settings.json", j.dump(1) + "\n");
 }
 
 std::vector<std::pair<std::string, std::string>> SceneKeyReader::settings() const {

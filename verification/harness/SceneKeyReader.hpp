@@ -5,7 +5,6 @@
 // summary.json list every key with its value in the table's order. The kinds' readers derive
 // from it and add what is particular to them (keys whose default depends on the problem, keys
 // that exclude each other).
-#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -31,12 +30,6 @@ double checked_number(SceneObject& o, const std::string& name, const SceneKey& k
 
 /// Prints "#   key = value" for every key used: the echo at the top of a study part.
 void echo_settings(const std::vector<std::pair<std::string, std::string>>& settings);
-/// Writes the same keys and values to `folder`/settings.json (an object of strings, in the echo's
-/// order), atomically: what a part ran with, for scripts that read it back instead of parsing
-/// labels. Creates the folder.
-void write_settings(const std::filesystem::path& folder,
-                    const std::vector<std::pair<std::string, std::string>>& settings);
-
 class SceneKeyReader {
  public:
   /// Refuses a key of the table's old spellings at once, naming its new one.

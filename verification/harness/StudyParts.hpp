@@ -1,7 +1,7 @@
 #pragma once
 // How an ensemble kind (fracture, dynamics, fragmentation) runs a scene: each part (the scene, or
 // each of its variants) into its own folder, after a header and the echo of every key with the
-// value used (also its settings.json), then its plots; then one summary line. A run that broke down
+// value used, then its plots; then one summary line. A run that broke down
 // keeps what it wrote and is reported; the study then exits 3.
 #include <filesystem>
 #include <functional>
@@ -40,8 +40,6 @@ int run_study_parts(
     std::cout << "\n== " << (part->label.empty() ? part->name : part->label) << "\n";
     echo_settings(part->settings);
     const PartCounts counts = run_part(*part, out);
-    // After the runs: a part refused for bad input leaves nothing behind.
-    if (Ensemble::writes_reports()) write_settings(out, part->settings);
     total.runs += counts.runs;
     total.incomplete += counts.incomplete;
     if (!call.no_plots && Ensemble::writes_reports()) draw_plots(plot_script, out);

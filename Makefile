@@ -1,21 +1,31 @@
 # The two commands of the README. Everything else is CMake in build/.
-.PHONY: demo test build bootstrap clean format
+.PHONY: demo test bench build configure bootstrap clean format
 
 JOBS ?= $(shell nproc)
 
 bootstrap:
 	scripts/bootstrap --no-build
 
-build: bootstrap
+configure: bootstrap
 	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+# Everything: the library, the program, the tests, the benchmarks and the fuzz replays.
+build: configure
 	cmake --build build -j $(JOBS)
 
-# The default study: generate meshes, report on them and draw the gallery (out/demo).
-demo: build
+# The default study: generate meshes, report on them and draw the gallery (out/demo). Builds
+# only the program and its libraries, not the tests and benchmarks it does not run.
+demo: configure
+	cmake --build build -j $(JOBS) --target vorodg
 	scripts/demo
 
 test: build
 	cd build && ctest --output-on-failure -j $(JOBS)
+
+# The Google Benchmark programs (build/bin/bench_*), built and listed; run one with its own flags.
+bench: configure
+	cmake --build build -j $(JOBS) --target benchmarks
+	ls build/bin/bench_*
 
 format:
 	clang-format-14 -i $$(git ls-files '*.cpp' '*.hpp')

@@ -9,6 +9,7 @@
 
 #include "core/element/LatticeBasis.hpp"
 #include "core/element/LatticeStiffness.hpp"
+#include "core/element/SmallCholesky.hpp"
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
 
@@ -72,42 +73,6 @@ void number_patch(const PolygonMesh& mesh, int vertex, int N, PatchNumbering& pa
 /// Lattices up to this many nodes per cell are solved by condensing each cell onto its boundary
 /// (the default, P2 unrefined, has 3n + 1); finer ones by one sparse or dense solve per patch.
 constexpr int kMaxCondensedNodes = 64;
-
-/// Cholesky factor in place of the dense symmetric n x n matrix A (row-major, lower triangle
-/// read and overwritten); false if A is not positive definite.
-bool cholesky_in_place(double* A, int n) {
-  for (int j = 0; j < n; ++j) {
-    double d = A[j * n + j];
-    for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k];
-    if (!(d > 0.0)) return false;
-    d = std::sqrt(d);
-    A[j * n + j] = d;
-    for (int i = j + 1; i < n; ++i) {
-      double v = A[i * n + j];
-      for (int k = 0; k < j; ++k) v -= A[i * n + k] * A[j * n + k];
-      A[i * n + j] = v / d;
-    }
-  }
-  return true;
-}
-
-/// x := L^-1 x, L the factor of cholesky_in_place.
-void forward_solve(const double* L, int n, double* x) {
-  for (int i = 0; i < n; ++i) {
-    double v = x[i];
-    for (int k = 0; k < i; ++k) v -= L[i * n + k] * x[k];
-    x[i] = v / L[i * n + i];
-  }
-}
-
-/// x := L^-T x.
-void backward_solve(const double* L, int n, double* x) {
-  for (int i = n - 1; i >= 0; --i) {
-    double v = x[i];
-    for (int k = i + 1; k < n; ++k) v -= L[k * n + i] * x[k];
-    x[i] = v / L[i * n + i];
-  }
-}
 
 /// One cell's weight-function problem, -lap w = 1 on its lattice, split into the nodes inside
 /// the cell (centroid, spokes, fan interiors: `inner`) and those on its boundary (vertices and

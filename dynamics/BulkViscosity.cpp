@@ -61,37 +61,18 @@ double BulkViscosity::pressure(int c, double rate) const {
 
 void BulkViscosity::cell_force(int c, const int* node, const double* v, const double* u) {
   // Velocities (and displacements) relative to vertex 0 (sum_k b_k = 0, so the same gradient): a
-  // translating cell has exactly zero rate, whatever its speed. One pass over the vertices, both
-  // gradients at once, straight from the node arrays: the gathered copies in per-thread buffers
-  // were most of this term's cost.
+  // translating cell has exactly zero rate, whatever its speed. Read straight from the node
+  // arrays: the gathered copies in per-thread buffers were most of this term's cost.
   const int n = gradient_.cell_size(c);
   const double* b = gradient_.weights(c);
-  const double vx0 = v[2 * node[0]], vy0 = v[2 * node[0] + 1];
-  Eigen::Matrix2d gv = Eigen::Matrix2d::Zero(), gu = Eigen::Matrix2d::Zero();
-  if (u) {
-    const double ux0 = u[2 * node[0]], uy0 = u[2 * node[0] + 1];
-    for (int k = 0; k < n; ++k) {
-      const double wx = v[2 * node[k]] - vx0, wy = v[2 * node[k] + 1] - vy0;
-      const double xx = u[2 * node[k]] - ux0, xy = u[2 * node[k] + 1] - uy0;
-      const double bx = b[2 * k], by = b[2 * k + 1];
-      gv(0, 0) += wx * bx, gv(0, 1) += wx * by, gv(1, 0) += wy * bx, gv(1, 1) += wy * by;
-      gu(0, 0) += xx * bx, gu(0, 1) += xx * by, gu(1, 0) += xy * bx, gu(1, 1) += xy * by;
-    }
-  } else {
-    for (int k = 0; k < n; ++k) {
-      const double wx = v[2 * node[k]] - vx0, wy = v[2 * node[k] + 1] - vy0;
-      gv(0, 0) += wx * b[2 * k], gv(1, 1) += wy * b[2 * k + 1];
-    }
-  }
+  const Eigen::Matrix2d gv = gradient_.gradient_at_nodes(c, node, v);
   // The cofactor of F maps b_k to the current configuration's weights (the identity at rest).
   Eigen::Matrix2d cofactor = Eigen::Matrix2d::Identity();
-  double rate = 0.0;
+  double rate = gv(0, 0) + gv(1, 1);
   if (u) {
-    const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + gu;
+    const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + gradient_.gradient_at_nodes(c, node, u);
     cofactor << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
     rate = cofactor.cwiseProduct(gv).sum() / F.determinant();
-  } else {
-    rate = gv(0, 0) + gv(1, 1);
   }
   rate_[c] = rate;
   const double qa = pressure(c, rate) * gradient_.area(c);

@@ -40,6 +40,20 @@ class MeanGradient {
     }
     return g;
   }
+  /// G of cell c's field read straight from node values (field[2 node[k]], field[2 node[k] + 1]
+  /// for its vertex k), relative to vertex 0: a field uniform over the cell has exactly G = 0.
+  Eigen::Matrix2d gradient_at_nodes(int c, const int* node, const double* field) const {
+    const int n = cell_size(c);
+    const double* b = weights(c);
+    const double x0 = field[2 * node[0]], y0 = field[2 * node[0] + 1];
+    Eigen::Matrix2d g = Eigen::Matrix2d::Zero();
+    for (int k = 0; k < n; ++k) {
+      const double x = field[2 * node[k]] - x0, y = field[2 * node[k] + 1] - y0;
+      g(0, 0) += x * b[2 * k], g(0, 1) += x * b[2 * k + 1];
+      g(1, 0) += y * b[2 * k], g(1, 1) += y * b[2 * k + 1];
+    }
+    return g;
+  }
   /// tr G, the mean divergence of cell c's field w.
   double divergence(int c, const double* w) const;
 

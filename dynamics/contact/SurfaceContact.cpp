@@ -49,9 +49,9 @@ const std::vector<IndexPair>& SurfaceContact::find_pairs(const SurfaceCells& sur
   boxes_.resize(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i)
     boxes_[i] = box_of(loop_of(mesh, position, cells[i]), cells[i]);
-  surface_pairs_ = candidates_.overlapping(surface, position, boxes_);
+  surface_pairs_ = &candidates_.overlapping(surface, position, boxes_);
   cell_pairs_.clear();
-  for (const IndexPair& ij : surface_pairs_)
+  for (const IndexPair& ij : *surface_pairs_)
     cell_pairs_.push_back({cells[ij.first], cells[ij.second]});
   return cell_pairs_;
 }
@@ -68,10 +68,10 @@ ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const Pair
   taken_.clear();
   touched_.clear();
   ContactReport report;
-  report.candidates = static_cast<int>(surface_pairs_.size());
+  report.candidates = static_cast<int>(surface_pairs_->size());
   inside_next_.clear();
   tunnelled_next_.clear();
-  for (const IndexPair& ij : surface_pairs_) {
+  for (const IndexPair& ij : *surface_pairs_) {
     test_pass(surface, ij.first, ij.second, state, force, velocity_force, report);
     test_pass(surface, ij.second, ij.first, state, force, velocity_force, report);
   }

@@ -104,10 +104,10 @@ class SurfaceContact {
   PenaltyContact law_;
   ContactFriction friction_;
   ContactCandidates candidates_;
-  std::vector<Box> boxes_;                   // per surface cell, in surface order
-  std::vector<IndexPair> surface_pairs_;     // the same pairs, by index in surface order
-  std::vector<IndexPair> cell_pairs_;        // mesh cell ids
-  std::unordered_set<std::uint64_t> taken_;  // (node, target cell) keys of this step
+  std::vector<Box> boxes_;                                 // per surface cell, in surface order
+  const std::vector<IndexPair>* surface_pairs_ = nullptr;  // the same, in surface order
+  std::vector<IndexPair> cell_pairs_;                      // mesh cell ids
+  std::unordered_set<std::uint64_t> taken_;                // (node, target cell) keys of this step
   std::vector<int> touched_;
   // (pair, target cell) keys of the penetrations found at the last evaluation and at this one:
   // those that got a force, with their offsets and friction shears, and those left alone as

@@ -60,10 +60,19 @@ void CohesiveForces::set_edge_strength(std::vector<double> factor) {
   edge_strength_ = std::move(factor);
 }
 
-void CohesiveForces::set_closure_fraction(double fraction) {
-  require_parameter(std::isfinite(fraction) && fraction > 0.0 && fraction <= 1.0,
-                    "cohesive forces: closure stiffness (of K0)", fraction, "0 < fraction <= 1");
-  closure_fraction_ = fraction;
+void CohesiveForces::set_closure(ClosureStiffness closure) {
+  require_parameter(
+      std::isfinite(closure.fraction) && closure.fraction > 0.0 && closure.fraction <= 1.0,
+      "cohesive forces: closure stiffness (of K0)", closure.fraction, "0 < fraction <= 1");
+  if (!faces_.empty()) throw InputError("cohesive forces: the closure is set before any crack");
+  if (!closure.per_edge.empty() && static_cast<int>(closure.per_edge.size()) != mesh_.num_edges())
+    throw InputError("cohesive forces: " + std::to_string(closure.per_edge.size()) +
+                     " closure stiffnesses, expected " + std::to_string(mesh_.num_edges()));
+  for (std::size_t e = 0; e < closure.per_edge.size(); ++e)
+    require_parameter(std::isfinite(closure.per_edge[e]) && closure.per_edge[e] > 0.0,
+                      "cohesive forces: closure stiffness of edge " + std::to_string(e),
+                      closure.per_edge[e], "> 0");
+  closure_ = std::move(closure);
 }
 
 void CohesiveForces::set_friction(double mu) {
@@ -86,20 +95,20 @@ void CohesiveForces::add_edge(int e) {
                        std::to_string(edge_strength_[e]) + ": " + error.what());
     }
   }
+  f.closure = closure_.of_edge(e, law_.parameters().initial_stiffness);
   slot_[e] = static_cast<int>(faces_.size());
   faces_.push_back(f);
   edges_.push_back(e);
 }
 
-Eigen::Vector2d CohesiveForces::carrying_opening(const CohesiveLaw& law,
-                                                 const Eigen::Vector2d& traction) const {
+Eigen::Vector2d CohesiveForces::carrying_opening(const CohesiveLaw& law, double k,
+                                                 const Eigen::Vector2d& traction) {
   const CohesiveParameters& p = law.parameters();
   const double beta2 = p.shear_factor * p.shear_factor;
   // On the elastic branch tau = K0 (<d_n>, beta^2 d_t); a closed face's normal traction is the
   // closure penalty's, k d_n.
-  Eigen::Vector2d s(
-      traction[0] >= 0.0 ? traction[0] / p.initial_stiffness : traction[0] / closure_stiffness(),
-      beta2 > 0.0 ? traction[1] / (beta2 * p.initial_stiffness) : 0.0);
+  Eigen::Vector2d s(traction[0] >= 0.0 ? traction[0] / p.initial_stiffness : traction[0] / k,
+                    beta2 > 0.0 ? traction[1] / (beta2 * p.initial_stiffness) : 0.0);
   const double effective = std::hypot(std::max(s[0], 0.0), p.shear_factor * s[1]);
   const double peak = p.strength / p.initial_stiffness;
   if (effective > peak) {  // beyond the law's strength: the peak, in the carried direction
@@ -116,28 +125,31 @@ void CohesiveForces::add_edge(int e, const Carried& carried) {
   const SegmentRule& rule = gauss2_segment();
   for (int q = 0; q < 2; ++q) {
     QuadraturePoint& p = face.points[q];
-    const Eigen::Vector2d s = carrying_opening(law, carried.traction[q]);
+    const Eigen::Vector2d s = carrying_opening(law, face.closure, carried.traction[q]);
     const Eigen::Vector2d& g = carried.jump[q];
     p.shift = s - Eigen::Vector2d(g.dot(face.n), g.dot(face.t));
-    FacePointResponse r = face_point_response(law, s, closure_stiffness(), p.history);
+    FacePointResponse r = face_point_response(law, s, face.closure, p.history);
     p.friction.slip = s[1];  // the stick spring starts unstressed
     const double w = rule.weights[q] * face.length;
     p.opening = s;
     p.traction = r.traction;
     p.jump = g;
     p.force = w * (r.traction[0] * face.n + r.traction[1] * face.t);
-    continuation_energy_ += w * face_point_stored_energy(law, s, closure_stiffness(), p.history);
+    continuation_energy_ += w * face_point_stored_energy(law, s, face.closure, p.history);
   }
 }
 
 double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
                                         const CohesiveLaw& law, const std::vector<char>& eligible,
-                                        double friction, double closure_fraction) {
-  const double beta = law.parameters().shear_factor;
-  // The law's tangent never exceeds K0 diag(1, beta^2) on any branch; a sticking face adds the
-  // closure stiffness to the shear.
-  const double shear = beta * beta + (friction > 0.0 ? closure_fraction : 0.0);
-  const double k0 = law.parameters().initial_stiffness * std::max(1.0, shear);
+                                        double friction, const ClosureStiffness& closure) {
+  const double beta = law.parameters().shear_factor, k0 = law.parameters().initial_stiffness;
+  // The law's tangent never exceeds K0 diag(1, beta^2) on any branch; the closure k adds
+  // diag(k, 0) in compression, and a sticking face diag(0, k) beside it. The face's spring is
+  // diagonal in its frame: its largest stiffness is the larger of the two.
+  auto face_stiffness = [&](int e) {
+    const double k = closure.of_edge(e, k0);
+    return std::max({k0, k, k0 * beta * beta + (friction > 0.0 ? k : 0.0)});
+  };
   std::vector<std::vector<double>> row(mesh.num_cells());
   for (int c = 0; c < mesh.num_cells(); ++c) row[c].assign(mesh.cell_size(c), 0.0);
   const SegmentRule& rule = gauss2_segment();
@@ -148,7 +160,7 @@ double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMas
                           mesh.edge(e).cell1};
     const int local[4] = {f.side0[0], f.side0[1], f.side1[0], f.side1[1]};
     for (int q = 0; q < 2; ++q) {
-      const double s = rule.t[q], k = k0 * rule.weights[q] * f.length;
+      const double s = rule.t[q], k = face_stiffness(e) * rule.weights[q] * f.length;
       double b[4], sum = 0.0;
       for (int j = 0; j < 4; ++j) {
         b[j] = (j % 2 == 0 ? 1.0 - s : s) / std::sqrt(mass.pair_mass(cells[j], local[j]));
@@ -166,10 +178,10 @@ double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMas
 double CohesiveForces::stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
                                    const LumpedMass& mass, const CohesiveLaw& law,
                                    const std::vector<char>& eligible, double safety,
-                                   double friction, double closure_fraction) {
+                                   double friction, const ClosureStiffness& closure) {
   return safety * 2.0 /
          std::sqrt(cells.max_eigenvalue() +
-                   eigenvalue_bound(mesh, mass, law, eligible, friction, closure_fraction));
+                   eigenvalue_bound(mesh, mass, law, eligible, friction, closure));
 }
 
 void CohesiveForces::bind(const SplitDofMap& dofs) {
@@ -236,8 +248,8 @@ void CohesiveForces::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& f) {
       const Eigen::Vector2d g = (1.0 - s) * jump[0] + s * jump[1];
       QuadraturePoint& p = face.points[q];
       const Eigen::Vector2d d = Eigen::Vector2d(g.dot(n), g.dot(t)) + p.shift;
-      FacePointResponse r = face_point_response(law, d, closure_stiffness(), p.history);
-      add_friction(friction_, closure_stiffness(), d[0], d[1], p.friction, r);
+      FacePointResponse r = face_point_response(law, d, face.closure, p.history);
+      add_friction(friction_, face.closure, d[0], d[1], p.friction, r);
       const Eigen::Vector2d force = w * (r.traction[0] * n + r.traction[1] * t);
       work -= 0.5 * (p.force + force).dot(g - p.jump);
       p.opening = d;
@@ -321,9 +333,9 @@ double CohesiveForces::stored_energy() const {
     for (int q = 0; q < 2; ++q) {
       const Face& face = faces_[slot];
       sum += rule.weights[q] * face.length *
-             (face_point_stored_energy(law_of(slot), face.points[q].opening, closure_stiffness(),
+             (face_point_stored_energy(law_of(slot), face.points[q].opening, face.closure,
                                        face.points[q].history) +
-              friction_stored_energy(friction_, closure_stiffness(), face.points[q].opening[0],
+              friction_stored_energy(friction_, face.closure, face.points[q].opening[0],
                                      face.points[q].opening[1], face.points[q].friction));
     }
   return sum;

@@ -56,6 +56,20 @@
 
 namespace vorodg {
 
+/// The crack faces' penalty k <g_n>_- against overclosure. By default a fraction of K0 on every
+/// face: at K0 itself a closing face is a spring whose contact lasts about one step at the stable
+/// step, and the switching of such a spring on and off feeds energy in (measured: half the
+/// initial energy on a stretched strip at safety 0.9); at a tenth its contact lasts about three
+/// times longer. Or one stiffness per mesh edge: with interfaces coupled from the start each
+/// face keeps its interface's penalty eps, the closure of the quasi-static solver
+/// (dg/CohesiveInterfaces), so that the two solve the same equations (docs/dynamics.md).
+struct ClosureStiffness {
+  static constexpr double kDefaultFraction = 0.1;
+  double fraction = kDefaultFraction;
+  std::vector<double> per_edge;  // per unit thickness (Pa/m); empty: fraction x K0 everywhere
+  double of_edge(int e, double k0) const { return per_edge.empty() ? fraction * k0 : per_edge[e]; }
+};
+
 class CohesiveForces {
  public:
   /// `mesh` and `law` must outlive this object. Throws InputError unless the law is intrinsic
@@ -66,12 +80,10 @@ class CohesiveForces {
   /// strength factor[e] x sigma_c, with G and K0 unchanged. Call before the first add_edge.
   /// Throws InputError naming the edge where the scaled law is invalid, or if edges cracked.
   void set_edge_strength(std::vector<double> factor);
-  /// The overclosure penalty's stiffness as a fraction of K0 (see closure_stiffness below for
-  /// why the default is a tenth). Faces that stay closed under a slow load (the compressed part of
-  /// a pre-inserted crack line) want it stiff, as the quasi-static solver's penalty is. Throws
-  /// InputError unless 0 < fraction <= 1 (the springs' bound assumes at most K0).
-  void set_closure_fraction(double fraction);
-  static constexpr double kDefaultClosureFraction = 0.1;
+  /// The overclosure penalty (ClosureStiffness): a fraction of K0 on every face, or a stiffness
+  /// per mesh edge. Call before the first add_edge. Throws InputError unless 0 < fraction <= 1,
+  /// or per edge one finite value > 0 for each mesh edge.
+  void set_closure(ClosureStiffness closure);
   /// Coulomb friction mu on the closed faces (fracture/FacePoint: a stick spring of the closure
   /// stiffness, slipping at mu times the closure's pressure). Throws InputError unless
   /// 0 <= mu <= 10 (finite). 0, the default, is frictionless.
@@ -112,17 +124,17 @@ class CohesiveForces {
   /// it). Gershgorin on M^-1/2 K_s M^-1/2. Adding it to the cells' bound (StableTimeStep)
   /// bounds the whole system's eigenvalue, since lambda_max(A + B) <= lambda_max(A) +
   /// lambda_max(B).
-  /// With friction the stick spring adds the closure stiffness to the shear.
+  /// With friction the stick spring adds the closure stiffness to the shear; a closure stiffer
+  /// than K0 sets the normal spring.
   static double eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
                                  const CohesiveLaw& law, const std::vector<char>& eligible,
-                                 double friction = 0.0,
-                                 double closure_fraction = kDefaultClosureFraction);
+                                 double friction = 0.0, const ClosureStiffness& closure = {});
   /// safety x the critical step of the cells (`cells`, the cell-by-cell bound, valid for every
   /// split) and the springs together: stable for every crack pattern a run can reach.
   static double stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
                             const LumpedMass& mass, const CohesiveLaw& law,
                             const std::vector<char>& eligible, double safety, double friction = 0.0,
-                            double closure_fraction = kDefaultClosureFraction);
+                            const ClosureStiffness& closure = {});
   /// The cracked edges, in the order they cracked.
   const std::vector<int>& edges() const { return edges_; }
   bool cracked(int e) const { return slot_[e] >= 0; }
@@ -185,6 +197,7 @@ class CohesiveForces {
     std::array<int, 2> node0{-1, -1}, node1{-1, -1};  // bound nodes of v0, v1 on each side
     Eigen::Vector2d n, t;
     double length;
+    double closure;  // the overclosure penalty's stiffness k
     std::array<QuadraturePoint, 2> points;
     double end_gap = 0.0;  // the smaller of the two end jumps' lengths, last evaluation
     bool released = false;
@@ -209,14 +222,7 @@ class CohesiveForces {
   /// four bound nodes.
   static void add_point_force(const Face& face, int q, const Eigen::Vector2d& force,
                               Eigen::VectorXd& f);
-  /// The penalty against overclosure: a fraction of K0 (set_closure_fraction). At K0 itself a
-  /// closing face is a spring whose contact lasts about one step at the stable step, and the
-  /// switching of such a spring on and off feeds energy in (measured: half the initial energy on a
-  /// stretched strip at safety 0.9); at a tenth its contact lasts about three times longer.
-  double closure_stiffness() const {
-    return closure_fraction_ * law_.parameters().initial_stiffness;
-  }
-  double closure_fraction_ = kDefaultClosureFraction;
+  ClosureStiffness closure_;
   double friction_ = 0.0;  // Coulomb's mu on closed faces
   bool turning_ = false;   // the faces' frames turn with them
   /// The law of face `slot` (the shared one unless the strength varies).
@@ -236,8 +242,9 @@ class CohesiveForces {
   std::vector<int> released_;
   double work_ = 0.0;
   double continuation_energy_ = 0.0;
-  /// The point of the law's elastic branch (closure in compression) carrying `traction`.
-  Eigen::Vector2d carrying_opening(const CohesiveLaw& law, const Eigen::Vector2d& traction) const;
+  /// The point of the law's elastic branch (the closure k in compression) carrying `traction`.
+  static Eigen::Vector2d carrying_opening(const CohesiveLaw& law, double k,
+                                          const Eigen::Vector2d& traction);
 };
 
 }  // namespace vorodg

@@ -286,12 +286,13 @@ std::vector<SceneKey> make_keys() {
                                    "the stable step",
                                    "fragmentation: "}));
   keys.push_back(bounded(
-      "cohesive.closure_stiffness", "number", "0.1", "0 < k <= 1",
-      "fragmentation: the crack faces' penalty against overclosure as a fraction of K0. A tenth "
-      "lets a face that closes and opens again switch over several steps (at K0 the switching "
-      "fed energy in on a stretched strip); faces that stay closed under a slow load want it "
-      "stiff, as the quasi-static solver's penalty is: 1 on the notched beam "
-      "(docs/dynamics.md)",
+      "cohesive.closure_stiffness", "number or string", "0.1",
+      "0 < k <= 1, or \"interface\" (interfaces dg)",
+      "fragmentation: the crack faces' penalty against overclosure as a fraction of K0, or "
+      "\"interface\": each face keeps its interface's penalty eps, the quasi-static solver's "
+      "closure. A tenth lets a face that closes and opens again switch over several steps (at "
+      "K0 the switching fed energy in on a stretched strip); the compressed part of a crack line "
+      "under a slow load softens the beam with it (docs/dynamics.md)",
       0.0, true, 1.0));
   keys.push_back(bounded(
       "cohesive.face_friction", "number", "criterion.friction", "0 <= mu <= 10",

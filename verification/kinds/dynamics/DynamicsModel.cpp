@@ -108,6 +108,7 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs, const CrackSite
   // safety x the chosen estimate; >= 1 only got here with --force. With cracks, the cells' bound
   // (valid for every split) and the cohesive springs' share.
   if (scene.fragmentation) cracks.emplace(scene, mesh(), bodies.h_avg);
+  if (cracks && coupling && scene.interface_closure) cracks->close_as_interfaces(*coupling);
   dt = cracks ? cracks->stable_step(
                     bound, mass, scene.safety,
                     coupling ? coupling->eigenvalue_bound(mass.node_masses(dofs)) : 0.0)

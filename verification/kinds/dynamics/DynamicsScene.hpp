@@ -86,10 +86,11 @@ struct DynamicsScene {
   // fragmentation (study kind): crack insertion with the cohesive law on every interior edge
   bool fragmentation = false;
   CohesiveParameters cohesive;
-  double stiffness_factor = 0.0;  // K0 in units of E / h_avg
-  double face_friction = 0.0;     // Coulomb's mu on closed crack faces
-  double closure_fraction = 0.1;  // the faces' overclosure penalty, of K0
-  bool turning_faces = false;     // corotational: faces read openings in turning frames
+  double stiffness_factor = 0.0;   // K0 in units of E / h_avg
+  double face_friction = 0.0;      // Coulomb's mu on closed crack faces
+  double closure_fraction = 0.1;   // the faces' overclosure penalty, of K0
+  bool interface_closure = false;  // interfaces dg: each face's overclosure is its penalty eps
+  bool turning_faces = false;      // corotational: faces read openings in turning frames
   MohrCoulombParameters criterion;
   std::vector<SceneMesh> meshes;
   /// Every key and the value used, in the table's order (the echo and summary.json).

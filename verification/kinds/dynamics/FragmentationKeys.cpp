@@ -25,7 +25,17 @@ void DynamicsSceneReader::read_fracture() {
   m.finish();
   // The faces are the material's failure planes: by default they slide with its friction.
   s_.face_friction = number(c, "cohesive.face_friction", s_.criterion.friction);
-  s_.closure_fraction = number(c, "cohesive.closure_stiffness");
+  // A fraction of K0, or "interface": each face keeps its interface's penalty (dg only).
+  if (c.has("closure_stiffness") && c.at("closure_stiffness").is_string()) {
+    word(c, "cohesive.closure_stiffness", " interface ");
+    if (!s_.dg_interfaces)
+      c.fail_value("closure_stiffness",
+                   "'interface' with interfaces insertion: expected a number (only interfaces dg "
+                   "have a penalty)");
+    s_.interface_closure = true;
+  } else {
+    s_.closure_fraction = number(c, "cohesive.closure_stiffness");
+  }
   s_.turning_faces = flag(c, "cohesive.turning_frames");
   if (s_.turning_faces && !s_.corotational)
     c.fail_value("turning_frames", "true with kinematics small: expected corotational");

@@ -67,10 +67,18 @@ FragmentationRun::FragmentationRun(const DynamicsScene& scene, const PolygonMesh
       sites_(scene.problem->crack_sites(mesh)),
       eligible_(sites_.eligible.empty() ? std::vector<char>(mesh.num_edges(), 1) : sites_.eligible),
       friction_(scene.face_friction),
-      closure_fraction_(scene.closure_fraction),
+      closure_{scene.closure_fraction, {}},
       turning_frames_(scene.corotational && scene.turning_faces),
       body_(scene.bodies[0].domain) {
   if (scene.wall) impact_ = scene.wall->point;
+}
+
+void FragmentationRun::close_as_interfaces(const InterfaceCoupling& coupling) {
+  const double k0 = law_.parameters().initial_stiffness;
+  closure_.per_edge.assign(mesh_.num_edges(), closure_.fraction * k0);  // edges never cracked
+  for (int e = 0; e < mesh_.num_edges(); ++e)
+    if (const int i = coupling.interface_of_edge(e); i >= 0)
+      closure_.per_edge[e] = coupling.penalty(i);
 }
 
 double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
@@ -80,9 +88,9 @@ double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMa
   // lambda_max of a sum is at most the sum of the parts' (an edge is coupled or cohesive, never
   // both, so this is conservative with interfaces coupled from the start).
   return safety * 2.0 /
-         std::sqrt(cells.max_eigenvalue() + coupling_eigenvalue +
-                   CohesiveForces::eigenvalue_bound(mesh_, mass, law_, springs, friction_,
-                                                    closure_fraction_));
+         std::sqrt(
+             cells.max_eigenvalue() + coupling_eigenvalue +
+             CohesiveForces::eigenvalue_bound(mesh_, mass, law_, springs, friction_, closure_));
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,
@@ -93,7 +101,7 @@ void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator
   cohesive_ = std::make_unique<CohesiveForces>(mesh_, law_);
   cohesive_->set_edge_strength(variation.edge_strength(mesh_));
   cohesive_->set_friction(friction_);
-  cohesive_->set_closure_fraction(closure_fraction_);
+  cohesive_->set_closure(closure_);
   cohesive_->set_turning_frames(turning_frames_);
   // The faces there from t = 0, exposed to contact like every crack; DynamicFracture takes them
   // as cracked, and the run's DOF map is split along them from the start (DynamicsModel).

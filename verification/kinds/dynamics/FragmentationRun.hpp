@@ -28,6 +28,10 @@ class FragmentationRun {
   /// mesh cannot carry (a K0 too small for the law's peak to come before delta_c).
   FragmentationRun(const DynamicsScene& scene, const PolygonMesh& mesh, double h_avg);
 
+  /// Each crack face's overclosure penalty becomes its interface's penalty eps in `coupling` (the
+  /// run's interfaces coupled from the start), as in the quasi-static solver, instead of a
+  /// fraction of K0 (cohesive.closure_stiffness "interface"). Call before stable_step and attach.
+  void close_as_interfaces(const InterfaceCoupling& coupling);
   /// safety x the critical step of the cells and the faces' springs together, for every crack
   /// pattern the run can reach.
   /// `coupling_eigenvalue`: the bound of coupled interfaces (InterfaceCoupling), added to both.
@@ -67,7 +71,7 @@ class FragmentationRun {
   CrackSites sites_;            // the problem's: where cracks may form, and those at t = 0
   std::vector<char> eligible_;  // per edge: checked by the criterion
   double friction_;             // on closed faces
-  double closure_fraction_;     // the overclosure penalty, of K0
+  ClosureStiffness closure_;    // the overclosure penalty
   bool turning_frames_;         // the faces' frames turn with them (corotational kinematics)
   Rectangle body_;  // the (first) body, and the wall's point if there is one: where cracks are
   std::optional<Point> impact_;

@@ -33,6 +33,16 @@ std::unique_ptr<ExactSolution> make_problem(const SolveSettings& s, const Rectan
                    "': expected one of beam, patch, patch-mixed, patch-traction, mms");
 }
 
+void require_converged(const SolveResult& r, const SolveSettings& settings) {
+  if (!r.dg || r.dg->stop_reason == "converged" || r.dg->stop_reason == "direct") return;
+  throw NumericalError(settings.formulation + ": the interface iteration " +
+                       (r.dg->stop_reason == "diverged" ? "diverged" : "did not converge") +
+                       " (stop reason " + r.dg->stop_reason + " after " +
+                       std::to_string(r.dg->iterations) + " iterations, relative change " +
+                       fmt(r.dg->last_change, 3) + ", tolerance " + fmt(settings.dg.tolerance, 3) +
+                       "); nothing written: raise --max-iter, or --kp");
+}
+
 double von_mises(const Eigen::Vector3d& s, const IsotropicElasticity& material) {
   const double szz = material.model() == PlaneModel::strain ? material.nu() * (s[0] + s[1]) : 0.0;
   const double a = s[0] - s[1], b = s[1] - szz, c = szz - s[0];

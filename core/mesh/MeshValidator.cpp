@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/geometry/Polygon.hpp"
+#include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 
 namespace vorodg {
@@ -186,6 +187,13 @@ MeshValidationReport validate_mesh(const PolygonMesh& mesh, const MeshValidation
                 " (relative difference " + fmt(mismatch) + ": " +
                 (area < domain_area ? "holes" : "overlaps") + ")");
   return report;
+}
+
+void require_valid_mesh(const PolygonMesh& mesh, const std::string& what) {
+  const MeshValidationReport report = validate_mesh(mesh);
+  if (report.ok()) return;
+  throw InputError(what + " is invalid: " + report.defects.front().what + " (" +
+                   std::to_string(report.defect_count) + " defects; see vorodg mesh --check)");
 }
 
 }  // namespace vorodg

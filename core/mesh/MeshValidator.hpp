@@ -54,4 +54,8 @@ struct MeshValidationReport {
 MeshValidationReport validate_mesh(const PolygonMesh& mesh,
                                    const MeshValidationOptions& options = {});
 
+/// Throws InputError unless `mesh` is valid: "<what> is invalid: <first defect> (<n> defects; see
+/// vorodg mesh --check)", `what` naming where the mesh came from ("mesh rcp", "mesh a.vtu").
+void require_valid_mesh(const PolygonMesh& mesh, const std::string& what);
+
 }  // namespace vorodg

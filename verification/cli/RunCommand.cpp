@@ -23,7 +23,6 @@ fs::path scenes_dir() {
   return fs::path(VORODG_DATA_DIR) / "scenes";
 }
 
-/// A scene given by name ("demo") is looked up among the shipped ones.
 /// "K/N" of --shard.
 Shard parse_shard(const std::string& text) {
   Shard shard;
@@ -40,14 +39,6 @@ void record_scene(const fs::path& out, const fs::path& scene) {
   if (!Ensemble::coordinator()) return;
   write_file_atomically(out / kRunInfoFile,
                         nlohmann::json{{"scene", fs::absolute(scene).string()}}.dump(1) + "\n");
-}
-
-fs::path resolve_scene(const std::string& name) {
-  if (fs::exists(name)) return name;
-  const fs::path shipped = scenes_dir() / (name + ".json");
-  if (fs::exists(shipped)) return shipped;
-  throw InputError("scene '" + name +
-                   "': no such file, and no shipped scene of that name (see vorodg run --list)");
 }
 
 int list_scenes() {
@@ -67,6 +58,14 @@ int list_scenes() {
 }
 
 }  // namespace
+
+std::filesystem::path resolve_scene(const std::string& name) {
+  if (fs::exists(name)) return name;
+  const fs::path shipped = scenes_dir() / (name + ".json");
+  if (fs::exists(shipped)) return shipped;
+  throw InputError("scene '" + name +
+                   "': no such file, and no shipped scene of that name (see vorodg run --list)");
+}
 
 CLI::App* add_run_command(CLI::App& app, RunCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand("run", "Run a study scene and write its report");

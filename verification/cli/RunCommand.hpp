@@ -3,6 +3,7 @@
 // writes its report; `vorodg run --list` lists the shipped scenes, `vorodg run --keys KIND` the
 // keys of a study kind.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
 
 namespace vorodg {
@@ -23,6 +24,8 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options);
 int run_run_command(const RunCommandOptions& options, const CLI::App& command);
 /// The study of `options` without the echo of the command line (what `merge` reuses).
 int run_study_scene(const RunCommandOptions& options);
+/// A scene file, or the shipped scene of that name; throws InputError if neither exists.
+std::filesystem::path resolve_scene(const std::string& name);
 
 /// The file in an output folder that names the scene it was run from (for `vorodg merge`).
 inline constexpr const char* kRunInfoFile = "run.json";

@@ -15,17 +15,6 @@
 namespace vorodg {
 namespace {
 
-/// A DG iteration that did not converge leaves a plausible-looking wrong answer: refuse it.
-void check_converged(const SolveResult& r, const SolveSettings& settings) {
-  if (!r.dg || r.dg->stop_reason == "converged" || r.dg->stop_reason == "direct") return;
-  throw NumericalError(settings.formulation + ": the interface iteration " +
-                       (r.dg->stop_reason == "diverged" ? "diverged" : "did not converge") +
-                       " (stop reason " + r.dg->stop_reason + " after " +
-                       std::to_string(r.dg->iterations) + " iterations, relative change " +
-                       fmt(r.dg->last_change, 3) + ", tolerance " + fmt(settings.dg.tolerance, 3) +
-                       "); nothing written: raise --max-iter, or --kp");
-}
-
 void print_summary(const SolveSettings& settings, const MeshSpec& spec, const RunMetrics& m) {
   std::cout << settings.problem << " on " << family_name(spec.family) << ": " << m.cells
             << " cells, " << m.dofs << " dofs, h_avg " << m.h_avg;
@@ -52,6 +41,10 @@ void print_summary(const SolveSettings& settings, const MeshSpec& spec, const Ru
 
 }  // namespace
 
+int default_solve_threads() {
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   CLI::App* cmd =
       app.add_subcommand("solve", "Solve one problem on one mesh and measure its error");
@@ -60,9 +53,7 @@ CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   cmd->get_option("--domain")->default_str(o.mesh.domain);
   cmd->add_option("--mesh", o.mesh.file, "Read the mesh from this .vtu instead of generating one");
   add_setting_options(*cmd, o.settings);
-  // Both cores by default; results are bitwise the same for any thread count.
-  o.settings.settings.element.threads =
-      static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  o.settings.settings.element.threads = default_solve_threads();
   cmd->get_option("--threads")->default_str(std::to_string(o.settings.settings.element.threads));
   add_vtu_output_options(*cmd, o.output, "Result file");
   cmd->add_option("--metrics", o.metrics, "Metrics file to write (.json)");
@@ -80,30 +71,17 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
   echo_options("vorodg solve", command, resolved_defaults(settings));
   const GeneratedMesh generated = generate_mesh(spec);
   const PolygonMesh& mesh = generated.mesh;
-  const auto validation = validate_mesh(mesh);
-  if (!validation.ok())
-    throw InputError(
-        "mesh " + (spec.path.empty() ? std::string(family_name(spec.family)) : spec.path) +
-        " is invalid: " + validation.defects.front().what + " (" +
-        std::to_string(validation.defect_count) + " defects; see vorodg mesh --check)");
+  require_valid_mesh(
+      mesh, "mesh " + (spec.path.empty() ? std::string(family_name(spec.family)) : spec.path));
   const double mesh_seconds = clock.seconds();
 
   SolveResult r = run_solve(mesh, settings);
   r.seconds["mesh"] = mesh_seconds;
-  check_converged(r, settings);
+  require_converged(r, settings);
   const auto exact = make_problem(settings, mesh.domain());
   const RunMetrics metrics = run_metrics(mesh, r);
 
-  nlohmann::json json = to_json(metrics);
-  json["problem"] = settings.problem;
-  json["formulation"] = settings.formulation;
-  json["family"] = family_name(spec.family);
-  if (r.dg) {
-    json["kp"] = penalty_multiplier(dg_options(settings));
-    json["penalty_scaling"] = penalty_name(penalty_scaling(dg_options(settings)));
-  }
-  json["blas"] = blas_description();
-  if (!o.metrics.empty()) write_json(o.metrics, json);
+  if (!o.metrics.empty()) write_json(o.metrics, solve_record(metrics, settings, spec.family));
   if (!o.output.path.empty())
     write_result(o.output.path, mesh, r, *exact, settings.formulation != "cg", o.output.encoding());
   print_summary(settings, spec, metrics);

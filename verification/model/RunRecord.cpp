@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <type_traits>
+#include "core/util/BlasInfo.hpp"
 #include "core/util/PeakMemory.hpp"
 
 #include "verification/model/Choices.hpp"
@@ -191,6 +192,20 @@ RunRecord record_from_json(const StudyRun& run, const json& line) {
   else
     record.error = line.at("error").get<std::string>();
   return record;
+}
+
+nlohmann::json solve_record(const RunMetrics& metrics, const SolveSettings& settings,
+                            MeshFamily family) {
+  nlohmann::json json = to_json(metrics);
+  json["problem"] = settings.problem;
+  json["formulation"] = settings.formulation;
+  json["family"] = family_name(family);
+  if (metrics.dg) {
+    json["kp"] = penalty_multiplier(dg_options(settings));
+    json["penalty_scaling"] = penalty_name(penalty_scaling(dg_options(settings)));
+  }
+  json["blas"] = blas_description();
+  return json;
 }
 
 }  // namespace vorodg

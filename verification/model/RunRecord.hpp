@@ -70,6 +70,10 @@ const std::vector<RecordField<RunMetrics>>& metrics_fields();
 const std::vector<RecordField<RunRecord>>& run_record_fields();
 
 nlohmann::json to_json(const RunMetrics& metrics);
+/// What `vorodg solve --metrics` writes (and the Python layer returns): the metrics, the problem,
+/// the formulation, the mesh family, the penalty of a DG formulation and the BLAS in use.
+nlohmann::json solve_record(const RunMetrics& metrics, const SolveSettings& settings,
+                            MeshFamily family);
 RunMetrics metrics_from_json(const nlohmann::json& value);
 /// One line of results.jsonl.
 nlohmann::json to_json(const RunRecord& record);

@@ -200,7 +200,8 @@ void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<Ensembl
 }
 
 DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
-                            const fs::path& out) {
+                            const fs::path& out,
+                            const std::function<void(const DynamicsModel&)>& at_end) {
   const Stopwatch clock;
   DynamicsModel model(scene, id);
   DynamicsRecord r;
@@ -232,6 +233,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   if (model.coupling) r.measures.coupling_seconds = model.run->coupling_seconds();
   r.seconds = clock.seconds();
   r.loop_seconds = r.seconds - setup;
+  if (at_end) at_end(model);
   return r;
 }
 

@@ -4,6 +4,8 @@
 // series are written as it goes (atomically, so a stopped run leaves only whole files); what it
 // measured becomes one record.
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,8 @@
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 
 namespace vorodg {
+
+class DynamicsModel;
 
 struct DynamicsRecord {
   EnsembleRunId run;
@@ -37,7 +41,13 @@ void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<Ensembl
 /// Runs one realization, writing history/<id>.csv and (outputs.vtu) vtu/<id>.pvd under `out`.
 /// A run that becomes unstable or breaks down numerically stops there: it keeps its history and
 /// is recorded incomplete with the reason.
+/// `at_end`, if given, sees the model after the run (its state, its cracks): what the Python
+/// layer reads the fragments from.
 DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& run,
-                            const std::filesystem::path& out);
+                            const std::filesystem::path& out,
+                            const std::function<void(const DynamicsModel&)>& at_end = {});
+
+/// A record's line of results.jsonl.
+nlohmann::json dynamics_record_json(const DynamicsScene& scene, const DynamicsRecord& record);
 
 }  // namespace vorodg

@@ -296,6 +296,10 @@ std::vector<SceneKey> dynamics_keys() {
 
 }  // namespace
 
+nlohmann::json dynamics_record_json(const DynamicsScene& scene, const DynamicsRecord& record) {
+  return record_json(dynamics_fields(scene), record);
+}
+
 StudyKind dynamics_kind() {
   return {"dynamics",
           "explicit dynamics with contact: waves, free bodies, impacts against their theory",

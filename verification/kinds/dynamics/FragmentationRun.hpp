@@ -63,6 +63,8 @@ class FragmentationRun {
               DynamicsMeasures& m) const;
   /// The faces (after attach).
   const CohesiveForces& cohesive() const { return *cohesive_; }
+  /// The fully broken edges now (after attach): what separates the fragments.
+  CrackState broken_state() const { return fracture_->broken_state(); }
 
  private:
   const PolygonMesh& mesh_;

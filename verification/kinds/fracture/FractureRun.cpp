@@ -187,7 +187,7 @@ void check_fracture_meshes(const FractureScene& scene, const std::vector<Ensembl
 }
 
 FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run,
-                            const fs::path& out) {
+                            const fs::path& out, const FracturePathObserver& observe) {
   const Stopwatch clock;
   FractureRecord r;
   r.run = run;
@@ -211,8 +211,11 @@ FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run
   PathRecorder recorder(scene, model, material, out, run.id(), r);
   const double setup_seconds = clock.seconds();
   QuasiStaticPath path(model, scene.loading);
-  r.complete = path.run([&](const PathPoint& p, const Eigen::VectorXd& u,
-                            const std::vector<InterfacePoint>& points) { recorder(p, u, points); });
+  r.complete = path.run(
+      [&](const PathPoint& p, const Eigen::VectorXd& u, const std::vector<InterfacePoint>& points) {
+        recorder(p, u, points);
+        if (observe) observe(model, p, points);
+      });
   recorder.finish();
   r.failure = path.failure();
   r.ended = path.stop_reason();

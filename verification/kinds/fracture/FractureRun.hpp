@@ -4,6 +4,8 @@
 // .vtu atomically, so a stopped run leaves only whole files); its summary becomes one record.
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,10 @@
 #include "verification/kinds/fracture/FractureScene.hpp"
 
 namespace vorodg {
+
+class CohesiveFracture;
+struct PathPoint;
+struct InterfacePoint;
 
 struct FractureRecord {
   EnsembleRunId run;
@@ -39,7 +45,16 @@ GeneratedMesh fracture_run_mesh(const FractureScene& scene, const EnsembleRunId&
 void check_fracture_meshes(const FractureScene& scene, const std::vector<EnsembleRunId>& runs);
 
 /// Runs one realization, writing curves/<id>.csv, cracks/<id>.csv and vtu/<id>.pvd under `out`.
+/// What a caller may watch of a run, point by point: the model, the converged point and the
+/// states of the interface points (the Python layer collects the curve and the cracks from it).
+using FracturePathObserver = std::function<void(
+    const CohesiveFracture& model, const PathPoint& point, const std::vector<InterfacePoint>&)>;
+
 FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run,
-                            const std::filesystem::path& out);
+                            const std::filesystem::path& out,
+                            const FracturePathObserver& observe = {});
+
+/// A record's line of results.jsonl.
+nlohmann::json fracture_record_json(const FractureRecord& record);
 
 }  // namespace vorodg

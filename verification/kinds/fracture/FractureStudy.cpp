@@ -247,6 +247,10 @@ int run_fracture_scene(const StudyCall& call) {
 
 }  // namespace
 
+nlohmann::json fracture_record_json(const FractureRecord& record) {
+  return record_json(fracture_fields(), record);
+}
+
 StudyKind fracture_kind() {
   return {"fracture",
           "cohesive crack growth along a load path: curves, cracks, distributions per level",

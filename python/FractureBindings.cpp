@@ -1,0 +1,256 @@
+// Fracture and fragmentation from Python: one run of a fracture scene (the quasi-static path's
+// curve and its interface states) or of a fragmentation scene (its fragments), run as the study
+// runs it (the same files), and the crack-state measures: fragments of a crack pattern and the
+// Hamming distance of two.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <variant>
+
+#include "core/util/Errors.hpp"
+#include "dg/CohesiveFracture.hpp"
+#include "dg/QuasiStaticPath.hpp"
+#include "fracture/CrackState.hpp"
+#include "fracture/Fragments.hpp"
+#include "python/Bindings.hpp"
+#include "verification/cli/RunCommand.hpp"
+#include "verification/harness/SceneVariants.hpp"
+#include "verification/kinds/dynamics/DynamicsMesh.hpp"
+#include "verification/kinds/dynamics/DynamicsModel.hpp"
+#include "verification/kinds/dynamics/DynamicsRun.hpp"
+#include "verification/kinds/fracture/FractureRun.hpp"
+
+namespace vorodg::python {
+namespace {
+
+namespace fs = std::filesystem;
+using RunChoice = std::variant<int, std::string>;
+
+/// A scene's text and the name messages give it: a dict, a file or a shipped scene's name.
+std::pair<std::string, std::string> scene_text(const py::handle& scene) {
+  if (py::isinstance<py::dict>(scene)) return {from_python(scene).dump(), "scene"};
+  const fs::path file = resolve_scene(py::str(scene));
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {text.str(), file.string()};
+}
+
+/// The scene's part (itself, or the variant of that label).
+template <class SceneT>
+const SceneT& part(const SceneT& scene, const std::optional<std::string>& variant) {
+  const std::vector<const SceneT*> parts = study_parts(scene);
+  std::string labels;
+  for (const SceneT* p : parts) {
+    if (variant ? p->label == *variant : parts.size() == 1) return *p;
+    labels += (labels.empty() ? "" : ", ") + p->label;
+  }
+  throw InputError(variant ? "variant '" + *variant + "': no such variant (" + labels + ")"
+                           : "the scene has variants: give variant= one of " + labels);
+}
+
+/// The run of the part's meshes: by place (0, 1, ...) or by id ("rcp-L0-R2").
+EnsembleRunId pick_run(const std::vector<SceneMesh>& meshes, const RunChoice& run) {
+  const std::vector<EnsembleRunId> runs = ensemble_runs(meshes);
+  if (const int* i = std::get_if<int>(&run)) {
+    if (*i < 0 || *i >= static_cast<int>(runs.size()))
+      throw InputError("run " + std::to_string(*i) + ": expected 0 <= run < " +
+                       std::to_string(runs.size()));
+    return runs[*i];
+  }
+  std::string ids;
+  for (const EnsembleRunId& id : runs) {
+    if (id.id() == std::get<std::string>(run)) return id;
+    ids += (ids.empty() ? "" : ", ") + id.id();
+  }
+  throw InputError("run '" + std::get<std::string>(run) + "': no such run (" + ids + ")");
+}
+
+/// The columns of a curve, one array each.
+struct Curve {
+  std::map<std::string, std::vector<double>> columns;
+  void add(const std::string& name, double value) { columns[name].push_back(value); }
+  py::dict arrays() const {
+    py::dict out;
+    for (const auto& [name, values] : columns)
+      out[py::str(name)] =
+          py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+    return out;
+  }
+};
+
+/// The interface points of the last point of the path: per interface its mesh edge, and per
+/// point (two per interface) its state (0 intact, 1 cohesive, 2 open) and largest opening.
+struct Interfaces {
+  std::vector<int> edge;
+  std::vector<int> state;
+  std::vector<double> max_opening;
+  void take(const CohesiveFracture& model, const std::vector<InterfacePoint>& points) {
+    edge.clear(), state.clear(), max_opening.clear();
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      if (p % 2 == 0) edge.push_back(model.interfaces().face(static_cast<int>(p)).edge);
+      state.push_back(static_cast<int>(points[p].state));
+      max_opening.push_back(points[p].history.max_opening);
+    }
+  }
+  py::dict arrays() const {
+    py::dict out;
+    const auto n = static_cast<py::ssize_t>(edge.size());
+    out["edge"] = py::array_t<int>(n, edge.data());
+    out["state"] = py::array_t<int>({n, py::ssize_t{2}}, state.data());
+    out["max_opening"] = py::array_t<double>({n, py::ssize_t{2}}, max_opening.data());
+    return out;
+  }
+};
+
+py::dict fracture_path(const py::handle& scene, const std::string& output,
+                       const std::optional<std::string>& variant, const RunChoice& run) {
+  const auto [text, source] = scene_text(scene);
+  const FractureScene parsed = parse_fracture_scene(text, source);
+  const FractureScene& s = part(parsed, variant);
+  const EnsembleRunId id = pick_run(s.meshes, run);
+  Curve curve;
+  Interfaces interfaces;
+  const FractureRecord r =
+      run_fracture(s, id, output,
+                   [&](const CohesiveFracture& model, const PathPoint& p,
+                       const std::vector<InterfacePoint>& points) {
+                     for (const auto& [name, value] : {std::pair{"step", double(p.step)},
+                                                       {"displacement", p.stroke},
+                                                       {"cmod", p.cmod},
+                                                       {"load", p.load},
+                                                       {"external_work", p.external_work},
+                                                       {"elastic_energy", p.energy.elastic},
+                                                       {"dissipated_energy", p.energy.dissipated},
+                                                       {"coupling_energy", p.energy.coupling},
+                                                       {"cohesive_energy", p.energy.cohesive},
+                                                       {"switched_energy", p.energy.switched},
+                                                       {"crack_length", p.energy.crack_length},
+                                                       {"inserted", double(p.inserted)},
+                                                       {"newton_iterations", double(p.iterations)}})
+                       curve.add(name, value);
+                     interfaces.take(model, points);
+                   });
+  py::dict out;
+  out["record"] = to_python(fracture_record_json(r));
+  out["curve"] = curve.arrays();
+  out["interfaces"] = interfaces.arrays();
+  out["mesh"] = MeshObject{fracture_run_mesh(s, id).mesh, MeshFamily::file};
+  return out;
+}
+
+/// What a Fragments object says, copied (it refers to the run's masses, gone after the run).
+struct FragmentData {
+  std::vector<int> cell_fragment, cells;
+  Eigen::VectorXd mass;
+  Eigen::Matrix2Xd centre, velocity;
+
+  explicit FragmentData(const Fragments& pieces)
+      : cell_fragment(pieces.cell_fragments()),
+        cells(pieces.num_fragments()),
+        mass(pieces.masses()),
+        centre(pieces.centres()) {
+    for (int f = 0; f < pieces.num_fragments(); ++f) cells[f] = pieces.num_cells(f);
+  }
+
+  py::dict arrays() const {
+    using Rows = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+    py::dict out;
+    out["cell_fragment"] =
+        py::array_t<int>(static_cast<py::ssize_t>(cell_fragment.size()), cell_fragment.data());
+    out["mass"] = mass;
+    out["centre"] = Rows(centre.transpose());
+    out["cells"] = py::array_t<int>(static_cast<py::ssize_t>(cells.size()), cells.data());
+    if (velocity.cols() > 0) out["velocity"] = Rows(velocity.transpose());
+    return out;
+  }
+};
+
+py::dict fragmentation_run(const py::handle& scene, const std::string& output,
+                           const std::optional<std::string>& variant, const RunChoice& run,
+                           bool force) {
+  const auto [text, source] = scene_text(scene);
+  const DynamicsScene parsed = parse_dynamics_scene(text, source, force);
+  const DynamicsScene& s = part(parsed, variant);
+  if (!s.fragmentation)
+    throw InputError(source + ": a dynamics scene; fragmentation_run takes a fragmentation one");
+  const EnsembleRunId id = pick_run(s.meshes, run);
+  std::optional<FragmentData> fragments;
+  std::vector<int> broken;
+  std::optional<PolygonMesh> mesh;
+  DynamicsRecord r;
+  {
+    py::gil_scoped_release unlocked;
+    r = run_dynamics(s, id, output, [&](const DynamicsModel& model) {
+      const CrackState state = model.cracks->broken_state();
+      const Fragments pieces(state, model.mass.pair_masses());
+      fragments.emplace(pieces);
+      fragments->velocity = pieces.velocities(model.run->dofs(), model.run->velocity());
+      broken.assign(state.flags().begin(), state.flags().end());
+      mesh.emplace(model.mesh());
+    });
+  }
+  py::dict out;
+  out["record"] = to_python(dynamics_record_json(s, r));
+  out["fragments"] = fragments->arrays();
+  out["broken"] = py::array_t<int>(static_cast<py::ssize_t>(broken.size()), broken.data());
+  out["mesh"] = MeshObject{std::move(*mesh), MeshFamily::file};
+  return out;
+}
+
+using Flags = py::array_t<int, py::array::c_style | py::array::forcecast>;
+
+/// Per mesh edge, 0 or 1, from as many booleans or integers (a list or an array).
+std::vector<char> edge_flags(const PolygonMesh& mesh, const Flags& flags, const char* what) {
+  if (flags.ndim() != 1 || flags.size() != mesh.num_edges())
+    throw InputError(std::string(what) + ": " + std::to_string(flags.size()) +
+                     " values, expected one per mesh edge (" + std::to_string(mesh.num_edges()) +
+                     ")");
+  std::vector<char> out(flags.size());
+  for (py::ssize_t e = 0; e < flags.size(); ++e) out[e] = flags.data()[e] != 0;
+  return out;
+}
+
+}  // namespace
+
+void bind_fracture(py::module_& m) {
+  m.def("fracture_path", &fracture_path, py::arg("scene"), py::arg("output"),
+        py::arg("variant") = py::none(), py::arg("run") = 0,
+        "One run of a fracture scene (a file, a shipped name or a dict; variant= its label; "
+        "run= its place among the mesh runs, or its id 'rcp-L0-R1'), as the study runs it, "
+        "writing its curve, cracks and frames under output. Returns a dict: record (its "
+        "results.jsonl line), curve (arrays per column: step, displacement, cmod, load, "
+        "energies, crack_length, inserted, newton_iterations), interfaces at the last point "
+        "(edge per interface; state 0 intact, 1 cohesive, 2 open and max_opening per Gauss "
+        "point, shape (interfaces, 2)) and mesh.");
+  m.def("fragmentation_run", &fragmentation_run, py::arg("scene"), py::arg("output"),
+        py::arg("variant") = py::none(), py::arg("run") = 0, py::arg("force") = false,
+        "One run of a fragmentation scene (as fracture_path), as the study runs it. Returns a "
+        "dict: record, fragments at the end (cell_fragment per cell; mass, centre (k, 2) in the "
+        "reference configuration, velocity (k, 2), cells per fragment), broken (per mesh edge, "
+        "1 where fully broken) and mesh.");
+  m.def(
+      "fragments",
+      [](const MeshObject& mesh, const Flags& cracked, double density) {
+        const CrackState state(mesh.mesh, edge_flags(mesh.mesh, cracked, "cracked"));
+        return FragmentData(Fragments(state, density)).arrays();
+      },
+      py::arg("mesh"), py::arg("cracked"), py::arg("density") = 1.0,
+      "The fragments a crack pattern (per mesh edge, true where cracked) cuts the mesh into: "
+      "cell_fragment, mass (density x area), centre (k, 2), cells per fragment.");
+  m.def(
+      "hamming",
+      [](const MeshObject& mesh, const Flags& a, const Flags& b) {
+        return CrackState::hamming(CrackState(mesh.mesh, edge_flags(mesh.mesh, a, "a")),
+                                   CrackState(mesh.mesh, edge_flags(mesh.mesh, b, "b")));
+      },
+      py::arg("mesh"), py::arg("a"), py::arg("b"),
+      "The Hamming distance of two crack patterns on one mesh: the interior edges cracked in one "
+      "and not the other.");
+}
+
+}  // namespace vorodg::python

@@ -1,0 +1,85 @@
+"""Fracture and fragmentation from Python: the quasi-static path's curve and interface states
+(the run's own record and files), a fragmentation run's fragments (momentum and mass add up),
+and the crack-state measures on a cut mesh."""
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from conftest import ROOT, vorodg
+
+SCENES = ROOT / "data" / "scenes"
+
+
+def shipped(name):
+    return json.loads((SCENES / f"{name}.json").read_text())
+
+
+@pytest.fixture(scope="module")
+def path_run(tmp_path_factory):
+    scene = shipped("tpb-dynamic-static")
+    scene["meshes"][0].update(sizes=[0.04], realizations=1)
+    scene["loading"] = {"control": "cmod", "max_cmod": 3e-4, "steps": 30}
+    out = tmp_path_factory.mktemp("tpb")
+    return vorodg.fracture_path(scene, str(out), variant="case1"), out
+
+
+def test_the_curve_is_the_runs(path_run):
+    r, out = path_run
+    curve, record = r["curve"], r["record"]
+    assert record["complete"] and record["id"] == "rcp-L0-R0"
+    assert len(curve["load"]) == record["points"] and curve["step"][0] == 0  # from rest
+    assert curve["load"].max() == record["peak_load"]
+    with open(out / "curves" / "rcp-L0-R0.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert np.allclose([float(x["load"]) for x in rows], curve["load"], rtol=1e-11, atol=0)
+
+
+def test_the_interfaces_say_where_it_cracked(path_run):
+    r, _ = path_run
+    faces, mesh = r["interfaces"], r["mesh"]
+    assert faces["state"].shape == faces["max_opening"].shape == (len(faces["edge"]), 2)
+    assert set(np.unique(faces["state"])) <= {0, 1, 2}
+    # Case 1: the line is cohesive from the start; what opened is on the line x = 1.
+    opened = faces["edge"][(faces["max_opening"] > 0).any(axis=1)]
+    assert len(opened) > 0
+    ends = mesh.vertices[mesh.edges[opened]]
+    assert np.allclose(ends[:, :, 0], 1.0, atol=1e-12)
+
+
+def test_fragments_and_hamming_of_a_cut_mesh():
+    mesh = vorodg.generate_mesh(family="quad", domain=(0, 0, 2, 1), h=0.25)
+    mid = mesh.vertices[mesh.edges]  # (edges, 2 ends, xy)
+    cut = np.all(np.isclose(mid[:, :, 0], 1.0), axis=1) & (mesh.edge_cells[:, 1] >= 0)
+    f = vorodg.fragments(mesh, cut, density=2.0)
+    assert len(f["mass"]) == 2 and np.allclose(f["mass"], 2.0)  # density x area 1
+    assert np.allclose(sorted(f["centre"][:, 0]), [0.5, 1.5])
+    assert f["cells"].sum() == mesh.num_cells
+    assert vorodg.hamming(mesh, cut, np.zeros_like(cut)) == np.count_nonzero(cut)
+    assert vorodg.hamming(mesh, cut, cut) == 0
+    with pytest.raises(ValueError, match="expected one per mesh edge"):
+        vorodg.fragments(mesh, cut[:-1])
+
+
+def test_a_fragmentation_run_gives_its_fragments(tmp_path):
+    scene = shipped("strip-fragmentation-quick")
+    r = vorodg.fragmentation_run(scene, str(tmp_path), variant=None if "variants" not in scene
+                                 else scene["variants"][0]["label"])
+    f, record = r["fragments"], r["record"]
+    assert record["complete"]
+    k = len(f["mass"])
+    assert k == record["fragments"] and f["centre"].shape == f["velocity"].shape == (k, 2)
+    assert f["cells"].sum() == r["mesh"].num_cells
+    assert len(r["broken"]) == r["mesh"].num_edges
+    assert np.count_nonzero(r["broken"]) == record["broken_edges"]
+
+
+def test_bad_choices_are_named(tmp_path):
+    scene = shipped("tpb-dynamic-static")
+    with pytest.raises(ValueError, match="the scene has variants: give variant= one of case1, case2"):
+        vorodg.fracture_path(scene, str(tmp_path))
+    with pytest.raises(ValueError, match=r"run 7: expected 0 <= run < 3"):
+        vorodg.fracture_path(scene, str(tmp_path), variant="case1", run=7)
+    with pytest.raises(ValueError, match=r"run 'rcp-L0-R9': no such run \(rcp-L0-R0, rcp-L0-R1, rcp-L0-R2\)"):
+        vorodg.fracture_path(scene, str(tmp_path), variant="case1", run="rcp-L0-R9")

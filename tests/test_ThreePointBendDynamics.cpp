@@ -12,7 +12,8 @@
 //     ligament's fracture energy and all of it, and writes its curve;
 //   - bad input (a speed <= 0, a travel <= 0, a notch as deep as the beam, a mode the problem does
 //   not
-//     have, a thickness on another problem, a mesh without edges along the crack line) is refused
+//     have, a thickness on another problem, a mesh without edges along the crack line, the
+//     interfaces' closure without interfaces) is refused
 //     with one InputError naming the key.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -365,6 +366,10 @@ TEST(ThreePointBendDynamics, RefusesBadInput) {
   refused({{"notch_depth", 0.2}}, "notch_depth");
   refused({{"cracking", {{"mode", "arbitrary"}}}}, "cracking.mode");
   refused({{"study", "dynamics"}}, "problem");
+  // The interfaces' penalty as the closure needs interfaces (the default approach inserts).
+  refused({{"cohesive", {{"closure_stiffness", "interface"}}}}, "closure_stiffness");
+  refused({{"cohesive", {{"closure_stiffness", "stiff"}}}, {"interfaces", "dg"}},
+          "closure_stiffness");
   // A mesh without edges along the crack line: refused before anything runs.
   const DynamicsScene plain =
       quick({{"meshes", json::array({{{"family", "rcp"}, {"sizes", {0.04}}, {"seed", 2008}}})}});

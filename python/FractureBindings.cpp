@@ -7,10 +7,9 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <variant>
 
+#include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "dg/CohesiveFracture.hpp"
 #include "dg/QuasiStaticPath.hpp"
@@ -34,10 +33,7 @@ using RunChoice = std::variant<int, std::string>;
 std::pair<std::string, std::string> scene_text(const py::handle& scene) {
   if (py::isinstance<py::dict>(scene)) return {from_python(scene).dump(), "scene"};
   const fs::path file = resolve_scene(py::str(scene));
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {text.str(), file.string()};
+  return {read_file(file), file.string()};
 }
 
 /// The scene's part (itself, or the variant of that label).

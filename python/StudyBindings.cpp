@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
@@ -21,18 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-nlohmann::json read_json_file(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return nlohmann::json::parse(text.str());
-}
-
 /// One folder's summary.json and results*.jsonl records (in file order).
 py::dict folder_results(const fs::path& folder) {
   py::dict out;
   out["summary"] = fs::exists(folder / "summary.json")
-                       ? to_python(read_json_file(folder / "summary.json"))
+                       ? to_python(nlohmann::json::parse(read_file(folder / "summary.json")))
                        : py::none();
   nlohmann::json records = nlohmann::json::array();
   std::vector<fs::path> files;

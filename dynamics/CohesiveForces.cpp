@@ -139,51 +139,6 @@ void CohesiveForces::add_edge(int e, const Carried& carried) {
   }
 }
 
-double CohesiveForces::eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
-                                        const CohesiveLaw& law, const std::vector<char>& eligible,
-                                        double friction, const ClosureStiffness& closure) {
-  const double beta = law.parameters().shear_factor, k0 = law.parameters().initial_stiffness;
-  // The law's tangent never exceeds K0 diag(1, beta^2) on any branch; the closure k adds
-  // diag(k, 0) in compression, and a sticking face diag(0, k) beside it. The face's spring is
-  // diagonal in its frame: its largest stiffness is the larger of the two.
-  auto face_stiffness = [&](int e) {
-    const double k = closure.of_edge(e, k0);
-    return std::max({k0, k, k0 * beta * beta + (friction > 0.0 ? k : 0.0)});
-  };
-  std::vector<std::vector<double>> row(mesh.num_cells());
-  for (int c = 0; c < mesh.num_cells(); ++c) row[c].assign(mesh.cell_size(c), 0.0);
-  const SegmentRule& rule = gauss2_segment();
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    if (!eligible[e] || mesh.edge(e).cell1 < 0) continue;
-    const Face f = make_face(mesh, e);
-    const int cells[4] = {mesh.edge(e).cell0, mesh.edge(e).cell0, mesh.edge(e).cell1,
-                          mesh.edge(e).cell1};
-    const int local[4] = {f.side0[0], f.side0[1], f.side1[0], f.side1[1]};
-    for (int q = 0; q < 2; ++q) {
-      const double s = rule.t[q], k = face_stiffness(e) * rule.weights[q] * f.length;
-      double b[4], sum = 0.0;
-      for (int j = 0; j < 4; ++j) {
-        b[j] = (j % 2 == 0 ? 1.0 - s : s) / std::sqrt(mass.pair_mass(cells[j], local[j]));
-        sum += b[j];
-      }
-      for (int j = 0; j < 4; ++j) row[cells[j]][local[j]] += k * b[j] * sum;
-    }
-  }
-  double most = 0.0;
-  for (const auto& r : row)
-    for (double x : r) most = std::max(most, x);
-  return most;
-}
-
-double CohesiveForces::stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
-                                   const LumpedMass& mass, const CohesiveLaw& law,
-                                   const std::vector<char>& eligible, double safety,
-                                   double friction, const ClosureStiffness& closure) {
-  return safety * 2.0 /
-         std::sqrt(cells.max_eigenvalue() +
-                   eigenvalue_bound(mesh, mass, law, eligible, friction, closure));
-}
-
 void CohesiveForces::bind(const SplitDofMap& dofs) {
   for (Face& f : faces_) bind_face(dofs, f);
 }

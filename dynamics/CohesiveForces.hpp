@@ -43,6 +43,7 @@
 // opening jumps). The law's closed forms (dissipated and stored energy) are given beside it: the
 // two agree as the step shrinks, and their difference is the time discretization's error.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <span>
 #include <vector>
@@ -129,6 +130,19 @@ class CohesiveForces {
   static double eigenvalue_bound(const PolygonMesh& mesh, const LumpedMass& mass,
                                  const CohesiveLaw& law, const std::vector<char>& eligible,
                                  double friction = 0.0, const ClosureStiffness& closure = {});
+  /// The springs of every `eligible` interior edge at their stiffest (the one stiffness of
+  /// eigenvalue_bound, in both directions), assembled on `dofs`: K_s with u.K_s u / 2 the
+  /// springs' energy. On a map split along every eligible edge, the cells' K plus K_s has the
+  /// largest eigenvalue (over M) of every crack pattern a run can reach: a pattern's map is
+  /// this one with the uncracked faces' jumps held at zero, where their springs store nothing,
+  /// so its Rayleigh quotients are some of this system's; the law's tangent on a cracked face
+  /// is below the stiffest spring.
+  static Eigen::SparseMatrix<double> spring_stiffness(const PolygonMesh& mesh,
+                                                      const SplitDofMap& dofs,
+                                                      const CohesiveLaw& law,
+                                                      const std::vector<char>& eligible,
+                                                      double friction = 0.0,
+                                                      const ClosureStiffness& closure = {});
   /// safety x the critical step of the cells (`cells`, the cell-by-cell bound, valid for every
   /// split) and the springs together: stable for every crack pattern a run can reach.
   static double stable_step(const StableTimeStep& cells, const PolygonMesh& mesh,
@@ -212,6 +226,9 @@ class CohesiveForces {
     double length = 0.0;  // |chord|; 0: the reference frame
   };
   static Face make_face(const PolygonMesh& mesh, int e);
+  /// Edge e's face spring at its stiffest: K0, the closure, or the shear with the stick spring.
+  static double stiffest_spring(const CohesiveLaw& law, int e, double friction,
+                                const ClosureStiffness& closure);
   /// The face's (n, t) now: the reference ones, or with turning frames those of the line
   /// through the mean positions of its two sides' ends.
   Frame frame(const Face& face, const Eigen::VectorXd& u) const;

@@ -27,31 +27,45 @@ Ritz top_ritz(const std::vector<double>& alpha, const std::vector<double>& beta)
   return {eig.eigenvalues()[k - 1], std::abs(beta[k - 1] * eig.eigenvectors()(k - 1, k - 1))};
 }
 
+const Eigen::VectorXd& checked_masses(const Eigen::VectorXd& node_masses, const SplitDofMap& dofs) {
+  if (2 * node_masses.size() != dofs.num_dofs())
+    throw InputError("global time step: " + std::to_string(node_masses.size()) +
+                     " node masses for " + std::to_string(dofs.num_nodes()) + " nodes");
+  return node_masses;
+}
+
 }  // namespace
 
 GlobalTimeStep::GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs,
                                const Eigen::VectorXd& node_masses, const StableTimeStep& bound,
-                               const LanczosOptions& options, const InterfaceCoupling* coupling) {
+                               const LanczosOptions& options, const InterfaceCoupling* coupling)
+    : GlobalTimeStep(
+          [&](const Eigen::VectorXd& x, Eigen::VectorXd& Kx) {
+            force.compute(dofs, x, Kx, options.threads);
+            if (coupling) {  // K_F x: add_forces gives -K_F x
+              Eigen::VectorXd coupled = Eigen::VectorXd::Zero(x.size());
+              coupling->add_forces(x, coupled);
+              Kx -= coupled;
+            }
+          },
+          checked_masses(node_masses, dofs),
+          bound.max_eigenvalue() + (coupling ? coupling->eigenvalue_bound(node_masses) : 0.0),
+          options) {}
+
+GlobalTimeStep::GlobalTimeStep(const Stiffness& stiffness, const Eigen::VectorXd& node_masses,
+                               double cap, const LanczosOptions& options) {
   const Eigen::Index n = 2 * node_masses.size();
-  if (n != dofs.num_dofs())
-    throw InputError("global time step: " + std::to_string(node_masses.size()) +
-                     " node masses for " + std::to_string(dofs.num_nodes()) + " nodes");
   Eigen::VectorXd scale(n);  // M^-1/2 per DOF
   for (Eigen::Index i = 0; i < n; ++i) scale[i] = 1.0 / std::sqrt(node_masses[i / 2]);
   Random random(options.seed);
-  Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), f(n), coupled(n);
+  Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), f(n);
   for (Eigen::Index i = 0; i < n; ++i) q[i] = random.uniform(-1.0, 1.0);
   q /= q.norm();
   std::vector<double> alpha, beta;
   double beta_prev = 0.0;
   Ritz ritz;
   for (int j = 0; j < options.max_iterations; ++j) {
-    force.compute(dofs, scale.cwiseProduct(q), f, options.threads);
-    if (coupling) {  // K_F q: add_forces gives -K_F q
-      coupled.setZero();
-      coupling->add_forces(scale.cwiseProduct(q), coupled);
-      f -= coupled;
-    }
+    stiffness(scale.cwiseProduct(q), f);
     w = scale.cwiseProduct(f) - beta_prev * q_prev;
     alpha.push_back(q.dot(w));
     w -= alpha.back() * q;
@@ -68,8 +82,6 @@ GlobalTimeStep::GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs,
   }
   theta_ = ritz.theta;
   residual_ = ritz.residual;
-  const double cap =
-      bound.max_eigenvalue() + (coupling ? coupling->eigenvalue_bound(node_masses) : 0.0);
   const double lambda = std::min(theta_ + residual_, cap);
   critical_ = 2.0 / std::sqrt(lambda);
 }

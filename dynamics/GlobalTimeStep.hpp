@@ -19,6 +19,7 @@
 // InternalForce is thread-count independent, so the estimate does not depend on threads.
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 
 #include "dynamics/InterfaceCoupling.hpp"
 #include "dynamics/InternalForce.hpp"
@@ -41,6 +42,13 @@ class GlobalTimeStep {
   GlobalTimeStep(InternalForce& force, const SplitDofMap& dofs, const Eigen::VectorXd& node_masses,
                  const StableTimeStep& bound, const LanczosOptions& options = {},
                  const InterfaceCoupling* coupling = nullptr);
+  /// K x -> stiffness(x, Kx) for a stiffness K of any make (Kx is overwritten).
+  using Stiffness = std::function<void(const Eigen::VectorXd& x, Eigen::VectorXd& Kx)>;
+  /// The same estimate for a stiffness given as a product, on the DOFs of `node_masses` (x, y per
+  /// node); `cap` is an upper bound of its largest eigenvalue (a proven bound: the estimate is
+  /// never looser than it).
+  GlobalTimeStep(const Stiffness& stiffness, const Eigen::VectorXd& node_masses, double cap,
+                 const LanczosOptions& options = {});
 
   /// 2 / sqrt(lambda), lambda = min(theta + r, cell bound).
   double critical() const { return critical_; }

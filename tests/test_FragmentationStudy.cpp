@@ -1,7 +1,8 @@
 // The fragmentation study kind (a dynamics scene with cracks; verification/kinds/dynamics,
 // docs/fragmentation.md):
 //   - the reader refuses fragmentation keys in a dynamics study, strip-expansion outside a
-//     fragmentation study, the Lanczos step estimate (valid for the uncracked map only), a
+//     fragmentation study, the Lanczos step estimate with interfaces coupled from the start
+//     (valid for the uncracked map only; without them it is the default), a
 //     negative fracture energy, and a K0 too small for the law's peak to come before delta_c,
 //     each with an InputError;
 //   - one run of the stretched strip (2 mm x 10 um, 200 quads, alumina, rate 1e5 /s, the default
@@ -43,8 +44,14 @@ TEST(FragmentationStudy, RefusesWhatItCannotRun) {
     "cohesive": {"strength": 1e6}, "meshes": [{"family": "quad", "sizes": [0.05]}]})";
   EXPECT_THROW(parse_dynamics_scene(wall, "test"), InputError);
   EXPECT_THROW(parse_dynamics_scene(scene("", "dynamics"), "test"), InputError);
-  EXPECT_THROW(parse_dynamics_scene(scene(R"("time": {"estimate": "lanczos"})"), "test"),
-               InputError);
+  EXPECT_EQ(parse_dynamics_scene(scene(""), "test").estimate, StepEstimate::lanczos);
+  EXPECT_NO_THROW(
+      parse_dynamics_scene(scene(R"("interfaces": "dg", "kinematics": "small")"), "test"));
+  EXPECT_THROW(
+      parse_dynamics_scene(
+          scene(R"("interfaces": "dg", "kinematics": "small", "time": {"estimate": "lanczos"})"),
+          "test"),
+      InputError);
   EXPECT_THROW(parse_dynamics_scene(scene(R"("cohesive": {"fracture_energy": -1})"), "test"),
                InputError);
   const DynamicsScene soft =

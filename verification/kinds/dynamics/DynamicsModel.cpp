@@ -105,14 +105,22 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs, const CrackSite
                                         coupling->eigenvalue_bound(mass.node_masses(dofs)))
                       : bound.critical();
   lanczos_iterations = lanczos.iterations();
-  // safety x the chosen estimate; >= 1 only got here with --force. With cracks, the cells' bound
-  // (valid for every split) and the cohesive springs' share.
   if (scene.fragmentation) cracks.emplace(scene, mesh(), bodies.h_avg);
   if (cracks && coupling && scene.interface_closure) cracks->close_as_interfaces(*coupling);
-  dt = cracks ? cracks->stable_step(
-                    bound, mass, scene.safety,
-                    coupling ? coupling->eigenvalue_bound(mass.node_masses(dofs)) : 0.0)
-              : scene.safety * (scene.estimate == StepEstimate::lanczos ? dt_lanczos : dt_cells);
+  if (cracks) {
+    // With cracks, both estimates hold for every crack pattern the run can reach: the cells'
+    // bound (valid for every split) plus the cohesive springs' bound, and the Lanczos estimate
+    // of the cells and springs on the map split wherever a face may form.
+    dt_cells = cracks->stable_step(
+        bound, mass, 1.0, coupling ? coupling->eigenvalue_bound(mass.node_masses(dofs)) : 0.0);
+    if (!coupling) {
+      const GlobalTimeStep split = cracks->estimated_step(force, bound, mass);
+      dt_lanczos = split.critical();
+      lanczos_iterations = split.iterations();
+    }
+  }
+  // safety x the chosen estimate; >= 1 only got here with --force.
+  dt = scene.safety * (scene.estimate == StepEstimate::lanczos ? dt_lanczos : dt_cells);
   // Bulk viscosity's linear term damps the highest mode by xi = b1, which lowers the critical
   // step by sqrt(1 + b1^2) - b1; its quadratic term is checked step by step against what is
   // left (BulkViscosity::set_step_ratio). The plastic contact penalty lowers it by 1 / sqrt(2)

@@ -175,14 +175,14 @@ void DynamicsSceneReader::read_time() {
     t.fail_value("safety", "expected < 1, found " + fmt(s_.safety) +
                                " (the run may blow up; --force allows it)");
   note("time.safety", exact_text(s_.safety));
-  s_.estimate =
-      word(t, "time.estimate", " lanczos cells ", s_.fragmentation ? "cells" : "lanczos") == "cells"
-          ? StepEstimate::cells
-          : StepEstimate::lanczos;
-  if (s_.fragmentation && s_.estimate == StepEstimate::lanczos)
+  s_.estimate = word(t, "time.estimate", " lanczos cells ",
+                     s_.fragmentation && s_.dg_interfaces ? "cells" : "lanczos") == "cells"
+                    ? StepEstimate::cells
+                    : StepEstimate::lanczos;
+  if (s_.fragmentation && s_.dg_interfaces && s_.estimate == StepEstimate::lanczos)
     t.fail_value("estimate",
-                 "'lanczos' holds for the uncracked map only: expected cells in a fragmentation "
-                 "study (the cell bound holds for every crack pattern)");
+                 "'lanczos' holds for the uncracked map only with interfaces: dg: expected cells "
+                 "(the cell bound holds for every crack pattern)");
   s_.output_every = integer(t, "time.output_every");
   s_.history_every = integer(t, "time.history_every");
   t.finish();

@@ -11,6 +11,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "dynamics/DynamicFracture.hpp"
+#include "dynamics/GlobalTimeStep.hpp"
 #include "dynamics/MaterialVariation.hpp"
 #include "dynamics/StableTimeStep.hpp"
 #include "fracture/Fragments.hpp"
@@ -37,6 +38,13 @@ class FragmentationRun {
   /// `coupling_eigenvalue`: the bound of coupled interfaces (InterfaceCoupling), added to both.
   double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety,
                      double coupling_eigenvalue = 0.0) const;
+  /// The critical step of the same system estimated, not bounded (time.estimate "lanczos"):
+  /// Lanczos on the cells (`force`, the linear cell matrices) and the faces' stiffest springs on
+  /// the map split along every face that may crack, whose largest eigenvalue is that of every
+  /// crack pattern the run can reach (CohesiveForces::spring_stiffness). Capped by the bound of
+  /// stable_step. Without interfaces coupled from the start.
+  GlobalTimeStep estimated_step(InternalForce& force, const StableTimeStep& cells,
+                                const LumpedMass& mass) const;
   /// Starts cracking on `run` (before its initialize()) of a material varying as `variation`
   /// (empty: uniform; the run's cell matrices already scaled); with `contact` (the run's), cracks
   /// expose new surface to it. With `coupling` (the run's interfaces coupled from the start),
@@ -78,6 +86,8 @@ class FragmentationRun {
   Rectangle body_;  // the (first) body, and the wall's point if there is one: where cracks are
   std::optional<Point> impact_;
   std::unique_ptr<CohesiveForces> cohesive_;
+  /// Per edge: whether it may carry a face in this run (eligible, or there from t = 0).
+  std::vector<char> spring_edges() const;
   std::unique_ptr<CrackInsertion> insertion_;
   std::unique_ptr<InterfaceActivation> activation_;
   std::unique_ptr<DynamicFracture> fracture_;

@@ -144,7 +144,7 @@ class CentralDifference {
   /// Per node (not per DOF).
   const Eigen::VectorXd& node_masses() const { return mass_node_; }
   /// Reference position of node i (its mesh vertex).
-  const Point& node_position(int i) const { return mesh_.vertex(node_vertex_[i]); }
+  Point node_position(int i) const { return {x0_[2 * i], x0_[2 * i + 1]}; }
   /// The boundary (index in add order) prescribing a node DOF, or -1 if the DOF is free.
   int prescribed_boundary(int dof) const { return prescribed_[dof]; }
 
@@ -189,7 +189,7 @@ class CentralDifference {
   BulkViscosity* bulk_ = nullptr;
   std::vector<VelocityBoundary> boundaries_;
 
-  std::vector<int> node_vertex_;
+  Eigen::VectorXd x0_;           // per node: its vertex's position (x, y), read where u is
   std::vector<int> prescribed_;  // per DOF: boundary index or -1
   Eigen::VectorXd mass_node_;
   Eigen::VectorXd u_, v_, a_, f_int_, f_ext_, f_ext_next_, reaction_;

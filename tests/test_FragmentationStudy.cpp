@@ -2,7 +2,7 @@
 // docs/fragmentation.md):
 //   - the reader refuses fragmentation keys in a dynamics study, strip-expansion outside a
 //     fragmentation study, the Lanczos step estimate with interfaces coupled from the start
-//     (valid for the uncracked map only; without them it is the default), a
+//     (valid for the uncracked map only; without them it is accepted), a
 //     negative fracture energy, and a K0 too small for the law's peak to come before delta_c,
 //     each with an InputError;
 //   - one run of the stretched strip (2 mm x 10 um, 200 quads, alumina, rate 1e5 /s, the default
@@ -44,7 +44,9 @@ TEST(FragmentationStudy, RefusesWhatItCannotRun) {
     "cohesive": {"strength": 1e6}, "meshes": [{"family": "quad", "sizes": [0.05]}]})";
   EXPECT_THROW(parse_dynamics_scene(wall, "test"), InputError);
   EXPECT_THROW(parse_dynamics_scene(scene("", "dynamics"), "test"), InputError);
-  EXPECT_EQ(parse_dynamics_scene(scene(""), "test").estimate, StepEstimate::lanczos);
+  EXPECT_EQ(parse_dynamics_scene(scene(""), "test").estimate, StepEstimate::cells);
+  EXPECT_EQ(parse_dynamics_scene(scene(R"("time": {"estimate": "lanczos"})"), "test").estimate,
+            StepEstimate::lanczos);
   EXPECT_NO_THROW(
       parse_dynamics_scene(scene(R"("interfaces": "dg", "kinematics": "small")"), "test"));
   EXPECT_THROW(

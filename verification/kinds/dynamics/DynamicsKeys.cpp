@@ -247,12 +247,12 @@ std::vector<SceneKey> time_keys() {
               "the number of steps, instead of an end time (not with time.end)", 1.0, false, 1e9),
       bounded("time.safety", "number", "0.9", "0 < safety < 1 (up to 10 only with --force)",
               "dt = safety x the critical step", 0.0, true, 10.0),
-      key("time.estimate", "string", "lanczos; fragmentation with interfaces dg: cells",
-          "lanczos or cells",
+      key("time.estimate", "string", "lanczos; fragmentation: cells", "lanczos or cells",
           "which critical step dt uses: the Lanczos estimate of the assembled system or the "
           "cell-by-cell bound (both are reported); with cracks both hold for every crack pattern: "
           "the estimate is of the cells and the cohesive springs on the map split wherever a face "
-          "may form, the bound the cells' plus the springs'; with interfaces dg only the bound"),
+          "may form (22-23 % fewer steps on the column, and fewer fragments: docs/impact.md), the "
+          "bound the cells' plus the springs'; with interfaces dg only the bound"),
       bounded("time.output_every", "integer", "100", "1 <= output_every <= 1e9",
               "steps between rewrites of the history file and between .vtu frames", 1.0, false,
               1e9),

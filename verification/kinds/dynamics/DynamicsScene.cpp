@@ -175,10 +175,10 @@ void DynamicsSceneReader::read_time() {
     t.fail_value("safety", "expected < 1, found " + fmt(s_.safety) +
                                " (the run may blow up; --force allows it)");
   note("time.safety", exact_text(s_.safety));
-  s_.estimate = word(t, "time.estimate", " lanczos cells ",
-                     s_.fragmentation && s_.dg_interfaces ? "cells" : "lanczos") == "cells"
-                    ? StepEstimate::cells
-                    : StepEstimate::lanczos;
+  s_.estimate =
+      word(t, "time.estimate", " lanczos cells ", s_.fragmentation ? "cells" : "lanczos") == "cells"
+          ? StepEstimate::cells
+          : StepEstimate::lanczos;
   if (s_.fragmentation && s_.dg_interfaces && s_.estimate == StepEstimate::lanczos)
     t.fail_value("estimate",
                  "'lanczos' holds for the uncracked map only with interfaces: dg: expected cells "

@@ -50,7 +50,8 @@ class GlobalTimeStep {
   GlobalTimeStep(const Stiffness& stiffness, const Eigen::VectorXd& node_masses, double cap,
                  const LanczosOptions& options = {});
 
-  /// 2 / sqrt(lambda), lambda = min(theta + r, cell bound).
+  /// 2 / sqrt(lambda), lambda = min(theta + r, cap): the cap is the cell bound (plus the
+  /// interfaces') for the first constructor.
   double critical() const { return critical_; }
   /// safety x critical(); throws InputError unless 0 < safety <= 1.
   double step(double safety = StableTimeStep::kDefaultSafety) const;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/mesh/MeshValidator.hpp"
+#include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "python/Bindings.hpp"
@@ -95,6 +96,7 @@ py::dict solve(const MeshObject& object, const py::kwargs& kwargs) {
   SolveResult r;
   {
     py::gil_scoped_release unlocked;  // other Python threads run meanwhile
+    const ScopedBlasThreads blas(settings.element.threads);
     r = run_solve(mesh, settings);
   }
   require_converged(r, settings);

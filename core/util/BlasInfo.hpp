@@ -13,4 +13,19 @@ std::string blas_description();
 /// 1: OpenBLAS's spinning threads on top of parallel runs made fig26 1.5x slower.
 int set_blas_threads(int threads);
 
+/// The BLAS's thread count set for a scope and restored after it. A single solve asked for N
+/// threads takes N in the factorization's BLAS too: otherwise OpenBLAS starts one per core
+/// whatever --threads says (measured: a "one-thread" solve at 1e5 cells factored on both
+/// cores, its idle threads spinning in sched_yield).
+class ScopedBlasThreads {
+ public:
+  explicit ScopedBlasThreads(int threads) : previous_(set_blas_threads(threads)) {}
+  ~ScopedBlasThreads() { set_blas_threads(previous_); }
+  ScopedBlasThreads(const ScopedBlasThreads&) = delete;
+  ScopedBlasThreads& operator=(const ScopedBlasThreads&) = delete;
+
+ private:
+  int previous_;
+};
+
 }  // namespace vorodg

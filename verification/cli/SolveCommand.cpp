@@ -75,7 +75,11 @@ int run_solve_command(const SolveCommandOptions& o, const CLI::App& command) {
       mesh, "mesh " + (spec.path.empty() ? std::string(family_name(spec.family)) : spec.path));
   const double mesh_seconds = clock.seconds();
 
-  SolveResult r = run_solve(mesh, settings);
+  SolveResult r;
+  {
+    const ScopedBlasThreads blas(settings.element.threads);
+    r = run_solve(mesh, settings);
+  }
   r.seconds["mesh"] = mesh_seconds;
   require_converged(r, settings);
   const auto exact = make_problem(settings, mesh.domain());

@@ -74,7 +74,7 @@ void BM_StudyOnOneMesh(benchmark::State& state) {
   for (double kp : {1e1, 1e2, 1e3, 1e4}) add("dg-nitsche", kp);
   add("dg-al", 1e3);
   add("dg-sipg", 1e3);
-  const int blas_threads = set_blas_threads(1);  // as a study runs
+  const ScopedBlasThreads blas(1);  // as a study runs
   double l2 = 0.0;
   for (auto _ : state) {
     std::optional<SharedMeshWork> shared;
@@ -82,7 +82,6 @@ void BM_StudyOnOneMesh(benchmark::State& state) {
     for (const SolveSettings& s : runs)
       l2 += run_solve(mesh.mesh, s, shared ? &*shared : nullptr).l2_error;
   }
-  set_blas_threads(blas_threads);
   benchmark::DoNotOptimize(l2);
   state.counters["cells"] = mesh.mesh.num_cells();
 }

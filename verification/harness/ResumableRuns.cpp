@@ -44,7 +44,7 @@ std::map<std::string, nlohmann::json> run_resumable(
   // One run per thread, and OpenBLAS's threads only where threads outnumber the runs left (a
   // single fine run gets them all; otherwise they would only spin against the workers).
   const int workers = std::clamp(static_cast<int>(tasks.size()), 1, std::max(threads, 1));
-  const int blas_threads = set_blas_threads(std::max(1, threads / workers));
+  const ScopedBlasThreads blas(std::max(1, threads / workers));
   run_tasks(
       tasks, threads,
       [&](const Task& task) {
@@ -58,7 +58,6 @@ std::map<std::string, nlohmann::json> run_resumable(
         done[ids[task.runs.front()]] = nlohmann::json::parse(output.lines.front());
         if (progress) std::cout << "  " << output.notes.front() << "\n" << std::flush;
       });
-  set_blas_threads(blas_threads);
   return done;
 }
 

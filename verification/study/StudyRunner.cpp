@@ -191,20 +191,21 @@ std::vector<RunRecord> run_study(const Scene& scene, const StudyOptions& options
   StudyProgress progress(costs, done, options.progress && Ensemble::coordinator());
   // One run per core: the BLAS must not start threads of its own on top. Always one, so that
   // the results (the BLAS's summation order included) do not depend on --threads.
-  const int blas_threads = set_blas_threads(1);
-  run_tasks(
-      tasks, options.threads, [&](const Task& task) { return solve_task(scene, runs, task); },
-      [&](const Task& task, const TaskOutput& output) {
-        for (std::size_t k = 0; k < task.runs.size(); ++k) {
-          const int i = task.runs[k];
-          // At once: a kill loses only the tasks in flight (a task is the unit a rank reports).
-          out << output.lines[k] << "\n" << std::flush;
-          // Through the line, as a resumed study reads it: the same records either way.
-          records[i] = record_from_json(runs[i], json::parse(output.lines[k]));
-          progress.finished(i);
-        }
-      });
-  set_blas_threads(blas_threads);
+  {
+    const ScopedBlasThreads blas(1);
+    run_tasks(
+        tasks, options.threads, [&](const Task& task) { return solve_task(scene, runs, task); },
+        [&](const Task& task, const TaskOutput& output) {
+          for (std::size_t k = 0; k < task.runs.size(); ++k) {
+            const int i = task.runs[k];
+            // At once: a kill loses only the tasks in flight (a task is the unit a rank reports).
+            out << output.lines[k] << "\n" << std::flush;
+            // Through the line, as a resumed study reads it: the same records either way.
+            records[i] = record_from_json(runs[i], json::parse(output.lines[k]));
+            progress.finished(i);
+          }
+        });
+  }
   if (!Ensemble::writes_reports()) return {};  // the coordinator of a whole study has them all
 
   std::vector<RunRecord> results;

@@ -97,28 +97,23 @@ InternalForce DynamicsModel::make_force(const SplitDofMap& dofs, const CrackSite
       for (int e : *edges) coupling->deactivate(coupling->interface_of_edge(e));
   }
   InternalForce force(mesh(), std::move(matrices));
-  const GlobalTimeStep lanczos(force, dofs, mass.node_masses(dofs), bound, {},
-                               coupling ? &*coupling : nullptr);  // of K: the linear force
-  dt_lanczos = lanczos.critical();
-  // With coupled interfaces the cells' bound holds for the cells alone: theirs is added.
-  dt_cells = coupling ? 2.0 / std::sqrt(bound.max_eigenvalue() +
-                                        coupling->eigenvalue_bound(mass.node_masses(dofs)))
-                      : bound.critical();
-  lanczos_iterations = lanczos.iterations();
   if (scene.fragmentation) cracks.emplace(scene, mesh(), bodies.h_avg);
   if (cracks && coupling && scene.interface_closure) cracks->close_as_interfaces(*coupling);
-  if (cracks) {
-    // With cracks, both estimates hold for every crack pattern the run can reach: the cells'
-    // bound (valid for every split) plus the cohesive springs' bound, and the Lanczos estimate
-    // of the cells and springs on the map split wherever a face may form.
-    dt_cells = cracks->stable_step(
-        bound, mass, 1.0, coupling ? coupling->eigenvalue_bound(mass.node_masses(dofs)) : 0.0);
-    if (!coupling) {
-      const GlobalTimeStep split = cracks->estimated_step(force, bound, mass);
-      dt_lanczos = split.critical();
-      lanczos_iterations = split.iterations();
-    }
-  }
+  // The cells' bound (valid for every split), plus the coupled interfaces' and, with cracks, the
+  // faces' springs': with cracks it holds for every crack pattern the run can reach.
+  const double coupled = coupling ? coupling->eigenvalue_bound(mass.node_masses(dofs)) : 0.0;
+  const double cap =
+      cracks ? cracks->eigenvalue_bound(bound, mass, coupled) : bound.max_eigenvalue() + coupled;
+  dt_cells = 2.0 / std::sqrt(cap);
+  // The Lanczos estimate of K (the linear force): with cracks (and no coupling), of the cells and
+  // springs on the map split wherever a face may form, which holds for every crack pattern too;
+  // otherwise of the map at t = 0.
+  const GlobalTimeStep lanczos = cracks && !coupling
+                                     ? cracks->estimated_step(force, mass, cap)
+                                     : GlobalTimeStep(force, dofs, mass.node_masses(dofs), bound,
+                                                      {}, coupling ? &*coupling : nullptr);
+  dt_lanczos = lanczos.critical();
+  lanczos_iterations = lanczos.iterations();
   // safety x the chosen estimate; >= 1 only got here with --force.
   dt = scene.safety * (scene.estimate == StepEstimate::lanczos ? dt_lanczos : dt_cells);
   // Bulk viscosity's linear term damps the highest mode by xi = b1, which lowers the critical

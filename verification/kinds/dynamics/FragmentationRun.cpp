@@ -87,32 +87,28 @@ std::vector<char> FragmentationRun::spring_edges() const {
   return springs;
 }
 
-double FragmentationRun::stable_step(const StableTimeStep& cells, const LumpedMass& mass,
-                                     double safety, double coupling_eigenvalue) const {
+double FragmentationRun::eigenvalue_bound(const StableTimeStep& cells, const LumpedMass& mass,
+                                          double coupling_eigenvalue) const {
   // lambda_max of a sum is at most the sum of the parts' (an edge is coupled or cohesive, never
   // both, so this is conservative with interfaces coupled from the start).
-  return safety * 2.0 /
-         std::sqrt(cells.max_eigenvalue() + coupling_eigenvalue +
-                   CohesiveForces::eigenvalue_bound(mesh_, mass, law_, spring_edges(), friction_,
-                                                    closure_));
+  return cells.max_eigenvalue() + coupling_eigenvalue +
+         CohesiveForces::eigenvalue_bound(mesh_, mass, law_, spring_edges(), friction_, closure_);
 }
 
-GlobalTimeStep FragmentationRun::estimated_step(InternalForce& force, const StableTimeStep& cells,
-                                                const LumpedMass& mass) const {
+GlobalTimeStep FragmentationRun::estimated_step(InternalForce& force, const LumpedMass& mass,
+                                                double bound) const {
   const std::vector<char> springs = spring_edges();
   std::vector<char> connected(mesh_.num_edges());
   for (int e = 0; e < mesh_.num_edges(); ++e) connected[e] = !springs[e];
   const SplitDofMap split(mesh_, connected);
   const Eigen::SparseMatrix<double> K_s =
       CohesiveForces::spring_stiffness(mesh_, split, law_, springs, friction_, closure_);
-  const double cap = cells.max_eigenvalue() + CohesiveForces::eigenvalue_bound(
-                                                  mesh_, mass, law_, springs, friction_, closure_);
   return GlobalTimeStep(
       [&](const Eigen::VectorXd& x, Eigen::VectorXd& Kx) {
         force.compute(split, x, Kx, 1);
         Kx += K_s * x;
       },
-      mass.node_masses(split), cap);
+      mass.node_masses(split), bound);
 }
 
 void FragmentationRun::attach(CentralDifference& run, const ElasticityIntegrator& integrator,

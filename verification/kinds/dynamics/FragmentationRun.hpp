@@ -31,20 +31,20 @@ class FragmentationRun {
 
   /// Each crack face's overclosure penalty becomes its interface's penalty eps in `coupling` (the
   /// run's interfaces coupled from the start), as in the quasi-static solver, instead of a
-  /// fraction of K0 (cohesive.closure_stiffness "interface"). Call before stable_step and attach.
+  /// fraction of K0 (cohesive.closure_stiffness "interface"). Call before the step's bounds and
+  /// attach.
   void close_as_interfaces(const InterfaceCoupling& coupling);
-  /// safety x the critical step of the cells and the faces' springs together, for every crack
-  /// pattern the run can reach.
-  /// `coupling_eigenvalue`: the bound of coupled interfaces (InterfaceCoupling), added to both.
-  double stable_step(const StableTimeStep& cells, const LumpedMass& mass, double safety,
-                     double coupling_eigenvalue = 0.0) const;
+  /// An upper bound of the largest eigenvalue of the cells and the faces' springs together, for
+  /// every crack pattern the run can reach: the cells' bound plus the springs' (Gershgorin).
+  /// `coupling_eigenvalue`: the bound of coupled interfaces (InterfaceCoupling), added to it.
+  double eigenvalue_bound(const StableTimeStep& cells, const LumpedMass& mass,
+                          double coupling_eigenvalue = 0.0) const;
   /// The critical step of the same system estimated, not bounded (time.estimate "lanczos"):
   /// Lanczos on the cells (`force`, the linear cell matrices) and the faces' stiffest springs on
   /// the map split along every face that may crack, whose largest eigenvalue is that of every
-  /// crack pattern the run can reach (CohesiveForces::spring_stiffness). Capped by the bound of
-  /// stable_step. Without interfaces coupled from the start.
-  GlobalTimeStep estimated_step(InternalForce& force, const StableTimeStep& cells,
-                                const LumpedMass& mass) const;
+  /// crack pattern the run can reach (CohesiveForces::spring_stiffness), capped by `bound`
+  /// (eigenvalue_bound's). Without interfaces coupled from the start.
+  GlobalTimeStep estimated_step(InternalForce& force, const LumpedMass& mass, double bound) const;
   /// Starts cracking on `run` (before its initialize()) of a material varying as `variation`
   /// (empty: uniform; the run's cell matrices already scaled); with `contact` (the run's), cracks
   /// expose new surface to it. With `coupling` (the run's interfaces coupled from the start),

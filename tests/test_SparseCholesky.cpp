@@ -1,12 +1,17 @@
 // The sparse Cholesky wrapper: solves small SPD systems given by their lower triangle (against a
 // dense solve), serves several right-hand sides from one factor, reports a sensible condition
-// estimate, and refuses indefinite, singular and numerically singular matrices with
-// NumericalError.
+// estimate, refuses indefinite, singular and numerically singular matrices with NumericalError,
+// and runs on the calling thread alone (CHOLMOD opens no OpenMP team of its own).
 #include <gtest/gtest.h>
 
+#include <omp.h>
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+
 #include <cmath>
+#include <filesystem>
+#include <iterator>
+#include <thread>
 #include <vector>
 
 #include "core/solve/SparseCholesky.hpp"
@@ -36,6 +41,30 @@ Eigen::MatrixXd spd_matrix(int n) {
     if (i + 4 < n) A(i, i + 4) = A(i + 4, i) = -1.0 + 0.01 * i;
   }
   return A;
+}
+
+/// The lower triangle of a 2-DOF-per-node n x n grid operator, SPD, coupled within each node.
+SpMat grid_lower(int n) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * n + j;
+      for (int d = 0; d < 2; ++d) t.emplace_back(2 * a + d, 2 * a + d, 4.5 + 0.01 * d);
+      t.emplace_back(2 * a + 1, 2 * a, 0.3);
+      if (i + 1 < n)
+        for (int d = 0; d < 2; ++d) t.emplace_back(2 * (a + n) + d, 2 * a + d, -1.0);
+      if (j + 1 < n)
+        for (int d = 0; d < 2; ++d) t.emplace_back(2 * (a + 1) + d, 2 * a + d, -1.0);
+    }
+  SpMat lower(2 * n * n, 2 * n * n);
+  lower.setFromTriplets(t.begin(), t.end());
+  return lower;
+}
+
+/// The threads of this process now.
+long process_threads() {
+  return std::distance(std::filesystem::directory_iterator("/proc/self/task"),
+                       std::filesystem::directory_iterator{});
 }
 
 TEST(SparseCholesky, SolvesSmallSpdSystem) {
@@ -199,19 +228,7 @@ namespace {
 // A matrix given up to the factorization is freed early, and factors to the same bits.
 TEST(SparseCholesky, AMatrixGivenUpFactorsToTheSameBits) {
   for (int n : {12, 60}) {  // 288 DOFs (AMD on the DOFs), 7200 DOFs (METIS on the nodes)
-    std::vector<Eigen::Triplet<double>> t;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const int a = i * n + j;
-        for (int d = 0; d < 2; ++d) t.emplace_back(2 * a + d, 2 * a + d, 4.5 + 0.01 * d);
-        t.emplace_back(2 * a + 1, 2 * a, 0.3);
-        if (i + 1 < n)
-          for (int d = 0; d < 2; ++d) t.emplace_back(2 * (a + n) + d, 2 * a + d, -1.0);
-        if (j + 1 < n)
-          for (int d = 0; d < 2; ++d) t.emplace_back(2 * (a + 1) + d, 2 * a + d, -1.0);
-      }
-    SpMat lower(2 * n * n, 2 * n * n);
-    lower.setFromTriplets(t.begin(), t.end());
+    const SpMat lower = grid_lower(n);
     SpMat given = lower;
     SparseCholesky kept, consumed;
     const FactorizationReport a = kept.factorize(lower);
@@ -224,6 +241,30 @@ TEST(SparseCholesky, AMatrixGivenUpFactorsToTheSameBits) {
     for (Eigen::Index i = 0; i < rhs.size(); ++i)
       ASSERT_EQ(x[i], y[i]) << "n " << n << " entry " << i;
   }
+}
+
+// CHOLMOD's supernodal kernel opens OpenMP teams of 4 around its scatter loops whatever the
+// thread settings; they made a one-thread factorization 2.7x slower. The factorization runs
+// them on the calling thread alone. A fresh thread has no OpenMP workers, so any team it
+// opened would show as new threads of the process.
+TEST(SparseCholesky, OpensNoOpenMpTeamOfItsOwn) {
+  const SpMat lower = grid_lower(150);  // 45,000 DOFs: supernodes large enough for the teams
+  long before = 0, after = 0;
+  std::thread fresh([&] {
+    before = process_threads();
+    SparseCholesky chol;
+    chol.factorize(lower);
+    after = process_threads();
+  });
+  fresh.join();
+  EXPECT_EQ(after, before);
+  int team = 0;
+#pragma omp parallel num_threads(2)
+  {
+#pragma omp single
+    team = omp_get_num_threads();
+  }
+  EXPECT_EQ(team, 2) << "the calling thread's own regions are left as they were";
 }
 
 }  // namespace

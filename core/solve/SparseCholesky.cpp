@@ -10,6 +10,7 @@
 #include <mutex>
 #include <vector>
 
+#include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Stopwatch.hpp"
@@ -229,6 +230,7 @@ FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>&
   if (lower.rows() != lower.cols() || !lower.isCompressed())
     throw NumericalError("internal: factorize needs a square compressed matrix");
   FactorizationReport report;
+  const ScopedSerialOpenMp serial;  // CHOLMOD's own OpenMP teams only slowed it down
   Stopwatch clock;
   const int mode = options.indefinite ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
   const bool reuse = options.reuse_analysis && impl_->factor && impl_->common.supernodal == mode &&

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 #include <link.h>
+#include <omp.h>
 
 #include <climits>
 #include <cstdlib>
@@ -27,6 +28,14 @@ int set_blas_threads(int threads) {
   const int previous = get();
   set(threads);
   return previous;
+}
+
+ScopedSerialOpenMp::ScopedSerialOpenMp() : previous_levels_(omp_get_max_active_levels()) {
+  omp_set_max_active_levels(0);  // every region opened meanwhile runs on this thread alone
+}
+
+ScopedSerialOpenMp::~ScopedSerialOpenMp() {
+  omp_set_max_active_levels(previous_levels_);
 }
 
 std::string blas_description() {

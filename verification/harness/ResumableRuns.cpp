@@ -1,6 +1,5 @@
 #include "verification/harness/ResumableRuns.hpp"
 
-#include <omp.h>
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -48,8 +47,6 @@ std::map<std::string, nlohmann::json> run_resumable(
   run_tasks(
       tasks, threads,
       [&](const Task& task) {
-        omp_set_num_threads(1);  // each run on its own thread: no nested OpenMP teams to spin
-        omp_set_dynamic(1);      // CHOLMOD asks for 4 threads whatever the setting: let them shrink
         const RunOutcome outcome = execute(task.runs.front());
         return TaskOutput{{outcome.record.dump()}, {outcome.progress}};
       },

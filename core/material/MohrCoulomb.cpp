@@ -15,6 +15,7 @@ MohrCoulomb::MohrCoulomb(const MohrCoulombParameters& parameters) : p_(parameter
                     ">= 0");
   require_parameter(std::isfinite(p_.tensile_cutoff) && p_.tensile_cutoff > 0, "tensile_cutoff",
                     p_.tensile_cutoff, "> 0");
+  circle_reach_ = std::sqrt(1.0 + p_.friction * p_.friction);
 }
 
 double MohrCoulomb::utilization(double normal, double shear) const {
@@ -25,6 +26,12 @@ double MohrCoulomb::utilization(double normal, double shear) const {
   const double sliding =
       capacity > 0.0 ? std::abs(shear) / capacity : std::numeric_limits<double>::infinity();
   return std::max(tension, sliding);
+}
+
+double MohrCoulomb::worst_plane_factor(double sxx, double syy, double sxy) const {
+  const double d = 0.5 * (sxx - syy);
+  const double p = 0.5 * (sxx + syy), R = std::sqrt(d * d + sxy * sxy);  // no overflow at stresses
+  return std::max((p + R) / p_.tensile_cutoff, (p_.friction * p + R * circle_reach_) / p_.cohesion);
 }
 
 }  // namespace vorodg

@@ -22,9 +22,18 @@ class MohrCoulomb {
   /// comparing it orders interfaces by how far past the criterion they are.
   double utilization(double normal, double shear) const;
   bool fails(double normal, double shear) const { return utilization(normal, shear) >= 1.0; }
+  /// The worst plane through a point of plane stress (Voigt xx, yy, xy): the least strength
+  /// factor f for which the point's Mohr circle (centre p, radius R) still touches the criterion
+  /// scaled by f,
+  ///     max((p + R) / sigma_o, (mu p + R sqrt(1 + mu^2)) / c).
+  /// Below it no plane fails: sigma_n / f < sigma_o and (|tau| + mu sigma_n) / f < c on every
+  /// plane. Both are linear or convex in the stress, so a mean of stresses that each lie below f
+  /// lies below f too (the insertion check screens edges with it).
+  double worst_plane_factor(double sxx, double syy, double sxy) const;
 
  private:
   MohrCoulombParameters p_;
+  double circle_reach_;  // sqrt(1 + mu^2): the most |tau| + mu sigma_n gains per unit radius
 };
 
 }  // namespace vorodg

@@ -89,6 +89,9 @@ class ContactForces {
   const Point& plane_force() const { return plane_force_; }
   /// Per pair (the mesh's CSR layout), the contact forces of the last evaluation.
   std::span<const Point> pair_forces() const { return force_; }
+  /// The pairs that surface contact or a plane pushed at the last evaluation, ascending: every
+  /// other pair's force is zero.
+  std::span<const int> pushed_pairs() const { return support_; }
   /// Whether a vertex of cell a lies inside cell b or one of b inside a, at the positions of
   /// the last evaluation: what surface contact would push apart (PolygonPenetration's test).
   /// False before the first evaluation. Throws InputError unless both are surface cells.

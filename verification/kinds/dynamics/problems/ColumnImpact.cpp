@@ -28,15 +28,18 @@ class RearStrikeProbe : public ProblemProbe {
     const double half = 0.5 * std::max(column.width(), column.height());
     const PolygonMesh& mesh = bodies.mesh;
     const std::vector<int>& loops = mesh.cell_vertex_list();
-    for (int p = 0; p < static_cast<int>(loops.size()); ++p)
-      if ((mesh.vertex(loops[p]) - scene.wall->point).norm() > half) rear_.push_back(p);
+    rear_.assign(loops.size(), 0);
+    for (std::size_t p = 0; p < loops.size(); ++p)
+      rear_[p] = (mesh.vertex(loops[p]) - scene.wall->point).norm() > half;
   }
 
+  /// Only the pairs contact pushed can carry a plane force: a scan of every rear pair each step
+  /// was 1.4 % of a column run.
   void observe(DynamicsMeasures& m) override {
     if (!std::isnan(m.rear_strike_time) || !run_.contact()) return;
     const auto force = run_.contact()->plane_pair_forces();
-    for (int p : rear_)
-      if (force[p] != Point::Zero()) {
+    for (int p : run_.contact()->pushed_pairs())
+      if (rear_[p] && force[p] != Point::Zero()) {
         m.rear_strike_time = run_.time();
         return;
       }
@@ -44,7 +47,7 @@ class RearStrikeProbe : public ProblemProbe {
 
  private:
   const CentralDifference& run_;
-  std::vector<int> rear_;
+  std::vector<char> rear_;  // per (cell, vertex) pair: in the rear half
 };
 
 class ColumnImpact : public DynamicsProblem {

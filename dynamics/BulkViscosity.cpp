@@ -19,7 +19,8 @@ BulkViscosity::BulkViscosity(const PolygonMesh& mesh, const BulkViscosityParamet
       length_(mesh.num_cells()),
       offsets_(mesh.offsets()),
       pair_force_(2 * std::size_t(offsets_.back()), 0.0),
-      rate_(mesh.num_cells(), 0.0) {
+      rate_(mesh.num_cells(), 0.0),
+      cofactor_(4 * std::size_t(mesh.num_cells()), 0.0) {
   require_parameter(parameters.linear >= 0.0, "bulk viscosity linear", parameters.linear, ">= 0");
   require_parameter(parameters.quadratic >= 0.0, "bulk viscosity quadratic", parameters.quadratic,
                     ">= 0");
@@ -59,15 +60,14 @@ double BulkViscosity::pressure(int c, double rate) const {
   return damping_ratio(c, rate) * density_ * speed_[c] * length_[c] * rate;
 }
 
-void BulkViscosity::cell_force(int c, const int* node, const double* v, const double* u) {
+void BulkViscosity::cell_rate(int c, const int* node, const double* v, const double* u) {
   // Velocities (and displacements) relative to vertex 0 (sum_k b_k = 0, so the same gradient): a
   // translating cell has exactly zero rate, whatever its speed. Read straight from the node
   // arrays: the gathered copies in per-thread buffers were most of this term's cost.
-  const int n = gradient_.cell_size(c);
-  const double* b = gradient_.weights(c);
   const Eigen::Matrix2d gv = gradient_.gradient_at_nodes(c, node, v);
   // The cofactor of F maps b_k to the current configuration's weights (the identity at rest).
-  Eigen::Matrix2d cofactor = Eigen::Matrix2d::Identity();
+  Eigen::Map<Eigen::Matrix2d> cofactor(cofactor_.data() + 4 * std::size_t(c));
+  cofactor.setIdentity();
   double rate = gv(0, 0) + gv(1, 1);
   if (u) {
     const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + gradient_.gradient_at_nodes(c, node, u);
@@ -75,7 +75,14 @@ void BulkViscosity::cell_force(int c, const int* node, const double* v, const do
     rate = cofactor.cwiseProduct(gv).sum() / F.determinant();
   }
   rate_[c] = rate;
-  const double qa = pressure(c, rate) * gradient_.area(c);
+}
+
+void BulkViscosity::cell_force(int c, bool current) {
+  const int n = gradient_.cell_size(c);
+  const double* b = gradient_.weights(c);
+  const Eigen::Map<const Eigen::Matrix2d> cofactor(cofactor_.data() + 4 * std::size_t(c));
+  const bool u = current;
+  const double qa = pressure(c, rate_[c]) * gradient_.area(c);
   double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
   // f_k = -q A cof(F) b_k; the last vertex takes minus the sum of the others, so that round-off
   // moves no momentum (as InternalForce does).
@@ -100,9 +107,14 @@ void BulkViscosity::compute(const SplitDofMap& dofs, const Eigen::VectorXd& v, E
                      std::to_string(pair_force_.size() / 2) + " pairs");
   const int nc = gradient_.num_cells(), nodes = dofs.num_nodes();
   const int* pair_node = dofs.pair_nodes().data();
+  // Rates first, then forces: two short loops let the processor overlap neighbouring cells'
+  // long chains of dependent arithmetic (the gradients' sums, the division, the pressure), which
+  // one loop doing both serialized.
 #pragma omp parallel for schedule(static, 512) num_threads(std::max(threads, 1))
   for (int c = 0; c < nc; ++c)
-    cell_force(c, pair_node + offsets_[c], v.data(), current_ ? u->data() : nullptr);
+    cell_rate(c, pair_node + offsets_[c], v.data(), current_ ? u->data() : nullptr);
+#pragma omp parallel for schedule(static, 512) num_threads(std::max(threads, 1))
+  for (int c = 0; c < nc; ++c) cell_force(c, current_);
   f.resize(2 * nodes);
 #pragma omp parallel for schedule(static, 1024) num_threads(std::max(threads, 1))
   for (int i = 0; i < nodes; ++i) {

@@ -86,7 +86,10 @@ class BulkViscosity {
   double max_damping_ratio() const { return max_xi_; }
 
  private:
-  void cell_force(int c, const int* node, const double* v, const double* u);
+  /// Cell c's volumetric rate and cofactor of F (the identity without `u`), kept.
+  void cell_rate(int c, const int* node, const double* v, const double* u);
+  /// Cell c's pair forces from its kept rate and cofactor.
+  void cell_force(int c, bool current);
   /// The largest xi of the last compute; throws if it passes the allowed one.
   void check();
 
@@ -97,6 +100,7 @@ class BulkViscosity {
   std::vector<double> speed_, length_;  // per cell: c_d and L = sqrt(A)
   std::vector<int> offsets_;
   std::vector<double> pair_force_, rate_;
+  std::vector<double> cofactor_;  // per cell: cof(F), 2 x 2 column-major
   double step_ratio_ = 0.0, allowed_xi_ = 0.0, max_xi_ = 0.0;
 };
 

@@ -68,7 +68,10 @@ double corotational_force(const CorotationalFrames& frames, int c, const double*
     w[2 * k + 1] = u[2 * node[k] + 1] - ry;
   }
   const CorotationalFrames::Turn turn = frames.local_displacements(c, n, w.data(), local.data());
-  f_local.noalias() = Eigen::Map<const Eigen::Matrix<double, M, M>>(K, 2 * n, 2 * n) * local;
+  // Coefficient-based (lazyProduct): Eigen sends a product of this size to its general gemv
+  // kernel, whose setup per call made the corotational force 15 % slower (BM_CorotationalForce).
+  f_local.noalias() =
+      Eigen::Map<const Eigen::Matrix<double, M, M>>(K, 2 * n, 2 * n).lazyProduct(local);
   equilibrate(n, f_local.data());
   frames.global_force(c, turn, local.data(), f_local.data(), f);
   equilibrate(n, f);

@@ -2,6 +2,9 @@
 // (items_per_second; per_core divides by the threads):
 //   BM_InternalForce/N/threads   f = K u over all cells: the cell mat-vecs into pair slots, the
 //                                fixed-order gather to nodes and the ordered energy sum
+//   BM_CorotationalForce/N       the same force with turning frames (the column's kinematics)
+//   BM_BulkViscosity/N           bulk viscosity's cell forces in the current configuration
+//                                (the column's), their gather to nodes and the damping check
 //   BM_Step/N/threads            one whole central-difference step (force, updates, bookkeeping)
 //   BM_Lanczos/N                 the global critical-step estimate (iterations as a counter)
 // Target: >= 2e6 cell-steps/s per core for the internal force at 1e5 cells.
@@ -15,6 +18,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/util/Random.hpp"
+#include "dynamics/BulkViscosity.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/GlobalTimeStep.hpp"
 #include "dynamics/InternalForce.hpp"
@@ -71,6 +75,32 @@ void BM_InternalForce(benchmark::State& state) {
   report(state, m.mesh.num_cells(), threads);
 }
 
+void BM_CorotationalForce(benchmark::State& state) {
+  const Model& m = model(static_cast<int>(state.range(0)));
+  InternalForce force(m.mesh, m.matrices, /*corotational=*/true);
+  const SplitDofMap dofs = SplitDofMap::continuous(m.mesh);
+  const Eigen::VectorXd u = random_vector(dofs.num_dofs(), 1e-6);
+  Eigen::VectorXd f(dofs.num_dofs());
+  for (auto _ : state) benchmark::DoNotOptimize(force.compute(dofs, u, f, 1));
+  report(state, m.mesh.num_cells(), 1);
+}
+
+void BM_BulkViscosity(benchmark::State& state) {
+  const Model& m = model(static_cast<int>(state.range(0)));
+  // The column's b1 and b2; a steel-like dilatational speed.
+  BulkViscosity bulk(m.mesh, {0.06, 1.2}, 7800.0, std::vector<double>(m.mesh.num_cells(), 6000.0));
+  bulk.set_current_configuration(true);
+  const SplitDofMap dofs = SplitDofMap::continuous(m.mesh);
+  const Eigen::VectorXd u = random_vector(dofs.num_dofs(), 1e-6);
+  const Eigen::VectorXd v = random_vector(dofs.num_dofs(), 1e-3);
+  Eigen::VectorXd f(dofs.num_dofs());
+  for (auto _ : state) {
+    bulk.compute(dofs, v, f, 1, &u);
+    benchmark::DoNotOptimize(f.data());
+  }
+  report(state, m.mesh.num_cells(), 1);
+}
+
 void BM_Step(benchmark::State& state) {
   const Model& m = model(static_cast<int>(state.range(0)));
   const int threads = static_cast<int>(state.range(1));
@@ -105,6 +135,8 @@ BENCHMARK(BM_InternalForce)
     ->Args({100000, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(BM_CorotationalForce)->Arg(2500)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BulkViscosity)->Arg(2500)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Step)
     ->Args({100000, 1})
     ->Args({100000, 2})

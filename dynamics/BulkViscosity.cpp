@@ -81,7 +81,6 @@ void BulkViscosity::cell_force(int c, bool current) {
   const int n = gradient_.cell_size(c);
   const double* b = gradient_.weights(c);
   const Eigen::Map<const Eigen::Matrix2d> cofactor(cofactor_.data() + 4 * std::size_t(c));
-  const bool u = current;
   const double qa = pressure(c, rate_[c]) * gradient_.area(c);
   double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
   // f_k = -q A cof(F) b_k; the last vertex takes minus the sum of the others, so that round-off
@@ -89,8 +88,8 @@ void BulkViscosity::cell_force(int c, bool current) {
   double sx = 0.0, sy = 0.0;
   for (int k = 0; k < n - 1; ++k) {
     const Eigen::Vector2d bk =
-        u ? Eigen::Vector2d(cofactor * Eigen::Vector2d(b[2 * k], b[2 * k + 1]))
-          : Eigen::Vector2d(b[2 * k], b[2 * k + 1]);
+        current ? Eigen::Vector2d(cofactor * Eigen::Vector2d(b[2 * k], b[2 * k + 1]))
+                : Eigen::Vector2d(b[2 * k], b[2 * k + 1]);
     f[2 * k] = -qa * bk.x(), f[2 * k + 1] = -qa * bk.y();
     sx += f[2 * k], sy += f[2 * k + 1];
   }

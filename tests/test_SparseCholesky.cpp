@@ -244,7 +244,7 @@ TEST(SparseCholesky, AMatrixGivenUpFactorsToTheSameBits) {
 }
 
 // CHOLMOD's supernodal kernel opens OpenMP teams of 4 around its scatter loops whatever the
-// thread settings; they made a one-thread factorization 2.7x slower. The factorization runs
+// thread settings; they made a one-thread factorization 2.6x slower. The factorization runs
 // them on the calling thread alone. A fresh thread has no OpenMP workers, so any team it
 // opened would show as new threads of the process.
 TEST(SparseCholesky, OpensNoOpenMpTeamOfItsOwn) {

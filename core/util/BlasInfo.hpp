@@ -32,7 +32,7 @@ class ScopedBlasThreads {
 /// settings are per thread, so other threads and our own regions elsewhere are untouched).
 /// CHOLMOD's supernodal factorization opens teams of a fixed 4 threads around its scatter
 /// loops, whatever omp_set_num_threads says; measured at 1e5 cells on this 2-core machine, they
-/// made the factorization 2.7x slower with one thread (2.95 s against 1.09 s, its time spent
+/// made the factorization 2.6x slower with one thread (2.91 s against 1.13 s, its time spent
 /// waking and parking workers) and 1.5x slower with two. Its parallel speed comes from the
 /// BLAS, whose threads are set apart (ScopedBlasThreads).
 class ScopedSerialOpenMp {

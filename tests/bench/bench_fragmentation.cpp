@@ -3,6 +3,8 @@
 //   BM_PlainStep/N            one central-difference step, no cracks (the reference)
 //   BM_InsertionCheck/N       CrackInsertion::failing_edges: every cell's mean stress and every
 //                             edge's Mohr-Coulomb utilization (nothing fails)
+//   BM_TurningInsertionCheck/N the same under turning frames (the column's kinematics), reading
+//                             the local displacements the corotational force has just computed
 //   BM_Remap/N                the connectivity rebuilt after cracks form: SplitDofMap from the
 //                             uncracked edges, CentralDifference::remap (masses, binding, forces)
 //                             from the continuous map to one split at one edge in twenty
@@ -23,6 +25,7 @@
 #include "core/util/Random.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/DynamicFracture.hpp"
+#include "dynamics/InternalForce.hpp"
 #include "dynamics/LumpedMass.hpp"
 #include "dynamics/StableTimeStep.hpp"
 
@@ -100,6 +103,23 @@ void BM_InsertionCheck(benchmark::State& state) {
   report(state, m.mesh.num_cells());
 }
 
+void BM_TurningInsertionCheck(benchmark::State& state) {
+  const Model& m = model(static_cast<int>(state.range(0)));
+  auto run = integrator(m);
+  run->initialize(Eigen::VectorXd::Zero(run->dofs().num_dofs()), expansion(*run, 1.0));
+  for (int s = 0; s < 10; ++s) run->step();  // a small, nonzero strain: nothing fails
+  InternalForce force(m.mesh, m.matrices, /*corotational=*/true);
+  Eigen::VectorXd f;
+  force.compute(run->dofs(), run->displacement(), f, 1);
+  CrackInsertion insertion(m.mesh, m.integrator, m.criterion, m.every_edge);
+  insertion.turn_with(force.frames());
+  const std::vector<char> none(m.mesh.num_edges(), 0);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(insertion.failing_edges(run->dofs(), run->displacement(), none, 1,
+                                                     force.local_displacements()));
+  report(state, m.mesh.num_cells());
+}
+
 void BM_Remap(benchmark::State& state) {
   const Model& m = model(static_cast<int>(state.range(0)));
   auto run = integrator(m);
@@ -154,6 +174,7 @@ BENCHMARK(BM_PlainStep)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_InsertionCheck)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_TurningInsertionCheck)->Arg(2500)->Arg(10000)->UseRealTime();
 BENCHMARK(BM_Remap)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CrackingStep)
     ->Arg(10000)

@@ -33,7 +33,9 @@ double cell_force(const double* K, const int* node, const double* u, double* f) 
     uc[2 * k + 1] = u[2 * node[k] + 1] - ry;
   }
   Eigen::Map<Eigen::Matrix<double, 2 * N, 1>> fc(f);
-  fc.noalias() = Eigen::Map<const Eigen::Matrix<double, 2 * N, 2 * N>>(K) * uc;
+  // Coefficient-based, as in corotational_force below: Eigen's general gemv kernel, which `*`
+  // picks at this size, made BM_PlainStep 3 % slower at 1e4 and 1e5 cells.
+  fc.noalias() = Eigen::Map<const Eigen::Matrix<double, 2 * N, 2 * N>>(K).lazyProduct(uc);
   equilibrate(N, f);
   return 0.5 * uc.dot(fc);
 }

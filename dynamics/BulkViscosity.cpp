@@ -20,6 +20,7 @@ BulkViscosity::BulkViscosity(const PolygonMesh& mesh, const BulkViscosityParamet
       offsets_(mesh.offsets()),
       pair_force_(2 * std::size_t(offsets_.back()), 0.0),
       rate_(mesh.num_cells(), 0.0),
+      xi_(mesh.num_cells(), 0.0),
       cofactor_(4 * std::size_t(mesh.num_cells()), 0.0) {
   require_parameter(parameters.linear >= 0.0, "bulk viscosity linear", parameters.linear, ">= 0");
   require_parameter(parameters.quadratic >= 0.0, "bulk viscosity quadratic", parameters.quadratic,
@@ -57,7 +58,7 @@ double BulkViscosity::damping_ratio(int c, double rate) const {
 }
 
 double BulkViscosity::pressure(int c, double rate) const {
-  return damping_ratio(c, rate) * density_ * speed_[c] * length_[c] * rate;
+  return pressure(c, rate, damping_ratio(c, rate));
 }
 
 void BulkViscosity::cell_rate(int c, const int* node, const double* v, const double* u) {
@@ -81,7 +82,8 @@ void BulkViscosity::cell_force(int c, bool current) {
   const int n = gradient_.cell_size(c);
   const double* b = gradient_.weights(c);
   const Eigen::Map<const Eigen::Matrix2d> cofactor(cofactor_.data() + 4 * std::size_t(c));
-  const double qa = pressure(c, rate_[c]) * gradient_.area(c);
+  xi_[c] = damping_ratio(c, rate_[c]);  // kept: check() no longer computes it again
+  const double qa = pressure(c, rate_[c], xi_[c]) * gradient_.area(c);
   double* f = pair_force_.data() + 2 * std::size_t(offsets_[c]);
   // f_k = -q A cof(F) b_k; the last vertex takes minus the sum of the others, so that round-off
   // moves no momentum (as InternalForce does).
@@ -128,10 +130,11 @@ void BulkViscosity::compute(const SplitDofMap& dofs, const Eigen::VectorXd& v, E
 }
 
 void BulkViscosity::check() {
+  // The first cell with the largest xi: the same cell for any thread count.
   int worst = 0;
   max_xi_ = 0.0;
   for (int c = 0; c < gradient_.num_cells(); ++c)
-    if (const double xi = damping_ratio(c, rate_[c]); xi > max_xi_) max_xi_ = xi, worst = c;
+    if (xi_[c] > max_xi_) max_xi_ = xi_[c], worst = c;
   if (step_ratio_ > 0.0 && max_xi_ > allowed_xi_)
     throw NumericalError(
         "bulk viscosity: cell " + std::to_string(worst) + " changes volume at the rate " +

@@ -88,8 +88,12 @@ class BulkViscosity {
  private:
   /// Cell c's volumetric rate and cofactor of F (the identity without `u`), kept.
   void cell_rate(int c, const int* node, const double* v, const double* u);
-  /// Cell c's pair forces from its kept rate and cofactor.
+  /// Cell c's pair forces from its kept rate and cofactor; keeps its xi for check().
   void cell_force(int c, bool current);
+  /// q of cell c at `rate` whose damping ratio is xi (pressure's formula, xi computed once).
+  double pressure(int c, double rate, double xi) const {
+    return xi * density_ * speed_[c] * length_[c] * rate;
+  }
   /// The largest xi of the last compute; throws if it passes the allowed one.
   void check();
 
@@ -100,6 +104,7 @@ class BulkViscosity {
   std::vector<double> speed_, length_;  // per cell: c_d and L = sqrt(A)
   std::vector<int> offsets_;
   std::vector<double> pair_force_, rate_;
+  std::vector<double> xi_;        // per cell: its damping ratio at the last compute
   std::vector<double> cofactor_;  // per cell: cof(F), 2 x 2 column-major
   double step_ratio_ = 0.0, allowed_xi_ = 0.0, max_xi_ = 0.0;
 };

@@ -66,25 +66,4 @@ Eigen::Vector3d CorotationalFrames::global_stress(const Turn& t, const Eigen::Ve
   return {g(0, 0), g(1, 1), g(0, 1)};
 }
 
-void CorotationalFrames::global_force(int c, const Turn& t, const double* local,
-                                      const double* f_loc, double* global) const {
-  const int first = offsets_[c], n = offsets_[c + 1] - first;
-  const double* p = p_.data() + 2 * std::size_t(first);
-  const double* b = gradient_.weights(c);
-  // g = dE/dtheta = -sum_k f_k . J (u^_k + p_k), J (x, y) = (-y, x).
-  double g = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const double x = local[2 * k] + p[2 * k], y = local[2 * k + 1] + p[2 * k + 1];
-    g -= f_loc[2 * k] * -y + f_loc[2 * k + 1] * x;
-  }
-  const double r2 = t.trace * t.trace + t.skew * t.skew;
-  for (int k = 0; k < n; ++k) {
-    const double bx = b[2 * k], by = b[2 * k + 1];
-    const double dx = (t.trace * -by - t.skew * bx) / r2, dy = (t.trace * bx - t.skew * by) / r2;
-    const double fx = f_loc[2 * k], fy = f_loc[2 * k + 1];
-    global[2 * k] = t.cos * fx - t.sin * fy + g * dx;
-    global[2 * k + 1] = t.sin * fx + t.cos * fy + g * dy;
-  }
-}
-
 }  // namespace vorodg

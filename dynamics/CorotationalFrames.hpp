@@ -92,7 +92,31 @@ class CorotationalFrames {
   /// Cell c's global force (2n, written to `global`) from its turn, its local displacements and
   /// the local force f_loc = K u^.
   void global_force(int c, const Turn& turn, const double* local, const double* f_loc,
-                    double* global) const;
+                    double* global) const {
+    global_force(c, cell_size(c), turn, local, f_loc, global);
+  }
+  /// The same for a caller that knows n (inline, as local_displacements: the force's
+  /// fixed-size loops unroll it).
+  void global_force(int c, int n, const Turn& t, const double* local, const double* f_loc,
+                    double* global) const {
+    const double* p = p_.data() + 2 * std::size_t(offsets_[c]);
+    const double* b = gradient_.weights(c);
+    // g = dE/dtheta = -sum_k f_k . J (u^_k + p_k), J (x, y) = (-y, x).
+    double g = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double x = local[2 * k] + p[2 * k], y = local[2 * k + 1] + p[2 * k + 1];
+      g -= f_loc[2 * k] * -y + f_loc[2 * k + 1] * x;
+    }
+    const double r2 = t.trace * t.trace + t.skew * t.skew;
+    for (int k = 0; k < n; ++k) {
+      const double bx = b[2 * k], by = b[2 * k + 1];
+      const double dx = (t.trace * -by - t.skew * bx) / r2;
+      const double dy = (t.trace * bx - t.skew * by) / r2;
+      const double fx = f_loc[2 * k], fy = f_loc[2 * k + 1];
+      global[2 * k] = t.cos * fx - t.sin * fy + g * dx;
+      global[2 * k + 1] = t.sin * fx + t.cos * fy + g * dy;
+    }
+  }
 
  private:
   /// Cell c's node displacements relative to its vertex 0, in a per-thread buffer.

@@ -28,6 +28,17 @@ CrackInsertion::CrackInsertion(const PolygonMesh& mesh, const ElasticityIntegrat
   tangent_.reserve(mesh.num_edges());
   for (const MeshEdge& e : mesh.edges())
     tangent_.push_back((mesh.vertex(e.v1) - mesh.vertex(e.v0)).normalized());
+  list_checked_edges();
+}
+
+void CrackInsertion::list_checked_edges() {
+  checked_.clear();
+  for (int e = 0; e < mesh_.num_edges(); ++e) {
+    const MeshEdge& edge = mesh_.edge(e);
+    if (!eligible_[e] || edge.cell1 < 0) continue;
+    checked_.push_back(
+        {e, edge.cell0, edge.cell1, edge_strength_.empty() ? 1.0 : edge_strength_[e]});
+  }
 }
 
 void CrackInsertion::vary(const MaterialVariation& variation) {
@@ -36,6 +47,7 @@ void CrackInsertion::vary(const MaterialVariation& variation) {
     for (std::size_t i = offset_[c]; i < offset_[c + 1]; ++i)
       stress_operator_[i] *= variation.stiffness[c];
   edge_strength_ = variation.edge_strength(mesh_);
+  list_checked_edges();
 }
 
 Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,
@@ -96,13 +108,11 @@ std::vector<CrackInsertion::Failure> CrackInsertion::failing_edges(
   for (Eigen::Index c = 0; c < sigma.cols(); ++c)
     worst[c] = criterion_.worst_plane_factor(sigma(0, c), sigma(1, c), sigma(2, c));
   std::vector<Failure> failing;
-  for (int e = 0; e < mesh_.num_edges(); ++e) {
-    const MeshEdge& edge = mesh_.edge(e);
-    if (!eligible_[e] || cracked[e] || edge.cell1 < 0) continue;
-    const double f = edge_strength_.empty() ? 1.0 : edge_strength_[e];
-    if (std::max(worst[edge.cell0], worst[edge.cell1]) < kScreenMargin * f) continue;
-    const Eigen::Vector2d t = traction(sigma, e);
-    if (face_utilization(criterion_, t, f) >= 1.0) failing.push_back({e, t});
+  for (const Checked& k : checked_) {
+    if (cracked[k.edge]) continue;
+    if (std::max(worst[k.cell0], worst[k.cell1]) < kScreenMargin * k.strength) continue;
+    const Eigen::Vector2d t = traction(sigma, k.edge);
+    if (face_utilization(criterion_, t, k.strength) >= 1.0) failing.push_back({k.edge, t});
   }
   return failing;
 }

@@ -75,7 +75,7 @@ double corotational_force(const CorotationalFrames& frames, int c, const double*
   f_local.noalias() =
       Eigen::Map<const Eigen::Matrix<double, M, M>>(K, 2 * n, 2 * n).lazyProduct(local);
   equilibrate(n, f_local.data());
-  frames.global_force(c, turn, local.data(), f_local.data(), f);
+  frames.global_force(c, n, turn, local.data(), f_local.data(), f);
   equilibrate(n, f);
   return 0.5 * local.dot(f_local);
 }

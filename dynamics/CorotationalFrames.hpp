@@ -90,13 +90,8 @@ class CorotationalFrames {
   /// A Voigt stress (xx, yy, xy) of a cell's turned frame in the global one: R s R^T.
   static Eigen::Vector3d global_stress(const Turn& turn, const Eigen::Vector3d& s);
   /// Cell c's global force (2n, written to `global`) from its turn, its local displacements and
-  /// the local force f_loc = K u^.
-  void global_force(int c, const Turn& turn, const double* local, const double* f_loc,
-                    double* global) const {
-    global_force(c, cell_size(c), turn, local, f_loc, global);
-  }
-  /// The same for a caller that knows n (inline, as local_displacements: the force's
-  /// fixed-size loops unroll it).
+  /// the local force f_loc = K u^; n is the cell's size (inline, as local_displacements: the
+  /// force's fixed-size loops unroll it).
   void global_force(int c, int n, const Turn& t, const double* local, const double* f_loc,
                     double* global) const {
     const double* p = p_.data() + 2 * std::size_t(offsets_[c]);

@@ -12,9 +12,9 @@ namespace vorodg {
 CrackInsertion::CrackInsertion(const PolygonMesh& mesh, const ElasticityIntegrator& integrator,
                                const MohrCoulomb& criterion, std::vector<char> eligible,
                                int threads)
-    : mesh_(mesh), criterion_(criterion), eligible_(std::move(eligible)) {
-  if (static_cast<int>(eligible_.size()) != mesh.num_edges())
-    throw InputError("crack insertion: " + std::to_string(eligible_.size()) +
+    : mesh_(mesh), criterion_(criterion) {
+  if (static_cast<int>(eligible.size()) != mesh.num_edges())
+    throw InputError("crack insertion: " + std::to_string(eligible.size()) +
                      " edge flags, expected " + std::to_string(mesh.num_edges()));
   const auto strain = integrator.all_mean_strain_operators(threads);
   const Eigen::Matrix3d& D = integrator.material().D();
@@ -28,16 +28,9 @@ CrackInsertion::CrackInsertion(const PolygonMesh& mesh, const ElasticityIntegrat
   tangent_.reserve(mesh.num_edges());
   for (const MeshEdge& e : mesh.edges())
     tangent_.push_back((mesh.vertex(e.v1) - mesh.vertex(e.v0)).normalized());
-  list_checked_edges();
-}
-
-void CrackInsertion::list_checked_edges() {
-  checked_.clear();
-  for (int e = 0; e < mesh_.num_edges(); ++e) {
-    const MeshEdge& edge = mesh_.edge(e);
-    if (!eligible_[e] || edge.cell1 < 0) continue;
-    checked_.push_back(
-        {e, edge.cell0, edge.cell1, edge_strength_.empty() ? 1.0 : edge_strength_[e]});
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    const MeshEdge& edge = mesh.edge(e);
+    if (eligible[e] && edge.cell1 >= 0) checked_.push_back({e, edge.cell0, edge.cell1, 1.0});
   }
 }
 
@@ -46,8 +39,8 @@ void CrackInsertion::vary(const MaterialVariation& variation) {
   for (int c = 0; c < mesh_.num_cells(); ++c)
     for (std::size_t i = offset_[c]; i < offset_[c + 1]; ++i)
       stress_operator_[i] *= variation.stiffness[c];
-  edge_strength_ = variation.edge_strength(mesh_);
-  list_checked_edges();
+  const std::vector<double> strength = variation.edge_strength(mesh_);
+  for (Checked& k : checked_) k.strength = strength[k.edge];
 }
 
 Eigen::Matrix3Xd CrackInsertion::cell_stresses(const SplitDofMap& dofs, const Eigen::VectorXd& u,

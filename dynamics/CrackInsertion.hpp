@@ -68,17 +68,14 @@ class CrackInsertion {
   std::vector<double> stress_operator_;
   std::vector<Eigen::Vector2d> tangent_;  // per edge, v0 -> v1, unit
   MohrCoulomb criterion_;
-  std::vector<char> eligible_;
-  std::vector<double> edge_strength_;  // per edge; empty: uniform
   /// The edges the check may evaluate (eligible and interior), ascending, with their cells and
-  /// strength factors: the check's loop reads nothing else of an edge until the screen lets it
-  /// through.
+  /// strength factors (1 for a uniform material): the check's loop reads nothing else of an
+  /// edge until the screen lets it through.
   struct Checked {
     int edge, cell0, cell1;
     double strength;
   };
   std::vector<Checked> checked_;
-  void list_checked_edges();
   const CorotationalFrames* frames_ = nullptr;
 };
 

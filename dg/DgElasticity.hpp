@@ -11,7 +11,8 @@
 //   sipg:       a(u,v) - int {sigma(u)}n.[v] + s int {sigma(v)}n.[u] + eps int [u].[v] = l(v),
 //               s = -1 symmetric (SIPG), +1 non-symmetric (NIPG), as MFEM's ex17 (one solve)
 // Each cell's stress on an interface is its point, fan or mean stress (TractionKind).
-// The iterative schemes factor a + eps P once and back-solve per iteration.
+// The iterative schemes factor a + eps P once and back-solve per iteration. Each scheme is one
+// DgFormulation (dg/formulations/), chosen by name; this class knows none of them.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -23,19 +24,15 @@
 #include "core/solve/DirichletConstraints.hpp"
 #include "core/solve/SparseCholesky.hpp"
 #include "core/util/Stopwatch.hpp"
+#include "dg/DgFormulation.hpp"
 #include "interfaces/DgSpace.hpp"
 #include "interfaces/InterfaceOperators.hpp"
 #include "interfaces/InterfacePenalty.hpp"
 
 namespace vorodg {
 
-enum class DgMethod { penalty, augmented_lagrangian, nitsche, sipg };
-
-/// Parses dg-penalty, dg-al, dg-nitsche, dg-sipg; throws InputError otherwise.
-DgMethod parse_dg_method(const std::string& formulation);
-
 struct DgOptions {
-  DgMethod method = DgMethod::nitsche;
+  std::string formulation = "dg-nitsche";  // a registered DgFormulation's name
   // Unset: the method's default (penalty_scaling(), penalty_multiplier()).
   std::optional<PenaltyScaling> penalty;
   std::optional<double> kp;       // multiplier of the scaling: k_p E / h, or k_p eta_F
@@ -48,13 +45,15 @@ struct DgOptions {
   FillOrdering ordering = FillOrdering::node_metis;  // of the sparse Cholesky factor
 };
 
-/// The scaling in effect: the option, else coercive for dg-sipg (a symmetric interior penalty is
-/// only coercive above a mesh-dependent threshold) and h-avg for the others (the report's).
+/// The scaling in effect: the option, else the formulation's default (coercive for dg-sipg, whose
+/// symmetric interior penalty is only coercive above a mesh-dependent threshold; h-avg, the
+/// report's, for the others).
 PenaltyScaling penalty_scaling(const DgOptions& options);
 /// k_p in effect: the option, else 1 for the coercive scaling (the proven bound), 1e3 otherwise.
 double penalty_multiplier(const DgOptions& options);
-/// The stress the interface terms take from each cell: the option, else fan for dg-sipg (own
-/// stress whose trace constant stays bounded at short edges) and mean for the others (Eq. 29).
+/// The stress the interface terms take from each cell: the option, else the formulation's default
+/// (fan for dg-sipg, own stress whose trace constant stays bounded at short edges; mean for the
+/// others, Eq. 29).
 TractionKind interface_traction(const DgOptions& options);
 
 struct DgReport {
@@ -99,10 +98,9 @@ class DgElasticity {
   const StageTimes& seconds() const { return seconds_; }
 
  private:
-  Eigen::VectorXd interface_load(const Eigen::VectorXd& u);
   Eigen::MatrixXd interface_matrix(std::size_t interface) const;
-  void build_consistency();
-  Eigen::MatrixXd consistency_block(std::size_t interface, TractionKind kind) const;
+  /// What the formulation's terms read (after assemble_system()).
+  DgTermContext term_context() const;
   void measure_gap();
   double median_penalty() const;
 
@@ -114,14 +112,13 @@ class DgElasticity {
   SymbolicAnalyses* shared_analyses_ = nullptr;
   DgSpace space_;
   InterfaceOperators ops_;
+  std::unique_ptr<DgFormulation> formulation_;
   std::unique_ptr<InterfacePenalty> penalty_;
 
   std::optional<DirichletConstraints> constraints_;
   Eigen::VectorXd load_, u_;
-  Eigen::SparseMatrix<double> A_;            // free-free block (lower triangle if symmetric)
-  Eigen::SparseMatrix<double> A_fixed_;      // free rows, prescribed columns
-  std::vector<Eigen::Vector2d> lambda_;      // al: multiplier per interface quadrature point
-  Eigen::SparseMatrix<double> consistency_;  // nitsche: int {sigma(u)} n.[v] on all DOFs
+  Eigen::SparseMatrix<double> A_;        // free-free block (lower triangle if symmetric)
+  Eigen::SparseMatrix<double> A_fixed_;  // free rows, prescribed columns
   FactorizationReport factorization_;
   DgReport report_;
   StageTimes seconds_;

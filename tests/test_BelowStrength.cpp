@@ -76,7 +76,7 @@ std::pair<Eigen::VectorXd, int> crack_enabled_solve(const Fixture& f, const Fiel
     setup.constraints.push_back({v, 0, u.x()});
     setup.constraints.push_back({v, 1, u.y()});
   }
-  const CohesiveParameters law{kStrength, 124.0, 1.0, SofteningShape::linear};
+  const CohesiveParameters law{kStrength, 124.0, 1.0, "linear"};
   holder = std::make_unique<CohesiveFracture>(f.table, f.integrator, setup, law,
                                               MohrCoulombParameters{kStrength, 0.75, kStrength},
                                               DgOptions{});
@@ -148,7 +148,7 @@ TEST(BelowStrength, BendingGivesTheElasticDgSolution) {
   EXPECT_EQ(broken, 0);
   const AllDirichlet problem(field);
   DgOptions sipg;
-  sipg.method = DgMethod::sipg;
+  sipg.formulation = "dg-sipg";
   DgElasticity elastic(f.table, f.integrator, problem, sipg);
   elastic.run();
   const PolygonMesh& mesh = f.mesh.mesh;

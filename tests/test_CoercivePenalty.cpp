@@ -10,12 +10,12 @@
 
 #include "cg/CgElasticity.hpp"
 #include "core/mesh/MeshValidator.hpp"
+#include "core/problem/AffineField.hpp"
+#include "core/problem/ErrorNorms.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 #include "dg/DgElasticity.hpp"
 #include "interfaces/TraceConstants.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/ErrorNorms.hpp"
-#include "verification/problems/AffineField.hpp"
-#include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {
 namespace {
@@ -88,7 +88,7 @@ const std::vector<NamedMesh>& small_meshes() {
 
 DgOptions coercive(double kp, TractionKind kind, bool weighted) {
   DgOptions o;
-  o.method = DgMethod::sipg;
+  o.formulation = "dg-sipg";
   o.penalty = PenaltyScaling::coercive;
   o.kp = kp;
   o.traction = kind;
@@ -188,7 +188,7 @@ TEST(CoercivePenalty, OwnStressSipgPassesThePatchTestsEverywhere) {
     for (auto supports : {AffineField::Supports::dirichlet, AffineField::Supports::mixed}) {
       const AffineField field(material, supports);
       DgOptions o;  // the defaults: own-stress symmetric SIPG with the proven penalty
-      o.method = DgMethod::sipg;
+      o.formulation = "dg-sipg";
       DgElasticity dg(table, integrator, field, o);
       ASSERT_NO_THROW(dg.run()) << m.name;
       const ErrorReport e = compute_errors(table, field, [&](int c) { return dg.cell_dofs(c); });
@@ -216,7 +216,7 @@ TEST(CoercivePenalty, BeamErrorIsCgsWithinOnePercent) {
   CgElasticity cg(table, integrator, beam);
   cg.run();
   DgOptions o;
-  o.method = DgMethod::sipg;
+  o.formulation = "dg-sipg";
   DgElasticity dg(table, integrator, beam, o);
   dg.run();
   const ErrorReport ec = compute_errors(table, beam, [&](int c) { return cg.cell_dofs(c); });

@@ -19,8 +19,9 @@
 //    (every formulation and sipg variant).
 // 5. Threads: bitwise identical cell DOFs with 1 and 2 threads (every formulation and variant).
 // 6. The report (penalty, gaps, stage times), edge_gaps against the cell copies; input checks
-//    (k_p <= 0 or non-finite, tolerance <= 0, max_iterations < 1 refused); parse_dg_method
-//    accepts exactly the four names; run_solve gives the same DOFs as the class.
+//    (k_p <= 0 or non-finite, tolerance <= 0, max_iterations < 1 refused); the registry
+//    makes exactly the four shipped formulations by name and refuses others; run_solve gives the
+//    same DOFs as the class.
 // 7. The command line: test_DgCommand.cpp.
 #include <unistd.h>
 
@@ -44,16 +45,16 @@
 #include "core/element/ElementTable.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/problem/AffineField.hpp"
+#include "core/problem/ErrorNorms.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 #include "core/util/Errors.hpp"
 #include "dg/DgElasticity.hpp"
 #include "interfaces/DgSpace.hpp"
 #include "interfaces/InterfaceOperators.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "support/RunVorodg.hpp"
-#include "verification/ErrorNorms.hpp"
 #include "verification/SolveRun.hpp"
-#include "verification/problems/AffineField.hpp"
-#include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {
 namespace {
@@ -69,20 +70,17 @@ const Family& family_named(const std::string& name) {
   throw std::logic_error("no test family " + name);
 }
 
-const char* method_name(DgMethod m) {
-  switch (m) {
-    case DgMethod::penalty: return "dg-penalty";
-    case DgMethod::augmented_lagrangian: return "dg-al";
-    case DgMethod::nitsche: return "dg-nitsche";
-    case DgMethod::sipg: return "dg-sipg";
-  }
-  return "?";
+/// The formulations' names (dg/DgFormulation.hpp's registry).
+using DgMethod = std::string;
+const std::string& method_name(const DgMethod& m) {
+  return m;
 }
+const DgMethod kPenalty = "dg-penalty", kAl = "dg-al", kNitsche = "dg-nitsche", kSipg = "dg-sipg";
 
 /// The report's scaling, eps = k_p E / h_avg (the coercive one has its own test file).
 DgOptions options(DgMethod method, double kp, double tolerance = 1e-12, int max_iterations = 1000) {
   DgOptions o;
-  o.method = method;
+  o.formulation = method;
   o.penalty = PenaltyScaling::h_avg;
   o.kp = kp;
   o.tolerance = tolerance;
@@ -158,7 +156,7 @@ class DgPatchTest : public ::testing::TestWithParam<PatchCase> {
 };
 
 TEST_P(DgPatchTest, AugmentedLagrangianPasses) {
-  const DgRun r = run(options(DgMethod::augmented_lagrangian, 1e3), "dg-al");
+  const DgRun r = run(options(kAl, 1e3), "dg-al");
   EXPECT_EQ(r.report.stop_reason, "converged");
   EXPECT_LT(r.errors.l2_error, 1e-9);
   EXPECT_LT(r.errors.energy_error, 1e-9);
@@ -167,7 +165,7 @@ TEST_P(DgPatchTest, AugmentedLagrangianPasses) {
 }
 
 TEST_P(DgPatchTest, NitschePasses) {
-  const DgRun r = run(options(DgMethod::nitsche, 1e3), "dg-nitsche");
+  const DgRun r = run(options(kNitsche, 1e3), "dg-nitsche");
   EXPECT_EQ(r.report.stop_reason, "converged");
   EXPECT_LT(r.errors.l2_error, 1e-9);
   EXPECT_LT(r.errors.energy_error, 1e-9);
@@ -176,10 +174,10 @@ TEST_P(DgPatchTest, NitschePasses) {
 }
 
 TEST_P(DgPatchTest, SipgPasses) {
-  DgOptions symmetric = options(DgMethod::sipg, 1e3);
+  DgOptions symmetric = options(kSipg, 1e3);
   symmetric.penalty.reset();  // the default: the proven coercive penalty, k_p = 1
   symmetric.kp.reset();
-  DgOptions mean_stress = options(DgMethod::sipg, 1e2);
+  DgOptions mean_stress = options(kSipg, 1e2);
   mean_stress.traction = TractionKind::mean;
   DgOptions non_symmetric = symmetric;
   non_symmetric.sipg_sign = +1;
@@ -199,7 +197,7 @@ TEST_P(DgPatchTest, PenaltyFailsAndImprovesWithKp) {
   std::vector<double> l2;
   const std::vector<double> kps = {1e1, 1e2, 1e3, 1e4, 1e5};
   for (double kp : kps) {
-    const DgRun r = run(options(DgMethod::penalty, kp), "dg-penalty");
+    const DgRun r = run(options(kPenalty, kp), "dg-penalty");
     EXPECT_EQ(r.report.stop_reason, "direct");
     l2.push_back(r.errors.l2_error);
   }
@@ -268,8 +266,7 @@ TEST(DgElasticity, ApproachesCgAsKpGrows) {
   for (const auto& u : b.cg) cg_norm += u.squaredNorm();
   cg_norm = std::sqrt(cg_norm);
   const std::vector<double> kps = {1e2, 1e4, 1e6};
-  const DgMethod methods[] = {DgMethod::penalty, DgMethod::augmented_lagrangian, DgMethod::nitsche,
-                              DgMethod::sipg};
+  const DgMethod methods[] = {kPenalty, kAl, kNitsche, kSipg};
   std::map<DgMethod, std::vector<double>> diff;  // NaN where the run threw
   std::vector<std::string> failures;
   std::cout << "beam on rcp d = 0.15 (" << b.mesh.num_cells()
@@ -284,13 +281,13 @@ TEST(DgElasticity, ApproachesCgAsKpGrows) {
       // SIPG with each cell's own edge stresses needs k_p ~ 1e6 on this mesh (short edges, see
       // OwnStressSipgNeedsALargePenaltyAtShortEdges): the trend is shown with mean stresses.
       DgOptions o = options(m, kp);
-      if (m == DgMethod::sipg) o.traction = TractionKind::mean;
+      if (m == kSipg) o.traction = TractionKind::mean;
       try {
         r = solve_dg(*b.table, *b.problem, o);
       } catch (const std::exception& e) {
         diff[m].push_back(std::numeric_limits<double>::quiet_NaN());
         std::cout << std::setw(14) << "THROWS";
-        failures.push_back(std::string(method_name(m)) + " at k_p " + std::to_string(kp) +
+        failures.push_back(method_name(m) + " at k_p " + std::to_string(kp) +
                            " threw: " + e.what());
         continue;
       }
@@ -298,7 +295,7 @@ TEST(DgElasticity, ApproachesCgAsKpGrows) {
       for (int c = 0; c < b.mesh.num_cells(); ++c) d += (r.cells[c] - b.cg[c]).squaredNorm();
       diff[m].push_back(std::sqrt(d) / cg_norm);
       std::cout << std::setw(14) << diff[m].back();
-      if (m == DgMethod::augmented_lagrangian || m == DgMethod::nitsche) {
+      if (m == kAl || m == kNitsche) {
         EXPECT_EQ(r.report.stop_reason, "converged")
             << method_name(m) << " k_p " << kp << ": " << describe(r);
       }
@@ -309,11 +306,11 @@ TEST(DgElasticity, ApproachesCgAsKpGrows) {
   // dg-al converges to the constrained minimizer: [u] = 0 at both Gauss points of every
   // interface, i.e. a continuous field, i.e. the CG solution, at every k_p (only the iteration
   // tolerance remains). So it is not "decreasing" but below 1e-6 throughout.
-  for (double d : diff[DgMethod::augmented_lagrangian]) EXPECT_LT(d, 1e-6) << "dg-al";
+  for (double d : diff[kAl]) EXPECT_LT(d, 1e-6) << "dg-al";
   // The others approach CG as k_p grows (dg-nitsche converges to the fixed point of
   // a(u,v) - int {sigma_mean(u)}n.[v] + eps int [u].[v] = l(v), which is not the CG solution:
   // observed 4e-4, 4e-6, 2e-7; the last is near the conditioning floor of eps ~ 6e6 E).
-  for (DgMethod m : {DgMethod::penalty, DgMethod::nitsche, DgMethod::sipg})
+  for (DgMethod m : {kPenalty, kNitsche, kSipg})
     for (std::size_t i = 1; i < kps.size(); ++i)
       EXPECT_LT(diff[m][i], diff[m][i - 1])
           << method_name(m) << ": k_p " << kps[i - 1] << " -> " << kps[i];
@@ -330,7 +327,7 @@ TEST(DgElasticity, NitscheWithATinyPenaltyReportsItsOutcome) {
   const Beam& b = beam();
   const ElasticityIntegrator integrator(*b.table, b.material, false);
   for (double kp : {1e-2, 1e-4}) {
-    DgElasticity dg(*b.table, integrator, *b.problem, options(DgMethod::nitsche, kp, 1e-10, 200));
+    DgElasticity dg(*b.table, integrator, *b.problem, options(kNitsche, kp, 1e-10, 200));
     ASSERT_NO_THROW(dg.run()) << "k_p " << kp;
     const DgReport& r = dg.report();
     std::cout << "dg-nitsche k_p " << kp << ", max 200 iterations: " << r.stop_reason << " after "
@@ -361,7 +358,7 @@ TEST(DgElasticity, StopsAtTheIterationLimit) {
   // not as "diverged" once the change stagnates at ~1e-16).
   const Beam& b = beam();
   const ElasticityIntegrator integrator(*b.table, b.material, false);
-  for (DgMethod m : {DgMethod::nitsche, DgMethod::augmented_lagrangian})
+  for (DgMethod m : {kNitsche, kAl})
     for (int limit : {3, 30}) {
       DgElasticity dg(*b.table, integrator, *b.problem, options(m, 1e3, 1e-30, limit));
       ASSERT_NO_THROW(dg.run()) << method_name(m);
@@ -377,8 +374,7 @@ TEST(DgElasticity, NeverExceedsTheIterationLimit) {
   const Beam& b = beam();
   const ElasticityIntegrator integrator(*b.table, b.material, false);
   for (int limit : {1, 2}) {
-    DgElasticity dg(*b.table, integrator, *b.problem,
-                    options(DgMethod::nitsche, 1e3, 1e-30, limit));
+    DgElasticity dg(*b.table, integrator, *b.problem, options(kNitsche, 1e3, 1e-30, limit));
     ASSERT_NO_THROW(dg.run()) << "limit " << limit;
     EXPECT_EQ(dg.report().stop_reason, "max-iterations") << "limit " << limit;
     EXPECT_EQ(dg.report().iterations, limit) << "limit " << limit;
@@ -389,14 +385,14 @@ TEST(DgElasticity, NeverExceedsTheIterationLimit) {
 /// k_p = 1e6: at the default 1e3 its matrix is indefinite on this mesh (see
 /// OwnStressSipgNeedsALargePenaltyAtShortEdges), and these tests check other things.
 std::vector<std::pair<std::string, DgOptions>> configurations() {
-  DgOptions sipg_mean = options(DgMethod::sipg, 1e3);
+  DgOptions sipg_mean = options(kSipg, 1e3);
   sipg_mean.traction = TractionKind::mean;
-  DgOptions nipg = options(DgMethod::sipg, 1e3);
+  DgOptions nipg = options(kSipg, 1e3);
   nipg.sipg_sign = +1;
-  return {{"dg-penalty", options(DgMethod::penalty, 1e3)},
-          {"dg-al", options(DgMethod::augmented_lagrangian, 1e3, 1e-10, 500)},
-          {"dg-nitsche", options(DgMethod::nitsche, 1e3, 1e-10, 500)},
-          {"dg-sipg (k_p 1e6)", options(DgMethod::sipg, 1e6)},
+  return {{"dg-penalty", options(kPenalty, 1e3)},
+          {"dg-al", options(kAl, 1e3, 1e-10, 500)},
+          {"dg-nitsche", options(kNitsche, 1e3, 1e-10, 500)},
+          {"dg-sipg (k_p 1e6)", options(kSipg, 1e6)},
           {"dg-sipg mean stress", sipg_mean},
           {"dg-sipg sign +1", nipg}};
 }
@@ -474,7 +470,7 @@ TEST(DgElasticity, OwnStressSipgNeedsALargePenaltyAtShortEdges) {
   std::cout << "largest |traction operator| h_avg / E: point " << point << " (edge " << worst_edge
             << ", length " << b.mesh.edge_length(worst_edge) / b.mesh.h_avg() << " h_avg), mean "
             << mean << "\n";
-  DgOptions point_low = options(DgMethod::sipg, 1e3), point_high = options(DgMethod::sipg, 1e6);
+  DgOptions point_low = options(kSipg, 1e3), point_high = options(kSipg, 1e6);
   point_low.traction = point_high.traction = TractionKind::point;
   DgElasticity low(*b.table, integrator, *b.problem, point_low);
   try {
@@ -485,7 +481,7 @@ TEST(DgElasticity, OwnStressSipgNeedsALargePenaltyAtShortEdges) {
   }
   DgElasticity high(*b.table, integrator, *b.problem, point_high);
   EXPECT_NO_THROW(high.run());
-  DgOptions mean_stress = options(DgMethod::sipg, 1e3);
+  DgOptions mean_stress = options(kSipg, 1e3);
   mean_stress.traction = TractionKind::mean;
   DgElasticity variant(*b.table, integrator, *b.problem, mean_stress);
   EXPECT_NO_THROW(variant.run());
@@ -494,7 +490,7 @@ TEST(DgElasticity, OwnStressSipgNeedsALargePenaltyAtShortEdges) {
 TEST(DgElasticity, ReportAndGaps) {
   const Beam& b = beam();
   const ElasticityIntegrator integrator(*b.table, b.material, false);
-  DgElasticity dg(*b.table, integrator, *b.problem, options(DgMethod::penalty, 1e3));
+  DgElasticity dg(*b.table, integrator, *b.problem, options(kPenalty, 1e3));
   dg.run();
   const DgReport& r = dg.report();
   EXPECT_EQ(r.stop_reason, "direct");
@@ -542,26 +538,34 @@ TEST(DgElasticity, RefusesBadOptions) {
   const double nan = std::numeric_limits<double>::quiet_NaN(),
                inf = std::numeric_limits<double>::infinity();
   for (double kp : {0.0, -1.0, nan, inf})
-    EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, kp)),
-                 InputError)
+    EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(kNitsche, kp)), InputError)
         << "k_p " << kp;
-  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, 0.0)),
+  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(kNitsche, 1e3, 0.0)),
                InputError);
-  EXPECT_THROW(
-      DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, -1e-10)),
-      InputError);
-  EXPECT_THROW(
-      DgElasticity(*b.table, integrator, *b.problem, options(DgMethod::nitsche, 1e3, 1e-10, 0)),
-      InputError);
+  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(kNitsche, 1e3, -1e-10)),
+               InputError);
+  EXPECT_THROW(DgElasticity(*b.table, integrator, *b.problem, options(kNitsche, 1e3, 1e-10, 0)),
+               InputError);
 }
 
-TEST(DgElasticity, ParsesTheFourMethods) {
-  EXPECT_EQ(parse_dg_method("dg-penalty"), DgMethod::penalty);
-  EXPECT_EQ(parse_dg_method("dg-al"), DgMethod::augmented_lagrangian);
-  EXPECT_EQ(parse_dg_method("dg-nitsche"), DgMethod::nitsche);
-  EXPECT_EQ(parse_dg_method("dg-sipg"), DgMethod::sipg);
-  for (const char* bad : {"dg-foo", "cg", "", "DG-AL", "dg-al "})
-    EXPECT_THROW(parse_dg_method(bad), InputError) << "'" << bad << "'";
+TEST(DgElasticity, KnowsExactlyTheFourShippedFormulationsByName) {
+  std::vector<std::string> names;
+  for (const DgFormulationEntry& e : dg_formulations()) names.push_back(e.name);
+  EXPECT_EQ(names, (std::vector<std::string>{kPenalty, kAl, kNitsche, kSipg}));
+  for (const DgMethod& m : names) {
+    DgOptions o;
+    o.formulation = m;
+    EXPECT_NE(make_dg_formulation(o), nullptr) << m;
+  }
+  for (const char* bad : {"dg-foo", "cg", "", "DG-AL", "dg-al "}) {
+    DgOptions o;
+    o.formulation = bad;
+    EXPECT_THROW(make_dg_formulation(o), InputError) << "'" << bad << "'";
+  }
+  DgOptions sign;
+  sign.formulation = kSipg;
+  sign.sipg_sign = 0;
+  EXPECT_THROW(make_dg_formulation(sign)->check_options(sign), InputError);
 }
 
 TEST(DgElasticity, RunSolveMatchesTheClass) {
@@ -569,11 +573,11 @@ TEST(DgElasticity, RunSolveMatchesTheClass) {
   SolveSettings s;
   s.problem = "beam";
   s.formulation = "dg-nitsche";
-  s.dg = options(DgMethod::penalty /* overridden by the formulation */, 1e3, 1e-12, 500);
+  s.dg = options(kPenalty /* overridden by the formulation */, 1e3, 1e-12, 500);
   const SolveResult r = run_solve(b.mesh, s);
   ASSERT_TRUE(r.dg.has_value());
   EXPECT_EQ(r.dg->stop_reason, "converged");
-  const DgRun direct = solve_dg(*b.table, *b.problem, options(DgMethod::nitsche, 1e3, 1e-12, 500));
+  const DgRun direct = solve_dg(*b.table, *b.problem, options(kNitsche, 1e3, 1e-12, 500));
   ASSERT_EQ(static_cast<int>(r.cell_offsets.size()), b.mesh.num_cells() + 1);
   for (int c = 0; c < b.mesh.num_cells(); ++c) {
     const Eigen::VectorXd u = r.cell_dof_values.segment(r.cell_offsets[c], 2 * b.mesh.cell_size(c));

@@ -4,12 +4,12 @@
 
 #include "cg/CgElasticity.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
+#include "core/problem/AffineField.hpp"
+#include "core/problem/ErrorNorms.hpp"
+#include "core/problem/ManufacturedSolution.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/ErrorNorms.hpp"
-#include "verification/problems/AffineField.hpp"
-#include "verification/problems/ManufacturedSolution.hpp"
-#include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {
 
@@ -76,10 +76,18 @@ void collect(const Formulation& formulation, const PolygonMesh& mesh, SolveResul
 
 }  // namespace
 
+const Choices& formulation_choices() {
+  static const Choices choices = [] {
+    Choices out{{"cg", "continuous Galerkin on the vertex DOFs"}};
+    for (const DgFormulationEntry& e : dg_formulations()) out.push_back({e.name, e.doc});
+    return out;
+  }();
+  return choices;
+}
+
 DgOptions dg_options(const SolveSettings& settings) {
   DgOptions options = settings.dg;
-  options.method =
-      settings.formulation == "cg" ? DgMethod::penalty : parse_dg_method(settings.formulation);
+  options.formulation = settings.formulation == "cg" ? "dg-penalty" : settings.formulation;
   options.ordering = settings.solver.ordering;
   return options;
 }

@@ -11,18 +11,19 @@
 #include "core/element/ElementTable.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "core/problem/ExactSolution.hpp"
 #include "core/solve/AmgConjugateGradient.hpp"
 #include "core/solve/LinearSolverChoice.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/DgElasticity.hpp"
 #include "verification/SharedMeshWork.hpp"
-#include "verification/problems/ExactSolution.hpp"
+#include "verification/model/Choices.hpp"
 
 namespace vorodg {
 
 struct SolveSettings {
   std::string problem = "beam";    // beam | patch | patch-mixed | patch-traction | mms
-  std::string formulation = "cg";  // cg | dg-penalty | dg-al | dg-nitsche | dg-sipg
+  std::string formulation = "cg";  // cg, or a DG formulation's name (formulation_choices)
   PlaneModel plane = PlaneModel::stress;
   double E = 1.0;
   double nu = 0.3;
@@ -35,8 +36,11 @@ struct SolveSettings {
   DgOptions dg;  // penalty scaling and k_p, tolerance, iterations, variants
 };
 
-/// The DG options of a DG formulation's settings (method and ordering filled in); for cg, those
-/// of dg-penalty, so that the DG settings still read back.
+/// cg and every registered DG formulation (dg/DgFormulation.hpp), with their docs.
+const Choices& formulation_choices();
+
+/// The DG options of a DG formulation's settings (formulation and ordering filled in); for cg,
+/// those of dg-penalty, so that the DG settings still read back.
 DgOptions dg_options(const SolveSettings& settings);
 
 struct SolveResult {

@@ -1,6 +1,7 @@
 #pragma once
 // Numbers in messages: short and exact enough to find the offending value (std::to_string
 // prints a fixed six decimals, which hides small and large values alike).
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -11,6 +12,19 @@ inline std::string fmt(double x, int precision = 6) {
   os.precision(precision);
   os << x;
   return os.str();
+}
+
+/// "a, b or c": the names of `items` (each item's `name` member) for a message's "expected ...".
+template <class Range>
+std::string name_list(const Range& items) {
+  std::string out;
+  const std::size_t n = static_cast<std::size_t>(std::size(items));
+  std::size_t i = 0;
+  for (const auto& item : items) {
+    out += (i == 0 ? "" : i + 1 == n ? " or " : ", ") + item.name;
+    ++i;
+  }
+  return out;
 }
 
 }  // namespace vorodg

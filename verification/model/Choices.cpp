@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/util/Format.hpp"
 
 namespace vorodg {
 
@@ -37,17 +38,6 @@ patch           an affine field, Dirichlet data on every side
 patch-mixed     an affine field, Dirichlet on the left and bottom, tractions elsewhere
 patch-traction  an affine field with tractions on every side (singular: refused)
 mms             a smooth manufactured field with its body force
-)");
-  return choices;
-}
-
-const Choices& formulation_choices() {
-  static const Choices choices = table(R"(
-cg          continuous Galerkin on the vertex DOFs
-dg-penalty  DG, interior penalty only (inconsistent: fails the patch test)
-dg-al       DG, augmented Lagrangian: multipliers updated after each solve
-dg-nitsche  DG, iterative Nitsche with each cell's mean stress
-dg-sipg     DG, symmetric interior penalty (one solve)
 )");
   return choices;
 }
@@ -163,10 +153,7 @@ bool is_choice(const Choices& choices, const std::string& name) {
 }
 
 std::string choice_list(const Choices& choices) {
-  std::string out;
-  for (std::size_t i = 0; i < choices.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].name;
-  return out;
+  return name_list(choices);
 }
 
 std::string choice_alternatives(const Choices& choices) {

@@ -1,8 +1,7 @@
 #pragma once
-// The names vorodg knows — problems, formulations, mesh families, element families, orderings,
+// The names vorodg knows — problems, mesh families, element families, orderings,
 // solvers, plane models and study kinds — each with a one-line doc. The command line, the scene
-// reader, their messages,
-// `--help` and docs/scenes.md all take the names from here.
+// reader, their messages, `--help` and docs/scenes.md all take the names from here.
 #include <string>
 #include <vector>
 
@@ -20,7 +19,6 @@ struct NamedChoice {
 using Choices = std::vector<NamedChoice>;
 
 const Choices& problem_choices();
-const Choices& formulation_choices();
 const Choices& generated_family_choices();  // the families a scene or `--family` can generate
 const Choices& ordering_choices();
 const Choices& solver_choices();

@@ -28,7 +28,7 @@ Eigen::SparseMatrix<double> sipg_matrix(const ElementTable& table,
                                         const ExactSolution& problem, TractionKind kind,
                                         double kp) {
   DgOptions o;
-  o.method = DgMethod::sipg;
+  o.formulation = "dg-sipg";
   o.penalty = PenaltyScaling::h_avg;
   o.kp = kp;
   o.traction = kind;

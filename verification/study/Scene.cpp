@@ -185,7 +185,7 @@ std::string default_label(const SolveSettings& s) {
     label += " rule-" + std::to_string(s.element.rule_points);
   if (s.formulation == "cg") return label;
   DgOptions plain;  // the formulation's defaults
-  plain.method = dg_options(s).method;
+  plain.formulation = dg_options(s).formulation;
   // Appended piece by piece: g++ 12 warns falsely (-Wrestrict) on " " + std::string here.
   if (penalty_scaling(dg_options(s)) != penalty_scaling(plain))
     label.append(" ").append(penalty_name(penalty_scaling(dg_options(s))));

@@ -1,5 +1,6 @@
 #include "dynamics/ContactForces.hpp"
 
+#include "dynamics/contact/ContactLaws.hpp"
 #include "dynamics/contact/PolygonPenetration.hpp"
 
 #include <algorithm>
@@ -11,11 +12,12 @@ namespace vorodg {
 
 ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces,
                              const ContactFriction& friction)
-    : mesh_(mesh),
-      law_(law),
-      surfaces_(surfaces),
-      surface_(mesh),
-      contact_(law, mesh.h_avg() > 0.0 ? mesh.h_avg() : 1.0, friction) {
+    : mesh_(mesh), law_(law), surfaces_(surfaces), surface_(mesh) {
+  if (surfaces)
+    add_law(
+        make_contact_law("cell-pairs", {.penalty = law,
+                                        .friction = friction,
+                                        .grid_spacing = mesh.h_avg() > 0.0 ? mesh.h_avg() : 1.0}));
   reference_.reserve(mesh.offsets().back());
   for (int v : mesh.cell_vertex_list()) reference_.push_back(mesh.vertex(v));
   const std::size_t pairs = reference_.size();
@@ -24,9 +26,15 @@ ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law,
   if (law.needs_velocity()) velocity_force_.assign(pairs, Point::Zero());
 }
 
+void ContactForces::add_law(std::unique_ptr<ContactLaw> law) {
+  obstacles_ = obstacles_ || law->external();
+  laws_.push_back(std::move(law));
+}
+
 void ContactForces::add_plane(const Point& point, const Point& normal,
                               const ContactFriction& friction) {
-  planes_.emplace_back(point, normal, law_, friction);
+  add_law(make_contact_law(
+      "rigid-plane", {.penalty = law_, .friction = friction, .point = point, .normal = normal}));
 }
 
 void ContactForces::bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses) {
@@ -89,15 +97,14 @@ void ContactForces::clear_forces() {
 }
 
 void ContactForces::collect_support() {
-  // What surface contact and the planes pushed, ascending and once each: a fixed order for every
-  // sum below, and no pass over the pairs contact left alone.
+  // What the laws pushed, ascending and once each: a fixed order for every sum below, and no pass
+  // over the pairs contact left alone.
   support_.clear();
-  if (surfaces_) support_.assign(contact_.touched().begin(), contact_.touched().end());
-  for (const RigidPlane& plane : planes_)
-    support_.insert(support_.end(), plane.touched().begin(), plane.touched().end());
+  for (const auto& law : laws_)
+    support_.insert(support_.end(), law->touched().begin(), law->touched().end());
   std::sort(support_.begin(), support_.end());
   support_.erase(std::unique(support_.begin(), support_.end()), support_.end());
-  if (planes_.empty()) return;
+  if (!obstacles_) return;
   for (int p : support_) {
     plane_force_ += plane_pair_force_[p];
     force_[p] += plane_pair_force_[p];
@@ -111,13 +118,16 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
   clear_forces();
   const PairState state{position_, velocity_, mass_, node_, dt, repeat_};
   repeat_ = false;
-  surface_report_ =
-      surfaces_ ? contact_.add_forces(surface_, state, force_, velocity_force_) : ContactReport{};
-  // The planes into their own buffer first: their net force is the wall's reaction, reported.
+  // The obstacles into their own buffer first: their net force is the wall's reaction, reported.
+  surface_report_ = ContactReport{};
   plane_report_ = ContactReport{};
   plane_force_.setZero();
-  for (RigidPlane& plane : planes_)
-    plane_report_ += plane.add_forces(surface_, state, plane_pair_force_, velocity_force_);
+  for (const auto& law : laws_) {
+    if (law->external())
+      plane_report_ += law->add_forces(surface_, state, plane_pair_force_, velocity_force_);
+    else
+      surface_report_ += law->add_forces(surface_, state, force_, velocity_force_);
+  }
   collect_support();
   friction_dissipated_ += surface_report_.friction_dissipated + plane_report_.friction_dissipated;
   work_.add(force_, support_, velocity_, dt);

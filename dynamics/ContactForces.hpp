@@ -4,51 +4,53 @@
 // one way: dynamics links contact, contact never includes dynamics/).
 //
 // Each evaluation reads the node displacements and velocities as pair positions x = X + u and
-// pair velocities (of the surface cells' pairs: no other pair is ever touched), lets SurfaceContact
-// (surface cells against surface cells, every body of the mesh) and the rigid planes add their
-// forces per pair, sums the pairs of each node into the nodal force, and books the work of those
-// forces with ContactWork: the trapezoid (f_n + f_n+1) / 2 . (x_n+1 - x_n), which with central
-// differences is exactly the change the contact forces make in the half-step kinetic energy. So
-// StepRecord's balance closes with contact to the integrator's round-off, whatever the penalty law
-// does.
+// pair velocities (of the surface cells' pairs: no other pair is ever touched), lets each of its
+// contact laws (ContactLaw: SurfaceContact between surface cells of every body of the mesh, and
+// obstacles such as rigid planes) add their forces per pair, sums the pairs of each node into the
+// nodal force, and books the work of those forces with ContactWork: the trapezoid (f_n + f_n+1) / 2
+// . (x_n+1 - x_n), which with central differences is exactly the change the contact forces make in
+// the half-step kinetic energy. So StepRecord's balance closes with contact to the integrator's
+// round-off, whatever the penalty law does.
 //
 // Friction (ContactFriction) follows the contact's tangential motion from one evaluation to the
 // next; an evaluation repeated at the same positions (after restart) sees none.
 //
 // Surface contact forces of a pair are equal and opposite (PolygonPenetration), so they move no
-// momentum; the planes' forces are external (the plane takes the reaction) and are reported as
-// their net force on the mesh.
+// momentum; an obstacle's forces are external (it takes the reaction: ContactLaw::external) and
+// are reported apart, as the "plane" report and net force on the mesh.
 #include <Eigen/Core>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "dynamics/contact/ContactFriction.hpp"
+#include "dynamics/contact/ContactLaw.hpp"
 #include "dynamics/contact/ContactReport.hpp"
 #include "dynamics/contact/ContactWork.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
-#include "dynamics/contact/RigidPlane.hpp"
 #include "dynamics/contact/SurfaceCells.hpp"
-#include "dynamics/contact/SurfaceContact.hpp"
 
 namespace vorodg {
 
 class ContactForces {
  public:
   /// `mesh` must outlive this object. `surfaces`: contact between the surface cells of the mesh
-  /// (off: rigid planes only), with Coulomb friction `friction`. The grid of the surface search
-  /// starts at the mesh's h_avg.
+  /// (the law "cell-pairs"; off: obstacles only), with Coulomb friction `friction`. The grid of
+  /// the surface search starts at the mesh's h_avg.
   ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces = true,
                 const ContactFriction& friction = ContactFriction{});
 
-  /// A fixed rigid half-plane with the same law and its own friction; `normal` points into free
-  /// space.
+  /// One more contact law, evaluated after those added before it.
+  void add_law(std::unique_ptr<ContactLaw> law);
+  /// The law "rigid-plane": a fixed rigid half-plane with the same penalty law and its own
+  /// friction; `normal` points into free space.
   void add_plane(const Point& point, const Point& normal,
                  const ContactFriction& friction = ContactFriction{});
   /// The surface cells (grow it as cracks expose new surface).
   SurfaceCells& surface() { return surface_; }
   const SurfaceCells& surface() const { return surface_; }
-  const std::vector<RigidPlane>& planes() const { return planes_; }
   const PenaltyContact& law() const { return law_; }
   bool surfaces() const { return surfaces_; }
 
@@ -74,7 +76,7 @@ class ContactForces {
   /// Of that work, what the velocity penalty (damping or plastic) has taken so far: minus the
   /// trapezoid work of its part of the forces (0 without one).
   double velocity_penalty_dissipated() const { return -(velocity_booked_ + velocity_work_.work()); }
-  /// Of the last evaluation: between surface cells, and against the planes.
+  /// Of the last evaluation: between surface cells, and against the obstacles (planes).
   const ContactReport& surface_report() const { return surface_report_; }
   const ContactReport& plane_report() const { return plane_report_; }
   /// Both together.
@@ -111,8 +113,8 @@ class ContactForces {
   PenaltyContact law_;
   bool surfaces_;
   SurfaceCells surface_;
-  SurfaceContact contact_;
-  std::vector<RigidPlane> planes_;
+  std::vector<std::unique_ptr<ContactLaw>> laws_;  // in evaluation order
+  bool obstacles_ = false;                         // whether one of them is external
   ContactWork work_;
   double booked_ = 0.0;  // work of the segments before the current one
   double friction_dissipated_ = 0.0;

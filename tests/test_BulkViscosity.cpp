@@ -11,6 +11,7 @@
 //     steep front against no bulk viscosity, and the wave speed stays within 0.5 % of the run
 //     without it.
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -19,7 +20,6 @@
 #include "dynamics/BulkViscosity.hpp"
 #include "dynamics/GlobalTimeStep.hpp"
 #include "support/DynamicsModel.hpp"
-#include "verification/kinds/dynamics/DynamicsModel.hpp"
 #include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 
@@ -284,7 +284,7 @@ struct BarMeasures {
 /// passed there (its reflection comes back at 1.5 L / c).
 BarMeasures run_bar(const std::string& text) {
   const DynamicsScene scene = parse_dynamics_scene(text, "test scene");
-  DynamicsModel model(scene, ensemble_runs(scene.meshes).front());
+  ExplicitSimulation model = dynamics_simulation(scene, ensemble_runs(scene.meshes).front());
   CentralDifference& run = *model.run;
   DynamicsProbe probe(scene, model.bodies, run);
   std::vector<int> middle;

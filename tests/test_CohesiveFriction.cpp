@@ -16,6 +16,7 @@
 //   - a negative or non-finite mu is refused.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "core/util/Errors.hpp"
@@ -32,7 +33,7 @@ constexpr double kE = 30e9, kH = 0.01;
 struct Pair {
   DynamicsModel model{mesh_spec(MeshFamily::quad, Rectangle(0, 0, 2 * kH, kH), kH),
                       IsotropicElasticity(kE, 0.2, PlaneModel::strain), 2400.0};
-  CohesiveLaw law{CohesiveParameters{3e6, 50.0, 1.0, SofteningShape::linear, 10 * kE / kH}};
+  CohesiveLaw law{CohesiveParameters{3e6, 50.0, 1.0, "linear", 10 * kE / kH}};
   int edge = -1;
   Eigen::Vector2d n, t;
   double length = 0.0;

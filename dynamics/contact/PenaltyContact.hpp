@@ -36,7 +36,7 @@
 // vertex's own velocity each step, so its update for a mode of frequency omega of the body
 // becomes u_{n+2} = (1 - omega^2 dt^2) u_{n+1}: stable only while omega dt < sqrt(2), not 2
 // (measured: a column set down on a level plane with it blew up within 0.5 s at 0.9 of the
-// critical step). The step is then cut by step_factor() = 1 / sqrt(2) (DynamicsModel).
+// critical step). The step is then cut by step_factor() = 1 / sqrt(2) (ExplicitSimulation).
 //
 // Energy: with k_d constant along a contact, the spring force is the gradient of k_d d^2 / 2
 // (PolygonPenetration), and the damping dissipates k_v <-v_n>^2 >= 0 per unit time

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dynamics/contact/ContactFriction.hpp"
+#include "dynamics/contact/ContactLaw.hpp"
 #include "dynamics/contact/ContactReport.hpp"
 #include "dynamics/contact/PairState.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
@@ -19,7 +20,7 @@
 
 namespace vorodg {
 
-class RigidPlane {
+class RigidPlane final : public ContactLaw {
  public:
   /// `normal` points out of the plane's solid side, into the free space; it is normalized.
   /// Throws InputError for a zero or non-finite normal, or a non-finite point.
@@ -36,9 +37,11 @@ class RigidPlane {
   /// each node counted once, on its first pair in surface order), their velocity penalty's part
   /// to `velocity_force` if it is not empty, and reports the step.
   ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
-                           std::span<Point> force, std::span<Point> velocity_force = {});
+                           std::span<Point> force, std::span<Point> velocity_force = {}) override;
   /// The pairs the last add_forces gave a force, in the order it did.
-  std::span<const int> touched() const { return touched_; }
+  std::span<const int> touched() const override { return touched_; }
+  /// The plane takes the reaction.
+  bool external() const override { return true; }
 
  private:
   /// Friction on pair p, pushed by `normal` of stiffness k: adds the shear along the plane.

@@ -39,6 +39,7 @@
 
 #include "dynamics/contact/ContactCandidates.hpp"
 #include "dynamics/contact/ContactFriction.hpp"
+#include "dynamics/contact/ContactLaw.hpp"
 #include "dynamics/contact/ContactReport.hpp"
 #include "dynamics/contact/PairState.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
@@ -46,7 +47,7 @@
 
 namespace vorodg {
 
-class SurfaceContact {
+class SurfaceContact final : public ContactLaw {
  public:
   /// grid_spacing > 0 is the grid's smallest spacing: the mesh's h_avg is the natural choice
   /// (the search raises it to the largest surface-cell box each step).
@@ -59,7 +60,9 @@ class SurfaceContact {
   /// has non-finite vertex positions.
   /// The velocity penalty's part of the forces goes to `velocity_force` too, if not empty.
   ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
-                           std::span<Point> force, std::span<Point> velocity_force = {});
+                           std::span<Point> force, std::span<Point> velocity_force = {}) override;
+  /// Equal and opposite forces between parts of the mesh.
+  bool external() const override { return false; }
 
   /// Only the search: the cell pairs (mesh cell ids, the first earlier in the surface order)
   /// whose current boxes overlap and that are not neighbours, each once, in a fixed order (by
@@ -69,7 +72,7 @@ class SurfaceContact {
   const std::vector<IndexPair>& cell_pairs() const { return cell_pairs_; }
   /// The pairs the last add_forces gave a force (each contact's vertex and edge ends, in the
   /// order it pushed them; with repeats).
-  std::span<const int> touched() const { return touched_; }
+  std::span<const int> touched() const override { return touched_; }
 
   const PenaltyContact& law() const { return law_; }
   const ContactFriction& friction() const { return friction_; }

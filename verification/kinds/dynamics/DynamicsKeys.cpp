@@ -5,6 +5,7 @@
 
 #include "core/element/ElementTable.hpp"
 #include "core/util/Format.hpp"
+#include "dynamics/contact/ContactLaws.hpp"
 #include "verification/harness/PhysicsKeys.hpp"
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
@@ -185,6 +186,14 @@ std::vector<SceneKey> impact_keys() {
   };
 }
 
+/// The registered contact laws that are obstacles (a wall can be any of them).
+std::vector<ContactLawEntry> obstacle_laws() {
+  std::vector<ContactLawEntry> out;
+  for (const ContactLawEntry& e : contact_laws())
+    if (e.obstacle) out.push_back(e);
+  return out;
+}
+
 /// The rigid wall and contact.
 std::vector<SceneKey> contact_keys() {
   const std::string per_problem = "per problem: ";
@@ -200,6 +209,8 @@ std::vector<SceneKey> contact_keys() {
               "obliquity; else [-1, 0]",
               "not [0, 0], each |component| <= 1e6",
               "the plane's normal, pointing into free space (normalized)", -1e6, false, 1e6),
+      key("wall.law", "string", obstacle_laws().front().name, name_list(obstacle_laws()),
+          "how the plane acts on the bodies (docs/contact.md, \"Contact laws\")"),
       bounded("wall.friction", "number",
               contact_default([](const ContactDefaults& d) { return exact_text(d.wall_friction); }),
               "0 <= mu <= 10",

@@ -1,0 +1,37 @@
+#pragma once
+// One way the mesh meets something: surface cells against surface cells (SurfaceContact), or
+// against an obstacle outside the mesh (RigidPlane). ContactForces holds a list of them, gathers
+// the surface pairs' state once per evaluation, lets each add its forces per (cell, vertex)
+// pair, and books their work; it knows no law by name. A new law is one file with its class and
+// a factory, plus one line in ContactLaws.cpp's table (or register_contact_law from anywhere, as
+// a test does), and a scene chooses it by name (`wall.law` for an obstacle).
+//
+// What a law must keep for the energy account to close (ContactWork books the trapezoid work of
+// whatever forces it adds): forces per pair in `force`, the velocity-dependent part of them in
+// `velocity_force` too when that span is not empty, and the pairs it pushed in touched().
+#include <span>
+
+#include "dynamics/contact/ContactReport.hpp"
+#include "dynamics/contact/PairState.hpp"
+#include "dynamics/contact/SurfaceCells.hpp"
+
+namespace vorodg {
+
+class ContactLaw {
+ public:
+  virtual ~ContactLaw() = default;
+
+  /// True for an obstacle outside the mesh, which takes the reaction: its forces are external,
+  /// reported apart (ContactForces::plane_report, plane_force). False for contact between parts
+  /// of the mesh, whose forces are equal and opposite and move no momentum.
+  virtual bool external() const = 0;
+  /// Adds the law's forces on the surface cells' pairs at `state` to `force` (one entry per
+  /// pair, the mesh's CSR layout) and their velocity-dependent part to `velocity_force` if it is
+  /// not empty; reports the evaluation. Throws InputError if the state lacks what the law needs.
+  virtual ContactReport add_forces(const SurfaceCells& surface, const PairState& state,
+                                   std::span<Point> force, std::span<Point> velocity_force) = 0;
+  /// The pairs the last add_forces gave a force (repeats allowed).
+  virtual std::span<const int> touched() const = 0;
+};
+
+}  // namespace vorodg

@@ -7,24 +7,6 @@
 
 namespace vorodg {
 
-CrackingMode parse_cracking_mode(const std::string& name) {
-  for (CrackingMode m : {CrackingMode::pre_inserted, CrackingMode::restricted,
-                         CrackingMode::contiguous, CrackingMode::arbitrary})
-    if (cracking_mode_name(m) == name) return m;
-  throw InputError("cracking mode '" + name +
-                   "': expected pre-inserted, restricted, contiguous or arbitrary");
-}
-
-std::string cracking_mode_name(CrackingMode mode) {
-  switch (mode) {
-    case CrackingMode::pre_inserted: return "pre-inserted";
-    case CrackingMode::restricted: return "restricted";
-    case CrackingMode::contiguous: return "contiguous";
-    case CrackingMode::arbitrary: break;
-  }
-  return "arbitrary";
-}
-
 CohesiveFracture::CohesiveFracture(const ElementTable& table,
                                    const ElasticityIntegrator& integrator,
                                    const FractureSetup& setup, const CohesiveParameters& law,
@@ -71,7 +53,7 @@ void CohesiveFracture::setup_system() {
   const auto cells = integrator_.all_cell_matrices(threads_);
   seconds_["cell_matrices"] = clock.seconds();
   clock.restart();
-  coupling_.method = DgMethod::sipg;
+  coupling_.formulation = "dg-sipg";
   penalty_ = std::make_unique<InterfacePenalty>(
       *ops_, integrator_, cells, penalty_scaling(coupling_), penalty_multiplier(coupling_),
       coupling_.weighted_average, interface_traction(coupling_), threads_);

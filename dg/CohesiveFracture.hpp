@@ -12,14 +12,14 @@
 
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
-#include "core/material/CohesiveLaw.hpp"
-#include "core/material/MohrCoulomb.hpp"
 #include "core/solve/BlockPattern.hpp"
 #include "core/solve/ProportionalConstraints.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/CohesiveInterfaces.hpp"
 #include "dg/DgElasticity.hpp"
-#include "dg/FractureSetup.hpp"
+#include "fracture/CohesiveLaw.hpp"
+#include "fracture/FractureSetup.hpp"
+#include "fracture/MohrCoulomb.hpp"
 
 namespace vorodg {
 

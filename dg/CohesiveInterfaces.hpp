@@ -16,8 +16,8 @@
 #include <functional>
 #include <vector>
 
-#include "core/material/CohesiveLaw.hpp"
-#include "core/material/MohrCoulomb.hpp"
+#include "fracture/CohesiveLaw.hpp"
+#include "fracture/MohrCoulomb.hpp"
 #include "interfaces/InterfaceOperators.hpp"
 #include "interfaces/InterfacePenalty.hpp"
 

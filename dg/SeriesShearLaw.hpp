@@ -15,7 +15,7 @@
 // the bracketed search still returns a root).
 #include <Eigen/Core>
 
-#include "core/material/CohesiveLaw.hpp"
+#include "fracture/CohesiveLaw.hpp"
 
 namespace vorodg {
 

@@ -49,10 +49,10 @@
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
-#include "core/material/CohesiveLaw.hpp"
 #include "core/mesh/PolygonMesh.hpp"
 #include "dynamics/LumpedMass.hpp"
 #include "dynamics/StableTimeStep.hpp"
+#include "fracture/CohesiveLaw.hpp"
 #include "fracture/FacePoint.hpp"
 
 namespace vorodg {

@@ -17,10 +17,10 @@
 
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
-#include "core/material/MohrCoulomb.hpp"
 #include "core/mesh/PolygonMesh.hpp"
 #include "dynamics/CorotationalFrames.hpp"
 #include "dynamics/MaterialVariation.hpp"
+#include "fracture/MohrCoulomb.hpp"
 
 namespace vorodg {
 

@@ -21,10 +21,10 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "core/material/MohrCoulomb.hpp"
 #include "core/mesh/PolygonMesh.hpp"
 #include "dynamics/CohesiveForces.hpp"
 #include "dynamics/InterfaceCoupling.hpp"
+#include "fracture/MohrCoulomb.hpp"
 
 namespace vorodg {
 

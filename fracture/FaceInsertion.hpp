@@ -7,7 +7,7 @@
 // cohesion and tensile cutoff scale with f, its friction angle does not.
 #include <Eigen/Core>
 
-#include "core/material/MohrCoulomb.hpp"
+#include "fracture/MohrCoulomb.hpp"
 
 namespace vorodg {
 

@@ -30,7 +30,7 @@
 // its own opening (dg measures it from the jump at insertion; dynamics from zero).
 #include <Eigen/Core>
 
-#include "core/material/CohesiveLaw.hpp"
+#include "fracture/CohesiveLaw.hpp"
 
 namespace vorodg {
 

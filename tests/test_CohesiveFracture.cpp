@@ -17,7 +17,7 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "dg/CohesiveFracture.hpp"
 #include "dg/QuasiStaticPath.hpp"
-#include "verification/problems/FractureProblem.hpp"
+#include "fracture/TensionBar.hpp"
 
 namespace vorodg {
 namespace {
@@ -27,7 +27,7 @@ constexpr double kE = 30e9, kNu = 0.2, kStrength = 3.33e6, kEnergy = 124.0, kThi
 struct BarCase {
   MeshFamily family;
   double length;
-  SofteningShape shape;
+  std::string shape;
   LoadControl control;
   std::string mesh_file = "";  // family file: a .vtu under data/meshes
 };
@@ -57,7 +57,7 @@ BarRun run_bar(const BarCase& c, double max_cmod_fraction = 1.2, int steps = 40)
   const IsotropicElasticity material(kE, kNu, PlaneModel::stress);
   const ElasticityIntegrator integrator(table, material, false);
   BarRun run;
-  run.geometry = {FractureProblemKind::tension_bar, spec.domain, 0.5 * c.length, 0.0};
+  run.geometry = {fracture_problem("tension-bar"), spec.domain, 0.5 * c.length, 0.0};
   const FractureSetup setup =
       fracture_setup(mesh.mesh, run.geometry, CrackingMode::restricted, kThickness);
   const CohesiveParameters law{kStrength, kEnergy, 1.0, c.shape};
@@ -106,17 +106,17 @@ TEST_P(TensionBar, FollowsTheClosedFormAtEveryPoint) {
 INSTANTIATE_TEST_SUITE_P(
     Bars, TensionBar,
     ::testing::Values(
-        BarCase{MeshFamily::quad, 0.2, SofteningShape::linear, LoadControl::displacement},
-        BarCase{MeshFamily::quad, 0.2, SofteningShape::bilinear, LoadControl::displacement},
-        BarCase{MeshFamily::quad, 2.0, SofteningShape::linear, LoadControl::cmod},
-        BarCase{MeshFamily::quad, 2.0, SofteningShape::bilinear, LoadControl::cmod},
+        BarCase{MeshFamily::quad, 0.2, "linear", LoadControl::displacement},
+        BarCase{MeshFamily::quad, 0.2, "bilinear", LoadControl::displacement},
+        BarCase{MeshFamily::quad, 2.0, "linear", LoadControl::cmod},
+        BarCase{MeshFamily::quad, 2.0, "bilinear", LoadControl::cmod},
         // Through the snap-back by the energy each step releases (dissipation arc-length).
-        BarCase{MeshFamily::quad, 2.0, SofteningShape::linear, LoadControl::arc_length},
-        BarCase{MeshFamily::quad, 2.0, SofteningShape::bilinear, LoadControl::arc_length},
+        BarCase{MeshFamily::quad, 2.0, "linear", LoadControl::arc_length},
+        BarCase{MeshFamily::quad, 2.0, "bilinear", LoadControl::arc_length},
         // An imported symmetric rcp mesh (d = 0.02) whose crack line x = 0.1 is made of edges.
-        BarCase{MeshFamily::file, 0.2, SofteningShape::linear, LoadControl::displacement,
+        BarCase{MeshFamily::file, 0.2, "linear", LoadControl::displacement,
                 "bar-symmetric-d0.02.vtu"},
-        BarCase{MeshFamily::file, 0.2, SofteningShape::bilinear, LoadControl::displacement,
+        BarCase{MeshFamily::file, 0.2, "bilinear", LoadControl::displacement,
                 "bar-symmetric-d0.02.vtu"}));
 
 }  // namespace

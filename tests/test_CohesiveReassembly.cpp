@@ -28,7 +28,7 @@ Eigen::VectorXd copied(const PolygonMesh& mesh, const SplitDofMap& from, const S
 TEST(CohesiveReassembly, GathersWhatEvaluateWouldGiveAfterASplit) {
   const DynamicsModel m(mesh_spec(MeshFamily::rcp, Rectangle(0, 0, 20 * kH, 5 * kH), kH),
                         IsotropicElasticity(kE, 0.2, PlaneModel::strain), 2400.0);
-  const CohesiveLaw law(CohesiveParameters{3e6, 50.0, 1.0, SofteningShape::linear, 10 * kE / kH});
+  const CohesiveLaw law(CohesiveParameters{3e6, 50.0, 1.0, "linear", 10 * kE / kH});
   CohesiveForces faces(m.mesh, law);
   Random random(21);
   std::vector<char> connected(m.mesh.num_edges(), 1), more(m.mesh.num_edges(), 1);

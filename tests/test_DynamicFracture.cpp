@@ -43,8 +43,7 @@ constexpr double kLength = 0.002, kHeight = 1e-5;
 
 struct Strip {
   Strip(double toughness, double stiffness, double strain_rate)
-      : law(CohesiveParameters{kStrength, toughness, 1.0, SofteningShape::linear,
-                               stiffness * kE / kHeight}),
+      : law(CohesiveParameters{kStrength, toughness, 1.0, "linear", stiffness * kE / kHeight}),
         rate(strain_rate) {}
   DynamicsModel model{mesh_spec(MeshFamily::quad, Rectangle(0, 0, kLength, kHeight), kHeight),
                       IsotropicElasticity(kE, 0.0, PlaneModel::stress), kDensity};

@@ -26,7 +26,7 @@ constexpr double kH = 0.01;  // cell size, m
 constexpr double kK0 = 10 * kE / kH;
 
 CohesiveLaw law() {
-  return CohesiveLaw(CohesiveParameters{kStrength, kToughness, 1.0, SofteningShape::linear, kK0});
+  return CohesiveLaw(CohesiveParameters{kStrength, kToughness, 1.0, "linear", kK0});
 }
 
 struct Strip {

@@ -31,8 +31,7 @@ constexpr double kE = 30e9, kDensity = 2400.0, kStrength = 3e6, kToughness = 1.0
 constexpr double kH = 0.01;  // cell size, m
 
 CohesiveLaw law() {
-  return CohesiveLaw(
-      CohesiveParameters{kStrength, kToughness, 1.0, SofteningShape::linear, 10 * kE / kH});
+  return CohesiveLaw(CohesiveParameters{kStrength, kToughness, 1.0, "linear", 10 * kE / kH});
 }
 
 /// Displacements that move cell1 of edge e rigidly by `shift`, everything else at rest.

@@ -15,11 +15,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/material/MohrCoulomb.hpp"
 #include "core/util/Random.hpp"
 #include "dynamics/CrackInsertion.hpp"
 #include "dynamics/MaterialVariation.hpp"
 #include "fracture/FaceInsertion.hpp"
+#include "fracture/MohrCoulomb.hpp"
 #include "support/DynamicsModel.hpp"
 
 namespace vorodg {

@@ -39,7 +39,7 @@ struct Strip {
                       IsotropicElasticity(kE, 0.2, PlaneModel::stress), kDensity};
   SplitDofMap dofs = SplitDofMap::discontinuous(model.mesh);
   InterfaceCoupling coupling{model.table, model.integrator, model.matrices, dofs};
-  CohesiveLaw law{CohesiveParameters{kStrength, 100.0, 1.0, SofteningShape::linear, kE / kH}};
+  CohesiveLaw law{CohesiveParameters{kStrength, 100.0, 1.0, "linear", kE / kH}};
   std::vector<char> every_edge = std::vector<char>(model.mesh.num_edges(), 1);
 
   double stable_step(double safety) const {

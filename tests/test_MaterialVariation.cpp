@@ -93,8 +93,7 @@ TEST(MaterialVariation, InsertionScalesStressAndStrength) {
 
 TEST(MaterialVariation, EachEdgeCarriesItsOwnStrength) {
   const DynamicsModel m = strip();
-  const CohesiveLaw law(
-      CohesiveParameters{kCutoff, 50.0, 1.0, SofteningShape::linear, 10 * kE / kH});
+  const CohesiveLaw law(CohesiveParameters{kCutoff, 50.0, 1.0, "linear", 10 * kE / kH});
   CohesiveForces faces(m.mesh, law);
   std::vector<double> factor(m.mesh.num_edges(), 1.0);
   std::vector<int> interior;

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/material/MohrCoulomb.hpp"
 #include "core/util/Errors.hpp"
+#include "fracture/MohrCoulomb.hpp"
 
 namespace vorodg {
 namespace {

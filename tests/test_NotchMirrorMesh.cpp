@@ -13,8 +13,8 @@
 #include "core/mesh/MeshValidator.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
+#include "fracture/FractureProblem.hpp"
 #include "verification/harness/SceneObject.hpp"
-#include "verification/problems/FractureProblem.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {
@@ -82,7 +82,7 @@ TEST_P(NotchMirror, IsValidAndCarriesTheThreePointBend) {
   const PolygonMesh mesh = generate_mesh(beam_spec(c, true)).mesh;
   const auto report = validate_mesh(mesh);
   ASSERT_TRUE(report.ok()) << report.summary();
-  const FractureGeometry g{FractureProblemKind::three_point_bend, kBeam, kLine, c.notch};
+  const FractureGeometry g{fracture_problem("three-point-bend"), kBeam, kLine, c.notch};
   for (CrackingMode mode : {CrackingMode::contiguous, CrackingMode::arbitrary}) {
     FractureSetup setup;
     ASSERT_NO_THROW(setup = fracture_setup(mesh, g, mode, 0.05));
@@ -130,7 +130,7 @@ TEST(NotchMirrorSeeds, EveryRealizationCarriesTheNotch) {
           << "d " << d << " seed " << seed;
       const auto report = validate_mesh(mesh);
       ASSERT_TRUE(report.ok()) << "d " << d << " seed " << seed << ": " << report.summary();
-      const FractureGeometry g{FractureProblemKind::three_point_bend, kBeam, kLine, c.notch};
+      const FractureGeometry g{fracture_problem("three-point-bend"), kBeam, kLine, c.notch};
       ASSERT_NO_THROW(fracture_setup(mesh, g, CrackingMode::arbitrary, 0.05))
           << "d " << d << " seed " << seed;
     }

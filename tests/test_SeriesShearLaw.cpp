@@ -19,7 +19,7 @@ namespace {
 constexpr double kStrength = 3.33e6, kEnergy = 124.0, kEps = 1e13;
 
 const CohesiveLaw& law() {
-  static const CohesiveLaw l(CohesiveParameters{kStrength, kEnergy, 1.0, SofteningShape::linear});
+  static const CohesiveLaw l(CohesiveParameters{kStrength, kEnergy, 1.0, "linear"});
   return l;
 }
 

@@ -28,7 +28,7 @@ constexpr double kE = 28.3e9, kDensity = 2250.0, kH = 0.01;
 struct SpringSystem {
   DynamicsModel model{mesh_spec(MeshFamily::rcp, Rectangle(0, 0, 5 * kH, 5 * kH), kH, 3),
                       IsotropicElasticity(kE, 0.2, PlaneModel::strain), kDensity};
-  CohesiveLaw law{CohesiveParameters{3.7e6, 57.0, 1.0, SofteningShape::linear, 10 * kE / kH}};
+  CohesiveLaw law{CohesiveParameters{3.7e6, 57.0, 1.0, "linear", 10 * kE / kH}};
   ClosureStiffness closure;  // the default: a tenth of K0
 
   std::vector<char> interior() const {

@@ -55,8 +55,7 @@ struct Model {
         integrator(table, IsotropicElasticity(kE, 0.2, PlaneModel::strain), false),
         matrices(integrator.all_cell_matrices(2)),
         limit(mesh, matrices, mass, 2),
-        law(CohesiveParameters{kStrength, kToughness, 1.0, SofteningShape::linear,
-                               10.0 * kE / mesh.h_avg()}),
+        law(CohesiveParameters{kStrength, kToughness, 1.0, "linear", 10.0 * kE / mesh.h_avg()}),
         every_edge(mesh.num_edges(), 1),
         dt(CohesiveForces::stable_step(limit, mesh, mass, law, every_edge, 0.9)) {}
 };

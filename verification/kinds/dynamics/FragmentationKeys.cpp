@@ -1,6 +1,7 @@
 // The keys a fragmentation study adds to a dynamics scene (docs/fragmentation.md): the cohesive
 // law and the insertion criterion. A dynamics study refuses them.
 #include "core/util/Errors.hpp"
+#include "fracture/SofteningLaws.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
 
@@ -12,8 +13,7 @@ void DynamicsSceneReader::read_fracture() {
   if (!s_.fragmentation) return;
   SceneObject c = object("cohesive");
   CohesiveParameters& law = s_.cohesive;
-  law.shape = word(c, "cohesive.law", " linear bilinear ") == "linear" ? SofteningShape::linear
-                                                                       : SofteningShape::bilinear;
+  law.shape = word(c, "cohesive.law", softening_law_words());
   law.strength = number(c, "cohesive.strength");
   law.fracture_energy = number(c, "cohesive.fracture_energy");
   law.shear_factor = number(c, "cohesive.shear_factor");

@@ -4,6 +4,7 @@
 // a plane model beyond 1 km): what they refuse is a value that would overflow the run.
 #include "verification/kinds/fracture/FractureKeys.hpp"
 
+#include "fracture/FractureProblem.hpp"
 #include "verification/harness/PhysicsKeys.hpp"
 
 namespace vorodg {
@@ -14,7 +15,7 @@ std::vector<SceneKey> problem_keys() {
   return {
       key("study", "string", "fracture", "fracture", "the study kind"),
       key("label", "string", "\"\"", "any", "a variant's name and subfolder (variants[] only)"),
-      key("problem", "string", "three-point-bend", "tension-bar or three-point-bend",
+      key("problem", "string", "three-point-bend", fracture_problem_list(),
           "the bar pulled apart across a crack line, or Petersson's notched beam"),
       key("domain", "[x0, y0, x1, y1]", "[0, 0, 2, 0.2]", kRectangleRange,
           "the bar or the beam, m"),

@@ -151,12 +151,11 @@ class PathRecorder {
     r_.dissipated_energy = p.energy.dissipated;
     r_.crack_length = p.energy.crack_length;
     r_.energy_balance_error = std::max(r_.energy_balance_error, p.balance_error());
-    if (scene_.geometry.kind == FractureProblemKind::tension_bar) {
-      const double d = tension_bar_deviation(scene_.geometry, material_, model_.interfaces().law(),
-                                             scene_.thickness, p.stroke, p.cmod, p.load);
+    if (const std::optional<double> d = scene_.geometry.problem->closed_form_deviation(
+            scene_.geometry, material_, model_.interfaces().law(), scene_.thickness, p.stroke,
+            p.cmod, p.load))
       r_.closed_form_error =
-          std::isnan(r_.closed_form_error) ? d : std::max(r_.closed_form_error, d);
-    }
+          std::isnan(r_.closed_form_error) ? *d : std::max(r_.closed_form_error, *d);
     r_.newton_iterations += p.iterations;
     ++r_.points;
   }

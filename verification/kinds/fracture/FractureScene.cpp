@@ -6,6 +6,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "fracture/SofteningLaws.hpp"
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/kinds/fracture/FractureKeys.hpp"
@@ -50,8 +51,7 @@ class FractureSceneReader : public SceneKeyReader {
  private:
   void read_geometry() {
     try {
-      s_.geometry.kind =
-          parse_fracture_problem(word(top_, "problem", " tension-bar three-point-bend "));
+      s_.geometry.problem = fracture_problem(word(top_, "problem", fracture_problem_words()));
     } catch (const InputError& e) {
       top_.fail_value("problem", e.what());
     }
@@ -83,8 +83,7 @@ class FractureSceneReader : public SceneKeyReader {
 
   void read_cohesive() {
     SceneObject c = object("cohesive");
-    const std::string law = word(c, "cohesive.law", " linear bilinear ");
-    s_.law.shape = law == "linear" ? SofteningShape::linear : SofteningShape::bilinear;
+    s_.law.shape = word(c, "cohesive.law", softening_law_words());
     s_.law.strength = number(c, "cohesive.strength");
     s_.law.fracture_energy = number(c, "cohesive.fracture_energy");
     s_.law.shear_factor = number(c, "cohesive.shear_factor");

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "core/element/ElementTable.hpp"
-#include "core/material/CohesiveLaw.hpp"
 #include "core/material/IsotropicElasticity.hpp"
-#include "core/material/MohrCoulomb.hpp"
 #include "dg/QuasiStaticPath.hpp"
-#include "verification/problems/FractureProblem.hpp"
+#include "fracture/CohesiveLaw.hpp"
+#include "fracture/FractureProblem.hpp"
+#include "fracture/MohrCoulomb.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

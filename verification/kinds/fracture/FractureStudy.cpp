@@ -182,7 +182,7 @@ void write_reports(const FractureScene& scene, const StudyRecords<FractureRecord
   for (const FractureRecord& r : result.records) csv += csv_row(fracture_fields(), r);
   write_file_atomically(out / "results.csv", csv);
 
-  const std::string problem = fracture_problem_name(scene.geometry.kind);
+  const std::string problem = scene.geometry.problem->name();
   const std::string mode = cracking_mode_name(scene.mode);
   const std::string control = load_control_name(scene.loading.control);
   json summary = {{"scene", scene.name},

@@ -1,5 +1,5 @@
 // three-point-bend (fragmentation only): the quasi-static fracture study's notched beam
-// (Petersson's, verification/problems/FractureProblem) loaded at a rate: pinned at the lower-left
+// (Petersson's, fracture/FractureProblem) loaded at a rate: pinned at the lower-left
 // corner, on a roller at the lower-right one, the top vertex above the crack line pushed down at
 // a prescribed speed that rises smoothly from rest. Its geometry, mesh, supports, load point and
 // crack mouth are the quasi-static setup's (fracture_setup), so that one mesh realization is the
@@ -12,11 +12,11 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "fracture/FractureProblem.hpp"
 #include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
 #include "verification/kinds/dynamics/problems/BendCurve.hpp"
 #include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
-#include "verification/problems/FractureProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -52,7 +52,7 @@ class ThreePointBend : public DynamicsProblem {
 
   void read(DynamicsSceneReader& r, DynamicsScene& s) override {
     const Rectangle& d = s.bodies[0].domain;
-    geometry_.kind = FractureProblemKind::three_point_bend;
+    geometry_.problem = fracture_problem("three-point-bend");
     geometry_.domain = d;
     geometry_.line_x = 0.5 * (d.x0() + d.x1());
     geometry_.notch_depth = r.number(r.top(), "notch_depth");

@@ -1,4 +1,4 @@
-#include "core/material/MohrCoulomb.hpp"
+#include "fracture/MohrCoulomb.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,6 +9,7 @@
 // mix. Unloading (delta below its largest value so far, delta_max) goes linearly towards the
 // origin, and so does reloading until delta_max. A closed crack (delta_n < 0) carries no normal
 // traction: preventing interpenetration is contact's job, not the law's.
+// The envelope's shape after the peak is a softening law, chosen by name (SofteningLaws):
 //   linear:   T = sigma_c (1 - delta / delta_c),  delta_c = 2 G / sigma_c
 //   bilinear: the usual concrete law, kink at sigma_c / 3: T falls from sigma_c to sigma_c / 3 at
 //             delta_1 = 0.8 G / sigma_c, then to zero at delta_c = 3.6 G / sigma_c (area G)
@@ -17,17 +18,16 @@
 // (delta_0, sigma_c) to (delta_c, 0), bilinear with its kink moved to delta_1 + delta_0 / 3.
 // The law is the same for quasi-static fracture and for dynamic fragmentation.
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 namespace vorodg {
 
-enum class SofteningShape { linear, bilinear };
-
 struct CohesiveParameters {
-  double strength = 0.0;         // sigma_c > 0
-  double fracture_energy = 0.0;  // G > 0: the area under the envelope
-  double shear_factor = 1.0;     // beta >= 0
-  SofteningShape shape = SofteningShape::linear;
+  double strength = 0.0;           // sigma_c > 0
+  double fracture_energy = 0.0;    // G > 0: the area under the envelope
+  double shear_factor = 1.0;       // beta >= 0
+  std::string shape = "linear";    // the softening law's name (SofteningLaws)
   double initial_stiffness = 0.0;  // K0: 0 for an extrinsic law, > 0 for an intrinsic one
 };
 

@@ -1,10 +1,11 @@
-#include "core/material/CohesiveLaw.hpp"
+#include "fracture/CohesiveLaw.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/util/Errors.hpp"
+#include "fracture/SofteningLaws.hpp"
 
 namespace vorodg {
 
@@ -16,16 +17,13 @@ CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) 
                     p_.shear_factor, ">= 0");
   require_parameter(std::isfinite(p_.initial_stiffness) && p_.initial_stiffness >= 0,
                     "initial_stiffness", p_.initial_stiffness, ">= 0");
-  const double sc = p_.strength, scale = p_.fracture_energy / sc;
+  const double sc = p_.strength;
   const double d0 = intrinsic() ? sc / p_.initial_stiffness : 0.0;
   if (intrinsic()) knots_.emplace_back(0.0, 0.0);
   knots_.emplace_back(d0, sc);
-  if (p_.shape == SofteningShape::linear) {
-    knots_.emplace_back(2.0 * scale, 0.0);
-  } else {  // the kink keeps the area G: 0.8 G / sigma_c extrinsic, moved by delta_0 / 3
-    knots_.emplace_back(0.8 * scale + d0 / 3.0, sc / 3.0);
-    knots_.emplace_back(3.6 * scale, 0.0);
-  }
+  for (const Eigen::Vector2d& knot :
+       softening_law(p_.shape).knots_after_peak(sc, p_.fracture_energy, d0))
+    knots_.push_back(knot);
   for (std::size_t k = 1; k < knots_.size(); ++k)
     require_parameter(knots_[k].x() > knots_[k - 1].x(), "initial_stiffness", p_.initial_stiffness,
                       "large enough that the peak comes before the critical opening");

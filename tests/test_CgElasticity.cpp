@@ -32,13 +32,13 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/problem/AffineField.hpp"
+#include "core/problem/ErrorNorms.hpp"
+#include "core/problem/ManufacturedSolution.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 #include "core/util/Errors.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/ErrorNorms.hpp"
 #include "verification/SolveRun.hpp"
-#include "verification/problems/AffineField.hpp"
-#include "verification/problems/ManufacturedSolution.hpp"
-#include "verification/problems/TimoshenkoBeam.hpp"
 #include "verification/report/RateFit.hpp"
 
 namespace vorodg {

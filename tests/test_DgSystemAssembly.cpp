@@ -12,11 +12,11 @@
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
+#include "core/problem/AffineField.hpp"
 #include "core/solve/DirichletConstraints.hpp"
 #include "dg/DgSystemAssembly.hpp"
 #include "interfaces/DgSpace.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/problems/AffineField.hpp"
 
 namespace vorodg {
 namespace {

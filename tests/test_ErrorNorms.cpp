@@ -1,4 +1,4 @@
-// Error norms (verification/ErrorNorms): relative L2 and energy errors of a DOF field against an
+// Error norms (core/problem/ErrorNorms): relative L2 and energy errors of a DOF field against an
 // exact solution.
 // - The exact solution's own nodal interpolant on a triangle mesh (where the RK element is the
 //   linear triangle) gives small, nonzero errors that agree with an independent computation of
@@ -17,11 +17,11 @@
 #include "core/element/ElementTable.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/problem/AffineField.hpp"
+#include "core/problem/ErrorNorms.hpp"
+#include "core/problem/ManufacturedSolution.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/ErrorNorms.hpp"
-#include "verification/problems/AffineField.hpp"
-#include "verification/problems/ManufacturedSolution.hpp"
-#include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {
 namespace {

@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "core/material/IsotropicElasticity.hpp"
+#include "core/problem/AffineField.hpp"
+#include "core/problem/ManufacturedSolution.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 #include "core/util/Errors.hpp"
-#include "verification/problems/AffineField.hpp"
-#include "verification/problems/ManufacturedSolution.hpp"
-#include "verification/problems/TimoshenkoBeam.hpp"
 
 namespace vorodg {
 namespace {

@@ -22,10 +22,10 @@
 #include <vector>
 
 #include "core/element/ElasticityIntegrator.hpp"
+#include "core/problem/AffineField.hpp"
 #include "interfaces/DgSpace.hpp"
 #include "interfaces/InterfaceOperators.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/problems/AffineField.hpp"
 
 namespace vorodg {
 namespace {

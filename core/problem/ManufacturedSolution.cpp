@@ -1,4 +1,4 @@
-#include "verification/problems/ManufacturedSolution.hpp"
+#include "core/problem/ManufacturedSolution.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/element/ElementTable.hpp"
-#include "verification/problems/ExactSolution.hpp"
+#include "core/problem/ExactSolution.hpp"
 
 namespace vorodg {
 

@@ -4,7 +4,7 @@
 // it exactly, with all sides Dirichlet (`patch`) or with Dirichlet on left and bottom and the
 // exact traction on right and top (`patch-mixed`). `patch-traction` loads every side with
 // traction and so leaves rigid motions free: the singular case the solvers must refuse.
-#include "verification/problems/ExactSolution.hpp"
+#include "core/problem/ExactSolution.hpp"
 
 namespace vorodg {
 

@@ -3,7 +3,7 @@
 // [0, L] x [-D/2, D/2], end load P, I = D^3/12. The exact displacement is prescribed on x = 0,
 // the exact (parabolic shear) traction on x = L; top and bottom are traction-free. In plane
 // strain E and nu are replaced by E/(1-nu^2) and nu/(1-nu).
-#include "verification/problems/ExactSolution.hpp"
+#include "core/problem/ExactSolution.hpp"
 
 namespace vorodg {
 

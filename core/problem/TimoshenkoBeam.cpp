@@ -1,4 +1,4 @@
-#include "verification/problems/TimoshenkoBeam.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 
 #include "core/util/Errors.hpp"
 

@@ -2,7 +2,7 @@
 // A smooth manufactured field with body force on any rectangle, zero on all four sides
 // (all-Dirichlet): u = U (s, s/2), s = sin(pi X/W) sin(pi Y/H), X, Y measured from the lower
 // left corner. For convergence runs without the beam's boundary layer of tractions.
-#include "verification/problems/ExactSolution.hpp"
+#include "core/problem/ExactSolution.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "verification/ErrorNorms.hpp"
+#include "core/problem/ErrorNorms.hpp"
 
 #include <cmath>
 

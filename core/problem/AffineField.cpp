@@ -1,4 +1,4 @@
-#include "verification/problems/AffineField.hpp"
+#include "core/problem/AffineField.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "verification/problems/ExactSolution.hpp"
+#include "core/problem/ExactSolution.hpp"
 
 namespace vorodg {
 

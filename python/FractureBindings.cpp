@@ -13,13 +13,13 @@
 #include "core/util/Errors.hpp"
 #include "dg/CohesiveFracture.hpp"
 #include "dg/QuasiStaticPath.hpp"
+#include "dynamics/ExplicitSimulation.hpp"
 #include "fracture/CrackState.hpp"
 #include "fracture/Fragments.hpp"
 #include "python/Bindings.hpp"
 #include "verification/cli/RunCommand.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/kinds/dynamics/DynamicsMesh.hpp"
-#include "verification/kinds/dynamics/DynamicsModel.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 #include "verification/kinds/fracture/FractureRun.hpp"
 
@@ -181,7 +181,7 @@ py::dict fragmentation_run(const py::handle& scene, const std::string& output,
   DynamicsRecord r;
   {
     py::gil_scoped_release unlocked;
-    r = run_dynamics(s, id, output, [&](const DynamicsModel& model) {
+    r = run_dynamics(s, id, output, [&](const ExplicitSimulation& model) {
       const CrackState state = model.cracks->broken_state();
       const Fragments pieces(state, model.mass.pair_masses());
       fragments.emplace(pieces);

@@ -10,7 +10,6 @@
 
 #include "core/util/Errors.hpp"
 #include "verification/harness/EnsembleRun.hpp"
-#include "verification/kinds/dynamics/DynamicsModel.hpp"
 #include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 
@@ -31,7 +30,7 @@ struct Bar {
 
 Bar run_bar(const std::string& text) {
   const DynamicsScene scene = parse_dynamics_scene(text, "test scene");
-  DynamicsModel model(scene, ensemble_runs(scene.meshes).front());
+  ExplicitSimulation model = dynamics_simulation(scene, ensemble_runs(scene.meshes).front());
   DynamicsProbe probe(scene, model.bodies, *model.run);
   for (long s = 0; s < model.steps; ++s) {
     model.run->step();

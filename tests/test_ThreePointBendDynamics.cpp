@@ -32,7 +32,6 @@
 #include <vector>
 
 #include "core/util/Errors.hpp"
-#include "verification/kinds/dynamics/DynamicsModel.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 #include "verification/kinds/fracture/FractureRun.hpp"
 #include "verification/kinds/fracture/FractureScene.hpp"
@@ -123,7 +122,8 @@ int vertex_at(const PolygonMesh& mesh, const Point& p) {
 TEST(ThreePointBendDynamics, SupportsLoadPointNotchAndFaces) {
   for (const char* mode : {"restricted", "pre-inserted"}) {
     const DynamicsScene scene = quick({{"cracking", {{"mode", mode}}}});
-    const DynamicsModel model(scene, ensemble_runs(scene.meshes).front());
+    const ExplicitSimulation model =
+        dynamics_simulation(scene, ensemble_runs(scene.meshes).front());
     const PolygonMesh& mesh = model.mesh();
     const CentralDifference& run = *model.run;
     const int pin = vertex_at(mesh, {0.0, 0.0}), roller = vertex_at(mesh, {2.0, 0.0});
@@ -157,7 +157,7 @@ TEST(ThreePointBendDynamics, SupportsLoadPointNotchAndFaces) {
 /// The static elastic slope of the run's own discretization, N/m: its cell matrices on its DOF map
 /// at t = 0 (the notch split), its supports, the load point moved down by 1; the load is minus
 /// the vertical force K u at the load point's nodes, times the thickness.
-double static_slope(const DynamicsModel& model, double thickness) {
+double static_slope(const ExplicitSimulation& model, double thickness) {
   const CentralDifference& run = *model.run;
   const SplitDofMap& dofs = run.dofs();
   const PolygonMesh& mesh = model.mesh();
@@ -242,7 +242,7 @@ TEST(ThreePointBendDynamics, ElasticSlopeIsTheQuasiStaticOne) {
     n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
   }
   const double dynamic = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double fixed = static_slope(DynamicsModel(scene, id), scene.thickness);
+  const double fixed = static_slope(dynamics_simulation(scene, id), scene.thickness);
   const double quasi_static = quasi_static_slope(id, out / "qs");
   std::printf(
       "elastic slope: dynamic %.6e N/m over %g rows; static on the same cells %.6e N/m (%+.3f %%); "

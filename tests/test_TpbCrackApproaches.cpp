@@ -14,7 +14,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "verification/kinds/dynamics/DynamicsModel.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 
 namespace vorodg {
@@ -36,7 +35,7 @@ DynamicsScene quick(const json& changes) {
 
 TEST(TpbCrackApproaches, OnlyTheCrackLineIsCoupled) {
   const DynamicsScene scene = quick({{"cracking", {{"mode", "restricted"}}}, {"interfaces", "dg"}});
-  const DynamicsModel model(scene, ensemble_runs(scene.meshes).front());
+  const ExplicitSimulation model = dynamics_simulation(scene, ensemble_runs(scene.meshes).front());
   ASSERT_TRUE(model.coupling.has_value());
   const PolygonMesh& mesh = model.mesh();
   int line = 0, notch = 0, active = 0;
@@ -60,8 +59,8 @@ TEST(TpbCrackApproaches, OnlyTheCrackLineIsCoupled) {
 TEST(TpbCrackApproaches, PreInsertedIsTheSameRunWithEitherApproach) {
   const DynamicsScene insertion = quick({{"rate", {{"max_displacement", 2e-4}}}}),
                       dg = quick({{"rate", {{"max_displacement", 2e-4}}}, {"interfaces", "dg"}});
-  DynamicsModel a(insertion, ensemble_runs(insertion.meshes).front()),
-      b(dg, ensemble_runs(dg.meshes).front());
+  ExplicitSimulation a = dynamics_simulation(insertion, ensemble_runs(insertion.meshes).front());
+  ExplicitSimulation b = dynamics_simulation(dg, ensemble_runs(dg.meshes).front());
   ASSERT_EQ(a.dt, b.dt);
   for (int k = 0; k < 2000; ++k) a.cracks->step(), b.cracks->step();
   EXPECT_EQ(a.run->displacement(), b.run->displacement());

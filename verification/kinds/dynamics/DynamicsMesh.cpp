@@ -42,11 +42,6 @@ PolygonMesh body_mesh(const DynamicsScene& scene, const EnsembleRunId& run, int 
 
 }  // namespace
 
-int BodiesMesh::body_of_cell(int c) const {
-  const auto it = std::upper_bound(first_cell.begin(), first_cell.end(), c);
-  return static_cast<int>(it - first_cell.begin()) - 1;
-}
-
 BodiesMesh bodies_mesh(const DynamicsScene& scene, const EnsembleRunId& run) {
   std::vector<Point> vertices;
   std::vector<int> offsets{0}, loops;

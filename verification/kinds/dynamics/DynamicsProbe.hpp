@@ -48,7 +48,7 @@ struct DynamicsMeasures {
   double contact_friction_dissipated = NAN, face_friction_dissipated = NAN;
   // what contact's velocity penalty (damping or plastic) and the cells' bulk viscosity took
   double contact_velocity_dissipated = NAN, bulk_viscosity_dissipated = NAN;
-  // fragmentation (FragmentationRun): fragments are bounded by fully broken edges
+  // fragmentation (Fragmentation, FragmentRecord): fragments are bounded by fully broken edges
   double fragments = NAN, max_fragment_mass_fraction = NAN, dissipated_energy = NAN;
   double single_cell_mass_fraction = NAN;  // the mass in fragments of one cell, of the total
   // The largest fragment's turn at the end, rad: the polar angle of its mass-weighted mean

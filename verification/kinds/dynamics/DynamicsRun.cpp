@@ -13,10 +13,10 @@
 #include "core/util/Stopwatch.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/ContactForces.hpp"
+#include "dynamics/ExplicitSimulation.hpp"
 #include "dynamics/LumpedMass.hpp"
 #include "verification/kinds/dynamics/DynamicsHistory.hpp"
-#include "verification/kinds/dynamics/DynamicsModel.hpp"
-#include "verification/kinds/dynamics/FragmentationRun.hpp"
+#include "verification/kinds/dynamics/FragmentRecord.hpp"
 #include "verification/model/SettingsSchema.hpp"
 
 namespace fs = std::filesystem;
@@ -91,9 +91,10 @@ fs::path history_file(const fs::path& out, const std::string& name) {
 /// the requested snapshot times with their list.
 class RunOutputs {
  public:
-  RunOutputs(const DynamicsModel& model, const fs::path& out, std::string name)
+  RunOutputs(const ExplicitSimulation& model, const DynamicsScene& scene, const fs::path& out,
+             std::string name)
       : model_(model),
-        scene_(model.scene),
+        scene_(scene),
         out_(out),
         name_(std::move(name)),
         history_(history_file(out, name_)),
@@ -143,7 +144,7 @@ class RunOutputs {
     return file;
   }
 
-  const DynamicsModel& model_;
+  const ExplicitSimulation& model_;
   const DynamicsScene& scene_;
   const fs::path out_;
   const std::string name_;
@@ -155,8 +156,8 @@ class RunOutputs {
 
 /// Steps the model to its end, observing and writing as the scene asks. Throws NumericalError
 /// once the energy blows up (a stable run stays within round-off of its input).
-void time_loop(DynamicsModel& model, RunOutputs& outputs, DynamicsProbe& probe) {
-  const DynamicsScene& scene = model.scene;
+void time_loop(ExplicitSimulation& model, const DynamicsScene& scene, RunOutputs& outputs,
+               DynamicsProbe& probe) {
   CentralDifference& run = *model.run;
   probe.observe();
   if (model.cracks) model.cracks->check_balance(run.record());
@@ -164,10 +165,7 @@ void time_loop(DynamicsModel& model, RunOutputs& outputs, DynamicsProbe& probe) 
   outputs.frame();
   outputs.snapshots();
   for (long s = 1; s <= model.steps; ++s) {
-    if (model.cracks)
-      model.cracks->step();
-    else
-      run.step();
+    model.step();
     const StepRecord& step = run.record();
     probe.observe();
     const double energy = step.kinetic + step.elastic;
@@ -199,11 +197,15 @@ void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<Ensembl
       "scene " + scene.path.string() + ": ");
 }
 
+ExplicitSimulation dynamics_simulation(const DynamicsScene& scene, const EnsembleRunId& id) {
+  return ExplicitSimulation(scene, bodies_mesh(scene, id), *scene.problem, id.seed);
+}
+
 DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
                             const fs::path& out,
-                            const std::function<void(const DynamicsModel&)>& at_end) {
+                            const std::function<void(const ExplicitSimulation&)>& at_end) {
   const Stopwatch clock;
-  DynamicsModel model(scene, id);
+  ExplicitSimulation model = dynamics_simulation(scene, id);
   DynamicsRecord r;
   r.run = id;
   r.cells = model.mesh().num_cells();
@@ -214,12 +216,12 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   r.steps = model.steps;
   r.contact_stiffness = model.contact_stiffness;
   r.dofs = model.run->dofs().num_dofs();
-  RunOutputs outputs(model, out, id.id());
+  RunOutputs outputs(model, scene, out, id.id());
   DynamicsProbe probe(scene, model.bodies, *model.run);
   if (model.cracks) probe.watch_cracks(model.cracks->cohesive());
   const double setup = clock.seconds();
   try {
-    time_loop(model, outputs, probe);
+    time_loop(model, scene, outputs, probe);
     r.complete = true;
   } catch (const NumericalError& e) {  // unstable, or a breakdown: what was written stays
     r.failure = e.what();
@@ -229,7 +231,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   r.end_time = model.run->time();
   r.measures = probe.finish();
   probe.write(out, id.id());
-  if (model.cracks) model.cracks->finish(out, id.id(), model.mass, r.measures);
+  if (model.cracks) record_fragments(*model.cracks, scene, model.mass, out, id.id(), r.measures);
   if (model.coupling) r.measures.coupling_seconds = model.run->coupling_seconds();
   r.seconds = clock.seconds();
   r.loop_seconds = r.seconds - setup;

@@ -9,13 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/ExplicitSimulation.hpp"
 #include "verification/kinds/dynamics/DynamicsMesh.hpp"
 #include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 
 namespace vorodg {
-
-class DynamicsModel;
 
 struct DynamicsRecord {
   EnsembleRunId run;
@@ -38,14 +37,18 @@ struct DynamicsRecord {
 /// bodies cannot carry is refused as bad input (naming the mesh block) before anything runs.
 void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<EnsembleRunId>& runs);
 
+/// The simulation of realization `id` of `scene`: its bodies' mesh, the scene's physics and its
+/// problem's loads (the scene must outlive it). Throws InputError for what the mesh cannot carry.
+ExplicitSimulation dynamics_simulation(const DynamicsScene& scene, const EnsembleRunId& id);
+
 /// Runs one realization, writing history/<id>.csv and (outputs.vtu) vtu/<id>.pvd under `out`.
 /// A run that becomes unstable or breaks down numerically stops there: it keeps its history and
 /// is recorded incomplete with the reason.
-/// `at_end`, if given, sees the model after the run (its state, its cracks): what the Python
+/// `at_end`, if given, sees the simulation after the run (its state, its cracks): what the Python
 /// layer reads the fragments from.
 DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& run,
                             const std::filesystem::path& out,
-                            const std::function<void(const DynamicsModel&)>& at_end = {});
+                            const std::function<void(const ExplicitSimulation&)>& at_end = {});
 
 /// A record's line of results.jsonl.
 nlohmann::json dynamics_record_json(const DynamicsScene& scene, const DynamicsRecord& record);

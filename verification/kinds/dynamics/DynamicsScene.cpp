@@ -8,6 +8,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "dynamics/contact/ContactLaws.hpp"
 #include "verification/harness/SceneObject.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
@@ -24,6 +25,14 @@ using nlohmann::json;
 std::string problem_words() {
   std::string words = " ";
   for (const std::unique_ptr<DynamicsProblem>& p : dynamics_problems()) words += p->name() + " ";
+  return words;
+}
+
+/// " rigid-plane ... ": the contact laws a wall can be, for word().
+std::string obstacle_law_words() {
+  std::string words = " ";
+  for (const ContactLawEntry& e : contact_laws())
+    if (e.obstacle) words += e.name + " ";
   return words;
 }
 
@@ -100,6 +109,7 @@ void DynamicsSceneReader::read_wall() {
   if (!impact && !top_.has("wall")) {
     note("wall.point", "none");
     note("wall.normal", "none");
+    note("wall.law", "none");
     note("wall.friction", "none");
     return;
   }
@@ -113,6 +123,7 @@ void DynamicsSceneReader::read_wall() {
   w.normal = point(o, "wall.normal", fallback.normal);
   if (w.normal.norm() == 0.0) o.fail_value("normal", "expected not [0, 0]");
   w.normal.normalize();
+  w.law = word(o, "wall.law", obstacle_law_words());
   w.friction = number(o, "wall.friction", problem_->default_contact().wall_friction);
   o.finish();
   const double tolerance = 1e-12 * body.domain.scale();
@@ -230,19 +241,6 @@ DynamicsScene DynamicsSceneReader::read() {
   s_.settings = settings();
   s_.problem = std::move(problem_);
   return s_;
-}
-
-std::string step_estimate_name(StepEstimate e) {
-  return e == StepEstimate::lanczos ? "lanczos" : "cells";
-}
-
-double DynamicsScene::bar_speed() const {
-  return std::sqrt(E / (density * (plane == PlaneModel::stress ? 1.0 : 1.0 - nu * nu)));
-}
-
-double DynamicsScene::dilatational_speed() const {
-  if (plane == PlaneModel::stress) return std::sqrt(E / (density * (1.0 - nu * nu)));
-  return std::sqrt(E * (1.0 - nu) / (density * (1.0 + nu) * (1.0 - 2.0 * nu)));
 }
 
 const std::string& DynamicsScene::setting(const std::string& key) const {

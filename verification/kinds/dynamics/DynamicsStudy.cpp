@@ -16,6 +16,7 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
+#include "dynamics/Fragmentation.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/EnsembleStudy.hpp"
 #include "verification/harness/StudyParts.hpp"
@@ -23,7 +24,6 @@
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 #include "verification/kinds/dynamics/FragmentLevels.hpp"
-#include "verification/kinds/dynamics/FragmentationRun.hpp"
 #include "verification/kinds/dynamics/PerturbationReport.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 

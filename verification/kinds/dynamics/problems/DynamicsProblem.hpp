@@ -17,14 +17,13 @@
 
 #include "core/geometry/Rectangle.hpp"
 #include "dynamics/CentralDifference.hpp"
+#include "dynamics/ExplicitLoading.hpp"
 
 namespace vorodg {
 
 struct BodiesMesh;
-struct DynamicsBody;
 struct DynamicsMeasures;
 struct DynamicsScene;
-struct DynamicsWall;
 class DynamicsSceneReader;
 class PolygonMesh;
 struct MeshSpec;
@@ -42,13 +41,6 @@ class ProblemProbe {
   virtual void write(const std::filesystem::path& /*out*/, const std::string& /*run*/) const {}
 };
 
-/// Where a fragmentation run's cracks may form, and those there at t = 0, by mesh edge.
-struct CrackSites {
-  std::vector<char> eligible;  // per edge: checked by the insertion criterion (empty: every edge)
-  std::vector<int> pre_inserted;  // cohesive faces from t = 0, the law from zero opening
-  std::vector<int> free;          // split from t = 0 with no cohesive traction (a notch)
-};
-
 /// A column of report.md: its header and the text of a run's cell.
 struct ReportColumn {
   std::string header;
@@ -64,7 +56,9 @@ struct ContactDefaults {
   double bulk_linear = 0.0, bulk_quadratic = 0.0;
 };
 
-class DynamicsProblem {
+/// The physics of a run it adds (ExplicitLoading: crack sites, boundaries, initial velocities)
+/// and what the study needs of it besides.
+class DynamicsProblem : public ExplicitLoading {
  public:
   virtual ~DynamicsProblem() = default;
   /// The name a scene gives as `problem`.
@@ -102,18 +96,13 @@ class DynamicsProblem {
   /// Throws InputError where the bodies' mesh cannot carry the problem (no edges along a crack
   /// line, no vertex at a load point).
   virtual void check_mesh(const PolygonMesh&) const {}
-  /// Fragmentation: where cracks may form and where they are at t = 0; by default every interior
-  /// edge may crack and none has.
-  virtual CrackSites crack_sites(const PolygonMesh&) const { return {}; }
+  // crack_sites (ExplicitLoading): where cracks may form and where they are at t = 0.
 
   // ---- the run
   /// True where a velocity is prescribed on part of the boundary (momentum enters there).
   virtual bool prescribes_velocity() const { return false; }
-  /// Prescribed velocities and loads of the problem (gravity is the scene's).
-  virtual void add_boundaries(const PolygonMesh&, CentralDifference&) const {}
-  /// What the problem adds to a node's velocity at t = 0 beyond its body's rigid motion.
-  virtual void add_initial_velocity(const DynamicsBody&, const Eigen::Vector2d&,
-                                    Eigen::Ref<Eigen::Vector2d>) const {}
+  // add_boundaries and add_initial_velocity (ExplicitLoading): prescribed velocities and loads,
+  // and what the problem adds to a node's velocity at t = 0 beyond its body's rigid motion.
 
   // ---- what is measured and reported
   /// True where the bodies keep their angular momentum unless something outside acts.

@@ -1,35 +1,44 @@
 #pragma once
-// The model of one dynamics run, set up once before its time loop (setup_system, in deal.II's
-// words): the bodies' mesh, the element table, the lumped masses, the elastic integrator and the
-// per-cell material variation; bulk viscosity; the internal force (small strain, or corotational),
-// the two estimates of the critical step and the step taken; the central-difference integrator with
-// its contact, its boundary conditions and loads, and the cracks of a fragmentation run; and the
-// initial state (each body's velocity and spin).
+// One explicit simulation of bodies, set up once before its time loop (setup_system, in deal.II's
+// words) from plain values: the bodies' mesh (BodiesMesh), ExplicitParameters and the problem's
+// loads (ExplicitLoading). It owns the element table, the lumped masses, the elastic integrator
+// and the per-cell material variation; bulk viscosity; the internal force (small strain, or
+// corotational), the two estimates of the critical step and the step taken; the central-difference
+// integrator with its contact laws, its boundary conditions and loads, and the cracks of a
+// fragmentation run; and the initial state (each body's velocity and spin). step() advances it
+// by one step (with the insertion check after it when it fragments); the integrator's record
+// (run->record()) is what an observer reads after each.
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
+#include "dynamics/BodiesMesh.hpp"
 #include "dynamics/BulkViscosity.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/ContactForces.hpp"
+#include "dynamics/ExplicitLoading.hpp"
+#include "dynamics/ExplicitParameters.hpp"
+#include "dynamics/Fragmentation.hpp"
 #include "dynamics/InterfaceCoupling.hpp"
 #include "dynamics/LumpedMass.hpp"
 #include "dynamics/MaterialVariation.hpp"
-#include "verification/kinds/dynamics/DynamicsMesh.hpp"
-#include "verification/kinds/dynamics/FragmentationRun.hpp"
 
 namespace vorodg {
 
-class DynamicsModel {
+class ExplicitSimulation {
  public:
-  /// Builds everything of realization `id` of `scene`; throws InputError for what the mesh
-  /// cannot carry (a projectile narrower than the cells, a K0 too small for the law).
-  DynamicsModel(const DynamicsScene& scene, const EnsembleRunId& id);
-  DynamicsModel(const DynamicsModel&) = delete;
-  DynamicsModel& operator=(const DynamicsModel&) = delete;
+  /// Builds everything on `bodies` (whose mesh it keeps) from `parameters` and `loading` (both
+  /// must outlive it); `seed` is the realization's (the material variation's stream derives from
+  /// it). Throws InputError for what the mesh cannot carry (a K0 too small for the law).
+  ExplicitSimulation(const ExplicitParameters& parameters, BodiesMesh bodies,
+                     const ExplicitLoading& loading, std::uint64_t seed);
+  ExplicitSimulation(const ExplicitSimulation&) = delete;
+  ExplicitSimulation& operator=(const ExplicitSimulation&) = delete;
 
-  const DynamicsScene& scene;
+  const ExplicitParameters& parameters;
+  const ExplicitLoading& loading;
   const BodiesMesh bodies;
   const ElementTable table;
   const LumpedMass mass;
@@ -44,13 +53,15 @@ class DynamicsModel {
   double contact_stiffness = NAN;  // a fixed displacement penalty k_d (NaN: alpha m / dt^2)
   double bulk_step_ratio = 0.0;    // dt over the undamped critical estimate (bulk viscosity on)
 
-  std::optional<FragmentationRun> cracks;     // fragmentation runs only
+  std::optional<Fragmentation> cracks;        // fragmentation runs only
   std::optional<InterfaceCoupling> coupling;  // interfaces: dg
   std::optional<ContactForces> contact;
   std::optional<BulkViscosity> bulk;  // bulk viscosity on the cells, when a coefficient is > 0
   std::optional<CentralDifference> run;
 
   const PolygonMesh& mesh() const { return bodies.mesh; }
+  /// One step of the integrator, with the insertion check after it when the run fragments.
+  void step();
 
  private:
   /// The internal force of the (varied) cell matrices; sets the two critical-step estimates.

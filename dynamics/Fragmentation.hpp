@@ -1,33 +1,35 @@
 #pragma once
 // The cracks of one fragmentation run (docs/fragmentation.md): the cohesive law with K0 in units
 // of E / h_avg, the Mohr-Coulomb insertion check on the interior edges the problem lets crack
-// (every one unless it says otherwise, DynamicsProblem::crack_sites), faces the problem puts in at
-// t = 0, and DynamicFracture on the run's integrator; the stable step with the faces' springs;
-// after the run, the fragments and the crack log as files, and the figures for results.csv.
-#include <filesystem>
+// (every one unless its CrackSites say otherwise), the faces there at t = 0, and DynamicFracture
+// on the run's integrator; the stable step with the faces' springs; the energy balance with the
+// law's closed forms; the fragments and the largest one's turn.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "dynamics/DynamicFracture.hpp"
+#include "dynamics/ExplicitLoading.hpp"
+#include "dynamics/ExplicitParameters.hpp"
 #include "dynamics/GlobalTimeStep.hpp"
 #include "dynamics/MaterialVariation.hpp"
 #include "dynamics/StableTimeStep.hpp"
 #include "fracture/Fragments.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
-#include "verification/kinds/dynamics/DynamicsScene.hpp"
 
 namespace vorodg {
 
 /// The energy balance with the law's energies a run must keep, of the input energy.
 constexpr double kLawBalanceLimit = 0.01;
 
-class FragmentationRun {
+class Fragmentation {
  public:
-  /// The law and criterion of `scene` on `mesh`; throws InputError naming cohesive keys the
-  /// mesh cannot carry (a K0 too small for the law's peak to come before delta_c).
-  FragmentationRun(const DynamicsScene& scene, const PolygonMesh& mesh, double h_avg);
+  /// The law and criterion of `p` on `mesh` with the problem's crack `sites`; throws InputError
+  /// naming cohesive keys the mesh cannot carry (a K0 too small for the law's peak to come before
+  /// delta_c).
+  Fragmentation(const ExplicitParameters& p, const PolygonMesh& mesh, double h_avg,
+                CrackSites sites);
 
   /// Each crack face's overclosure penalty becomes its interface's penalty eps in `coupling` (the
   /// run's interfaces coupled from the start), as in the quasi-static solver, instead of a
@@ -64,15 +66,24 @@ class FragmentationRun {
   /// For a .vtu frame: per cell its fragment (components across the fully broken edges) and its
   /// number of cracked edges.
   std::vector<VtuField> cell_fields(const LumpedMass& mass) const;
-  /// Fills the fragmentation figures of `m` and writes fragments/<id>.csv and cracks/<id>.csv.
-  /// The largest fragment's turn (DynamicsMeasures::main_body_rotation).
+  /// The turn of the largest of `pieces` (mass-weighted mean rotation of its cells, radians).
   double main_body_rotation(const Fragments& pieces, const LumpedMass& mass) const;
-  void finish(const std::filesystem::path& out, const std::string& id, const LumpedMass& mass,
-              DynamicsMeasures& m) const;
   /// The faces (after attach).
   const CohesiveForces& cohesive() const { return *cohesive_; }
+  /// The cracks' driver (after attach): their events, the broken state, the check's times.
+  const DynamicFracture& fracture() const { return *fracture_; }
+  /// The interfaces' activation (coupled from the start), or nullptr.
+  const InterfaceActivation* activation() const { return activation_.get(); }
   /// The fully broken edges now (after attach): what separates the fragments.
   CrackState broken_state() const { return fracture_->broken_state(); }
+  const PolygonMesh& mesh() const { return mesh_; }
+  /// The run (after attach).
+  const CentralDifference& run() const { return *run_; }
+  /// The largest balance error so far, when it first passed kLawBalanceLimit (NaN: never), and
+  /// the input energy at the last check.
+  double worst_balance() const { return worst_balance_; }
+  double breach_time() const { return breach_time_; }
+  double input_energy() const { return input_energy_; }
 
  private:
   const PolygonMesh& mesh_;
@@ -83,8 +94,6 @@ class FragmentationRun {
   double friction_;             // on closed faces
   ClosureStiffness closure_;    // the overclosure penalty
   bool turning_frames_;         // the faces' frames turn with them (corotational kinematics)
-  Rectangle body_;  // the (first) body, and the wall's point if there is one: where cracks are
-  std::optional<Point> impact_;
   std::unique_ptr<CohesiveForces> cohesive_;
   /// Per edge: whether it may carry a face in this run (eligible, or there from t = 0).
   std::vector<char> spring_edges() const;

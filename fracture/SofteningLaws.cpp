@@ -39,6 +39,10 @@ const SofteningLawEntry& softening_law(const std::string& name) {
   return registry().at(name);
 }
 
+std::string softening_law_list() {
+  return name_list(registry().entries());
+}
+
 std::string softening_law_words() {
   return registry().words();
 }

@@ -28,6 +28,8 @@ const std::vector<SofteningLawEntry>& softening_laws();
 bool register_softening_law(SofteningLawEntry entry);
 /// The envelope named `name`; throws InputError for an unknown name.
 const SofteningLawEntry& softening_law(const std::string& name);
+/// "linear or bilinear": the names, for messages and key tables.
+std::string softening_law_list();
 /// " linear bilinear ... ": the names, each with a space either side (for scene readers).
 std::string softening_law_words();
 

@@ -3,7 +3,6 @@
 #include "core/element/ElementTable.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Format.hpp"
-#include "fracture/SofteningLaws.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/model/SettingsSchema.hpp"
 
@@ -81,7 +80,7 @@ std::vector<SceneKey> element_keys() {
 std::vector<SceneKey> cohesive_keys(const CohesiveDefaults& d) {
   const std::string& s = d.scope;
   return {
-      key("cohesive.law", "string", softening_laws().front().name, name_list(softening_laws()),
+      key("cohesive.law", "string", d.law_default, d.law_names,
           s + "the softening of the cohesive law: linear, or bilinear with the kink at "
               "sigma_c / 3 (docs/fracture.md)"),
       bounded("cohesive.strength", "number", d.strength, "0 < sigma_c <= 1e11",

@@ -31,6 +31,9 @@ struct CohesiveDefaults {
   std::string strength, fracture_energy, initial_stiffness, friction;
   std::string initial_stiffness_use;  // when K0 applies, for its doc
   std::string scope;                  // "fragmentation: ", or "" where every scene has them
+  /// The softening laws a scene may name, the first the default (from fracture/, which the
+  /// kinds include and the harness does not).
+  std::string law_default, law_names;
 };
 
 /// cohesive.law, .strength, .fracture_energy, .shear_factor, .initial_stiffness, and

@@ -6,6 +6,7 @@
 #include "core/element/ElementTable.hpp"
 #include "core/util/Format.hpp"
 #include "dynamics/contact/ContactLaws.hpp"
+#include "fracture/SofteningLaws.hpp"
 #include "verification/harness/PhysicsKeys.hpp"
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
@@ -297,7 +298,8 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, cohesive_keys({"3e8", "100", "10", "0",
                                    "dynamics needs an initially elastic law; its springs share "
                                    "the stable step",
-                                   "fragmentation: "}));
+                                   "fragmentation: ", softening_laws().front().name,
+                                   softening_law_list()}));
   keys.push_back(bounded(
       "cohesive.closure_stiffness", "number or string", "0.1",
       "0 < k <= 1, or \"interface\" (interfaces dg)",

@@ -85,6 +85,44 @@ const Choices& formulation_choices() {
   return choices;
 }
 
+const Choices& penalty_choices() {
+  static const Choices choices = choice_table(R"(
+h-avg    eps = k_p E / h_avg (the report's f(h) = 1/h)
+local-h  eps = k_p E / h_F, h_F = (|K_1| + |K_2|) / (2 |F|) per interface
+fixed-h  eps = k_p E / H, H the domain's shorter side (not refined with the mesh)
+auto     eps = k_p times the proven coercive bound from the cells' trace constants
+)");
+  return choices;
+}
+
+const Choices& traction_choices() {
+  static const Choices choices = choice_table(R"(
+point  each cell's own stress at the edge points (one-sided limits of the gradients)
+fan    each cell's own stress averaged over its fan triangle on the edge
+mean   each cell's mean stress (the report's Eq. 29)
+)");
+  return choices;
+}
+
+namespace {
+constexpr PenaltyScaling kPenalties[] = {PenaltyScaling::h_avg, PenaltyScaling::local_h,
+                                         PenaltyScaling::fixed_h, PenaltyScaling::coercive};
+constexpr TractionKind kTractions[] = {TractionKind::point, TractionKind::fan, TractionKind::mean};
+}  // namespace
+
+PenaltyScaling parse_penalty(const std::string& name) {
+  return parse_enum(penalty_choices(), kPenalties, name);
+}
+std::string penalty_name(PenaltyScaling scaling) {
+  return enum_name(penalty_choices(), kPenalties, scaling);
+}
+TractionKind parse_traction(const std::string& name) {
+  return parse_enum(traction_choices(), kTractions, name);
+}
+std::string traction_name(TractionKind kind) {
+  return enum_name(traction_choices(), kTractions, kind);
+}
+
 DgOptions dg_options(const SolveSettings& settings) {
   DgOptions options = settings.dg;
   options.formulation = settings.formulation == "cg" ? "dg-penalty" : settings.formulation;

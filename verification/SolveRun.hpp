@@ -38,6 +38,13 @@ struct SolveSettings {
 
 /// cg and every registered DG formulation (dg/DgFormulation.hpp), with their docs.
 const Choices& formulation_choices();
+/// How the DG penalty is scaled, and which stress of a cell the DG interface terms take.
+const Choices& penalty_choices();
+const Choices& traction_choices();
+PenaltyScaling parse_penalty(const std::string& name);
+std::string penalty_name(PenaltyScaling scaling);
+TractionKind parse_traction(const std::string& name);
+std::string traction_name(TractionKind kind);
 
 /// The DG options of a DG formulation's settings (formulation and ordering filled in); for cg,
 /// those of dg-penalty, so that the DG settings still read back.

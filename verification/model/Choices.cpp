@@ -11,10 +11,7 @@
 
 namespace vorodg {
 
-namespace {
-
-/// A table of choices, one per line: the name, at least two spaces, its doc.
-Choices table(std::string_view text) {
+Choices choice_table(std::string_view text) {
   Choices out;
   std::size_t at = 0;
   while (at < text.size()) {
@@ -29,10 +26,8 @@ Choices table(std::string_view text) {
   return out;
 }
 
-}  // namespace
-
 const Choices& problem_choices() {
-  static const Choices choices = table(R"(
+  static const Choices choices = choice_table(R"(
 beam            Timoshenko's cantilever on [0, L] x [-D/2, D/2], end load P
 patch           an affine field, Dirichlet data on every side
 patch-mixed     an affine field, Dirichlet on the left and bottom, tractions elsewhere
@@ -59,7 +54,7 @@ const Choices& generated_family_choices() {
 }
 
 const Choices& ordering_choices() {
-  static const Choices choices = table(R"(
+  static const Choices choices = choice_table(R"(
 node-metis  METIS nested dissection on the node graph
 node-amd    approximate minimum degree on the node graph
 amd         approximate minimum degree on the DOF graph
@@ -69,7 +64,7 @@ cholmod     CHOLMOD's own choice
 }
 
 const Choices& solver_choices() {
-  static const Choices choices = table(R"(
+  static const Choices choices = choice_table(R"(
 auto     cholmod up to a size, amg-cg beyond (where built with hypre)
 cholmod  CHOLMOD's supernodal sparse Cholesky
 amg-cg   conjugate gradients preconditioned by hypre's BoomerAMG
@@ -78,7 +73,7 @@ amg-cg   conjugate gradients preconditioned by hypre's BoomerAMG
 }
 
 const Choices& element_choices() {
-  static const Choices choices = table(R"(
+  static const Choices choices = choice_table(R"(
 rk          reproducing kernel shape functions on vertex-patch weight functions
 wachspress  Wachspress's rational barycentric coordinates (strictly convex cells only)
 mean-value  Floater's mean value barycentric coordinates (any star-shaped cell)
@@ -88,28 +83,9 @@ vem         first-order virtual element: projection onto linears plus a scaled s
 }
 
 const Choices& plane_choices() {
-  static const Choices choices = table(R"(
+  static const Choices choices = choice_table(R"(
 stress  plane stress
 strain  plane strain
-)");
-  return choices;
-}
-
-const Choices& penalty_choices() {
-  static const Choices choices = table(R"(
-h-avg    eps = k_p E / h_avg (the report's f(h) = 1/h)
-local-h  eps = k_p E / h_F, h_F = (|K_1| + |K_2|) / (2 |F|) per interface
-fixed-h  eps = k_p E / H, H the domain's shorter side (not refined with the mesh)
-auto     eps = k_p times the proven coercive bound from the cells' trace constants
-)");
-  return choices;
-}
-
-const Choices& traction_choices() {
-  static const Choices choices = table(R"(
-point  each cell's own stress at the edge points (one-sided limits of the gradients)
-fan    each cell's own stress averaged over its fan triangle on the edge
-mean   each cell's mean stress (the report's Eq. 29)
 )");
   return choices;
 }
@@ -124,7 +100,7 @@ const Choices& study_choices() {  // the registry's kinds (verification/kinds/St
 }
 
 const Choices& sweep_axis_choices() {
-  static const Choices choices = table(R"(
+  static const Choices choices = choice_table(R"(
 nu              Poisson's ratio
 kp              the DG penalty k_p
 aspect          L/D of the domain
@@ -136,7 +112,7 @@ h               h_avg
 }
 
 const Choices& baseline_choices() {
-  static const Choices choices = table(R"(
+  static const Choices choices = choice_table(R"(
 first-nu        the same variant at the first nu
 cg              the cg run on the same mesh
 first-mesh      the same variant and level on the sweep's first mesh
@@ -171,24 +147,6 @@ constexpr LinearSolverKind kSolvers[] = {LinearSolverKind::automatic, LinearSolv
 constexpr ElementFamily kElements[] = {ElementFamily::rk, ElementFamily::wachspress,
                                        ElementFamily::mean_value, ElementFamily::vem};
 constexpr PlaneModel kPlanes[] = {PlaneModel::stress, PlaneModel::strain};
-constexpr PenaltyScaling kPenalties[] = {PenaltyScaling::h_avg, PenaltyScaling::local_h,
-                                         PenaltyScaling::fixed_h, PenaltyScaling::coercive};
-constexpr TractionKind kTractions[] = {TractionKind::point, TractionKind::fan, TractionKind::mean};
-
-/// The enum value of a name: `values` lists the enum values in the order of `choices`.
-template <class Enum, std::size_t N>
-Enum parse_enum(const Choices& choices, const Enum (&values)[N], const std::string& name) {
-  for (std::size_t i = 0; i < N; ++i)
-    if (choices.at(i).name == name) return values[i];
-  throw std::invalid_argument("'" + name + "': expected " + choice_list(choices));
-}
-
-template <class Enum, std::size_t N>
-std::string enum_name(const Choices& choices, const Enum (&values)[N], Enum value) {
-  for (std::size_t i = 0; i < N; ++i)
-    if (values[i] == value) return choices.at(i).name;
-  return "?";
-}
 
 }  // namespace
 
@@ -216,17 +174,4 @@ PlaneModel parse_plane(const std::string& name) {
 std::string plane_name(PlaneModel plane) {
   return enum_name(plane_choices(), kPlanes, plane);
 }
-PenaltyScaling parse_penalty(const std::string& name) {
-  return parse_enum(penalty_choices(), kPenalties, name);
-}
-std::string penalty_name(PenaltyScaling scaling) {
-  return enum_name(penalty_choices(), kPenalties, scaling);
-}
-TractionKind parse_traction(const std::string& name) {
-  return parse_enum(traction_choices(), kTractions, name);
-}
-std::string traction_name(TractionKind kind) {
-  return enum_name(traction_choices(), kTractions, kind);
-}
-
 }  // namespace vorodg

@@ -2,13 +2,15 @@
 // The names vorodg knows — problems, mesh families, element families, orderings,
 // solvers, plane models and study kinds — each with a one-line doc. The command line, the scene
 // reader, their messages, `--help` and docs/scenes.md all take the names from here.
+#include <cstddef>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/element/ElementFamily.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "core/solve/LinearSolverChoice.hpp"
-#include "interfaces/InterfacePenalty.hpp"
 
 namespace vorodg {
 
@@ -24,11 +26,12 @@ const Choices& ordering_choices();
 const Choices& solver_choices();
 const Choices& element_choices();  // the element families
 const Choices& plane_choices();
-const Choices& penalty_choices();   // how the DG penalty is scaled
-const Choices& traction_choices();  // which stress of a cell the DG interface terms take
 const Choices& study_choices();
 const Choices& sweep_axis_choices();  // what an extremes sweep varies
 const Choices& baseline_choices();    // what an extremes sweep compares errors with
+
+/// A table of choices from text, one per line: the name, at least two spaces, its doc.
+Choices choice_table(std::string_view text);
 
 bool is_choice(const Choices& choices, const std::string& name);
 /// "a, b, c or d": the names, for messages.
@@ -44,9 +47,22 @@ ElementFamily parse_element(const std::string& name);
 std::string element_name(ElementFamily family);
 PlaneModel parse_plane(const std::string& name);
 std::string plane_name(PlaneModel plane);
-PenaltyScaling parse_penalty(const std::string& name);
-std::string penalty_name(PenaltyScaling scaling);
-TractionKind parse_traction(const std::string& name);
-std::string traction_name(TractionKind kind);
+
+/// The enum value of a name: `values` lists the enum values in the order of `choices`; throws
+/// std::invalid_argument naming the choices otherwise.
+template <class Enum, std::size_t N>
+Enum parse_enum(const Choices& choices, const Enum (&values)[N], const std::string& name) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (choices.at(i).name == name) return values[i];
+  throw std::invalid_argument("'" + name + "': expected " + choice_list(choices));
+}
+
+/// The name of an enum value ("?" for one not listed).
+template <class Enum, std::size_t N>
+std::string enum_name(const Choices& choices, const Enum (&values)[N], Enum value) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (values[i] == value) return choices.at(i).name;
+  return "?";
+}
 
 }  // namespace vorodg

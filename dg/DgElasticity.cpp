@@ -22,7 +22,8 @@ DgElasticity::DgElasticity(const ElementTable& table, const ElasticityIntegrator
       threads_(std::max(threads, 1)),
       space_(table.mesh()),
       ops_(space_, integrator, table),
-      formulation_(make_dg_formulation(options)) {
+      formulation_(make_dg_formulation(options)),
+      traction_(options.traction ? *options.traction : formulation_->default_traction()) {
   const double kp = penalty_multiplier(options);
   if (!(kp > 0.0) || !std::isfinite(kp))
     throw InputError("penalty k_p = " + fmt(kp) + ": expected k_p > 0");
@@ -65,7 +66,7 @@ bool DgElasticity::symmetric() const {
 }
 
 DgTermContext DgElasticity::term_context() const {
-  return {space_, ops_, *penalty_, integrator_, options_, interface_traction(options_), threads_};
+  return {space_, ops_, *penalty_, integrator_, options_, traction_, threads_};
 }
 
 void DgElasticity::assemble_system() {
@@ -75,9 +76,9 @@ void DgElasticity::assemble_system() {
   const auto cells = integrator_.all_cell_matrices(threads_);
   seconds_["cell_matrices"] = clock.seconds();
   clock.restart();
-  penalty_ = std::make_unique<InterfacePenalty>(
-      ops_, integrator_, cells, penalty_scaling(options_), penalty_multiplier(options_),
-      options_.weighted_average, interface_traction(options_), threads_);
+  penalty_ = std::make_unique<InterfacePenalty>(ops_, integrator_, cells, penalty_scaling(options_),
+                                                penalty_multiplier(options_),
+                                                options_.weighted_average, traction_, threads_);
   seconds_["penalty"] = clock.seconds();
   clock.restart();
   DgSystem system = assemble_dg_system(

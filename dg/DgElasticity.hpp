@@ -113,6 +113,7 @@ class DgElasticity {
   DgSpace space_;
   InterfaceOperators ops_;
   std::unique_ptr<DgFormulation> formulation_;
+  TractionKind traction_;  // the stress the interface terms take, resolved once
   std::unique_ptr<InterfacePenalty> penalty_;
 
   std::optional<DirichletConstraints> constraints_;

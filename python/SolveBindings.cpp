@@ -1,5 +1,5 @@
 // vorodg.solve: one problem on one mesh with the settings of the one schema
-// (verification/model/SettingsSchema), named as `vorodg solve`'s options are (--max-iter is
+// (verification/solve/SettingsSchema), named as `vorodg solve`'s options are (--max-iter is
 // max_iter=), checked by the same code with the same messages; and vorodg.settings(), the schema.
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -14,8 +14,8 @@
 #include "python/Bindings.hpp"
 #include "verification/cli/SettingOptions.hpp"
 #include "verification/cli/SolveCommand.hpp"
-#include "verification/model/RunRecord.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/RunRecord.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg::python {
 namespace {

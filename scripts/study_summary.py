@@ -1,7 +1,8 @@
 """Reading a study's summary.json (written by the study runner) for the plots.
 
 summary.json:
-  {"scene": {"name": ..., "study": ..., ...},
+  {"scene": <name>, "study": <kind> (the head of every kind's summary.json),
+   "description": ..., "problems": [...],
    "groups": [{"mesh": ..., "problem": ..., "variant": ..., "formulation": ..., "label": ...,
                "kp": ... (optional),
                "levels": [{"level": ..., "h_avg": ..., "dofs": ..., "runs": ..., "failed": ...,
@@ -152,9 +153,9 @@ def read_summary(path):
         raise InputError(f"{path}: not valid JSON: {e}") from None
     if not isinstance(data, dict):
         raise InputError(f"{path}: expected a JSON object at the top")
-    scene = data.get("scene")
-    if not isinstance(scene, dict):
-        raise InputError(f"{path}: \"scene\" must be an object")
+    for key in ("scene", "study"):
+        if not isinstance(data.get(key), str):
+            raise InputError(f"{path}: \"{key}\" must be a text (the scene's name, the study kind)")
     raw_groups = data.get("groups")
     if not isinstance(raw_groups, list) or not raw_groups:
         raise InputError(f"{path}: \"groups\" must be a non-empty list")
@@ -162,5 +163,4 @@ def read_summary(path):
     name_groups(groups)
     if not any(has_mean(lv, "l2") for g in groups for lv in g["levels"]):
         raise InputError(f"{path}: no level has a positive L2 error")
-    return {"name": text_field(scene, "name", path, "unnamed scene"),
-            "study": text_field(scene, "study", path, "study"), "scene": scene, "groups": groups}
+    return {"name": data["scene"], "study": data["study"], "scene": data, "groups": groups}

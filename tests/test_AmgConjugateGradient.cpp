@@ -25,7 +25,7 @@
 #include "core/solve/LinearSolverChoice.hpp"
 #include "core/util/Errors.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 namespace {

@@ -38,8 +38,8 @@
 #include "core/problem/TimoshenkoBeam.hpp"
 #include "core/util/Errors.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/SolveRun.hpp"
 #include "verification/report/RateFit.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 namespace {

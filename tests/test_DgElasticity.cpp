@@ -54,7 +54,7 @@
 #include "interfaces/InterfaceOperators.hpp"
 #include "support/ElementTestMeshes.hpp"
 #include "support/RunVorodg.hpp"
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 namespace {

@@ -16,8 +16,8 @@
 #include "core/util/Errors.hpp"
 #include "dg/DgFormulation.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/SolveRun.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 namespace {

@@ -15,7 +15,7 @@
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 namespace {

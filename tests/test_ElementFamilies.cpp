@@ -15,8 +15,8 @@
 
 #include "core/util/Errors.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/SolveRun.hpp"
 #include "verification/kinds/fracture/FractureScene.hpp"
+#include "verification/solve/SolveRun.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

@@ -1,4 +1,4 @@
-// The static run record on its field table (verification/model/RunRecord, harness/RecordFields):
+// The static run record on its field table (verification/solve/RunRecord, harness/RecordFields):
 //   - a DG record with every field set comes back from its JSON line field for field;
 //   - non-finite numbers (an overflowed error, a NaN condition estimate) come back as they were,
 //     and a line written by an older version (null for a non-finite number, no solver, no
@@ -12,7 +12,7 @@
 #include <cmath>
 #include <limits>
 
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 
 namespace vorodg {
 namespace {
@@ -21,7 +21,7 @@ using nlohmann::json;
 
 StudyRun dg_run() {
   StudyRun r;
-  r.id = "rcp/L1/R0/beam/nu=0.3/dg-nitsche kp=1000";
+  r.id = "rcp-L1-R0/beam/nu=0.3/dg-nitsche kp=1000";
   r.mesh_label = "rcp";
   r.level = 1;
   r.size = 0.125;
@@ -116,7 +116,7 @@ TEST(RunRecord, CsvRowsHaveTheHeadersCellsAndQuotedTexts) {
     return std::count(line.begin(), line.end(), ',') + 1;  // no quoted text here holds a comma
   };
   StudyRun cg = dg_run();
-  cg.id = "quad/L0/R0/beam/cg";
+  cg.id = "quad-L0-R0/beam/nu=0.3/cg";
   cg.kp.reset();
   cg.formulation_name = "cg";
   cg.variant = "cg \"plain\"";

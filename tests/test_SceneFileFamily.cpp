@@ -147,9 +147,9 @@ TEST_F(SceneFolder, ConvergenceStudyRunsOnTheFiles) {
                            dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const std::string results = testing::slurp(dir_ / "out" / "results.jsonl");
-  EXPECT_NE(results.find("file/L0/R0/patch"), std::string::npos) << results;
-  EXPECT_NE(results.find("file/L1/R0/patch"), std::string::npos) << results;
-  EXPECT_EQ(results.find("file/L2/"), std::string::npos);
+  EXPECT_NE(results.find("file-L0-R0/patch"), std::string::npos) << results;
+  EXPECT_NE(results.find("file-L1-R0/patch"), std::string::npos) << results;
+  EXPECT_EQ(results.find("file-L2-R0/"), std::string::npos);
 }
 
 // The fracture kind reads its meshes through SceneMesh::spec too: the tension bar on the shipped

@@ -1,7 +1,7 @@
-// The settings schema (verification/model/SettingsSchema): one name, default, range and doc per
+// The settings schema (verification/solve/SettingsSchema): one name, default, range and doc per
 // setting; the one validation; and the documents that must agree with it (docs/scenes.md and
 // `vorodg solve --help`).
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
-// Work shared by the runs on one mesh (verification/SharedMeshWork, core/solve/SymbolicAnalyses):
+// Work shared by the runs on one mesh (verification/solve/SharedMeshWork,
+// core/solve/SymbolicAnalyses):
 // 1. A factorization with a kept symbolic analysis solves to the same bits as one that analyzed
 //    afresh; the second factorization of a pattern reports the analysis as shared, with the
 //    first one's analysis time; another pattern, or another ordering, gets its own analysis.
@@ -18,8 +19,8 @@
 #include "core/solve/SparseCholesky.hpp"
 #include "core/solve/SymbolicAnalyses.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/SharedMeshWork.hpp"
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SharedMeshWork.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 namespace {

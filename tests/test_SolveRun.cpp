@@ -12,8 +12,8 @@
 
 #include "core/util/Stopwatch.hpp"
 #include "support/ElementTestMeshes.hpp"
-#include "verification/SolveRun.hpp"
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 namespace {

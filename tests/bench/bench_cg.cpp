@@ -20,7 +20,7 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/PeakMemory.hpp"
 #include "core/util/Stopwatch.hpp"
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "interfaces/TraceConstants.hpp"
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/io/VtuMesh.hpp"
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 

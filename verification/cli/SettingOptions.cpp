@@ -2,7 +2,7 @@
 
 #include "core/util/Errors.hpp"
 #include "verification/cli/CliSupport.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 

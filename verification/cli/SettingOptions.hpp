@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 

@@ -10,7 +10,7 @@
 #include "verification/cli/JsonOutput.hpp"
 #include "verification/cli/ResultFile.hpp"
 #include "verification/model/Choices.hpp"
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 
 namespace vorodg {
 namespace {

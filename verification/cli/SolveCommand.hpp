@@ -1,7 +1,7 @@
 #pragma once
 // `vorodg solve`: one problem on one mesh (generated or read), one formulation; writes the
 // result as .vtu (verification/cli/ResultFile.hpp) and the metrics as JSON. Its settings are
-// the schema's (verification/model/SettingsSchema.hpp).
+// the schema's (verification/solve/SettingsSchema.hpp).
 #include <CLI/CLI.hpp>
 #include <string>
 

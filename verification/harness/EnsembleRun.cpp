@@ -45,15 +45,17 @@ std::vector<nlohmann::json> run_ensemble(
     const std::vector<SceneMesh>& meshes, const std::vector<EnsembleRunId>& runs,
     const std::filesystem::path& out, int threads, bool progress,
     const std::function<RunOutcome(const EnsembleRunId&)>& execute) {
-  std::filesystem::create_directories(out);
   std::vector<std::string> ids;
   std::vector<double> costs;
   for (const EnsembleRunId& id : runs) {
     ids.push_back(id.id());
     costs.push_back(level_cost(meshes.at(id.mesh), id.level));
   }
-  const auto done = run_resumable(ids, costs, out / "results.jsonl", threads, progress,
-                                  [&](std::size_t i) { return execute(runs[i]); });
+  RunLoopOptions options{threads, progress, true};
+  const auto done = run_resumable(RunPlan::one_per_run(ids, costs), out / "results.jsonl", options,
+                                  [&](const std::vector<std::size_t>& block) {
+                                    return std::vector<RunOutcome>{execute(runs[block.front()])};
+                                  });
   std::vector<nlohmann::json> records;
   if (!Ensemble::writes_reports()) return records;  // the coordinator of a whole study
   for (const std::string& id : ids) records.push_back(done.at(id));

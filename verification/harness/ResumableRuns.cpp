@@ -5,55 +5,113 @@
 #include <iostream>
 
 #include "core/util/BlasInfo.hpp"
+#include "core/util/Errors.hpp"
 #include "verification/harness/Ensemble.hpp"
+#include "verification/harness/RunProgress.hpp"
 #include "verification/harness/TaskPool.hpp"
 
 namespace vorodg {
+namespace {
+
+using nlohmann::json;
+
+/// The output folder, made; throws InputError if it cannot be.
+void make_folder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (!std::filesystem::is_directory(folder))
+    throw InputError("output folder '" + folder.string() + "' cannot be created" +
+                     (ec ? " (" + ec.message() + ")" : std::string()));
+}
+
+/// The finished lines of results.jsonl and of this shard's own file that the kind reads.
+std::map<std::string, json> finished_lines(const RunPlan& plan, const std::filesystem::path& jsonl,
+                                           const ReadableLine& readable) {
+  std::map<std::string, json> lines = read_finished_runs(jsonl);
+  const std::filesystem::path own = Ensemble::own_results(jsonl);
+  if (own != jsonl) lines.merge(read_finished_runs(own));
+  if (!readable) return lines;
+  for (std::size_t i = 0; i < plan.ids.size(); ++i)
+    if (const auto line = lines.find(plan.ids[i]);
+        line != lines.end() && !readable(i, line->second))
+      lines.erase(line);  // not a record of this version: it runs again
+  return lines;
+}
+
+/// One task per block with runs still to do, holding those runs, at the block's place.
+std::vector<Task> pending_tasks(const RunPlan& plan, const std::vector<bool>& done) {
+  std::vector<Task> tasks;
+  for (std::size_t b = 0; b < plan.blocks.size(); ++b) {
+    Task task{{}, 0.0, static_cast<int>(b)};
+    for (std::size_t i : plan.blocks[b])
+      if (!done[i]) task.runs.push_back(static_cast<int>(i)), task.cost += plan.costs.at(i);
+    if (!task.runs.empty()) tasks.push_back(std::move(task));
+  }
+  return tasks;
+}
+
+}  // namespace
+
+RunPlan RunPlan::one_per_run(std::vector<std::string> ids, std::vector<double> costs) {
+  RunPlan plan{std::move(ids), std::move(costs), {}};
+  for (std::size_t i = 0; i < plan.ids.size(); ++i) plan.blocks.push_back({i});
+  return plan;
+}
 
 double level_cost(const SceneMesh& mesh, int level) {
   const double size = mesh.sizes.at(level);
   return 1.0 / (size * size * size);
 }
 
-std::map<std::string, nlohmann::json> read_finished_runs(const std::filesystem::path& jsonl) {
-  std::map<std::string, nlohmann::json> done;
+std::map<std::string, json> read_finished_runs(const std::filesystem::path& jsonl) {
+  std::map<std::string, json> done;
   std::ifstream in(jsonl);
   for (std::string line; std::getline(in, line);) {
     try {
-      const nlohmann::json j = nlohmann::json::parse(line);
+      const json j = json::parse(line);
       done[j.at("id")] = j;
-    } catch (const nlohmann::json::exception&) {  // a line cut short by a stop: it runs again
+    } catch (const json::exception&) {  // a line cut short by a stop: it runs again
     }
   }
   return done;
 }
 
-std::map<std::string, nlohmann::json> run_resumable(
-    const std::vector<std::string>& ids, const std::vector<double>& costs,
-    const std::filesystem::path& jsonl, int threads, bool progress,
-    const std::function<RunOutcome(std::size_t)>& execute) {
+std::map<std::string, json> run_resumable(const RunPlan& plan, const std::filesystem::path& jsonl,
+                                          const RunLoopOptions& options,
+                                          const BlockExecutor& execute,
+                                          const ReadableLine& readable) {
+  make_folder(jsonl.parent_path());
+  std::map<std::string, json> done = finished_lines(plan, jsonl, readable);
+  std::vector<bool> finished;
+  for (const std::string& id : plan.ids) finished.push_back(done.count(id) > 0);
+  const std::vector<Task> tasks = pending_tasks(plan, finished);
   const std::filesystem::path own = Ensemble::own_results(jsonl);
-  std::map<std::string, nlohmann::json> done = read_finished_runs(jsonl);
-  if (own != jsonl) done.merge(read_finished_runs(own));
-  std::vector<Task> tasks;  // one per run left
-  for (std::size_t i = 0; i < ids.size(); ++i)
-    if (!done.count(ids[i]))
-      tasks.push_back({{static_cast<int>(i)}, costs.at(i), static_cast<int>(i)});
   std::ofstream append(own, std::ios::app);
-  // One run per thread, and OpenBLAS's threads only where threads outnumber the runs left (a
-  // single fine run gets them all; otherwise they would only spin against the workers).
-  const int workers = std::clamp(static_cast<int>(tasks.size()), 1, std::max(threads, 1));
-  const ScopedBlasThreads blas(std::max(1, threads / workers));
+  if (!append) throw InputError("cannot write '" + own.string() + "'");
+  RunProgress progress(plan.costs, finished, options.progress && Ensemble::coordinator());
+  const int workers = std::clamp(static_cast<int>(tasks.size()), 1, std::max(options.threads, 1));
+  const ScopedBlasThreads blas(
+      options.spare_threads_to_blas ? std::max(1, options.threads / workers) : 1);
   run_tasks(
-      tasks, threads,
+      tasks, options.threads,
       [&](const Task& task) {
-        const RunOutcome outcome = execute(task.runs.front());
-        return TaskOutput{{outcome.record.dump()}, {outcome.progress}};
+        const std::vector<std::size_t> runs(task.runs.begin(), task.runs.end());
+        TaskOutput output;
+        for (const RunOutcome& outcome : execute(runs)) {
+          output.lines.push_back(outcome.record.dump());
+          output.notes.push_back(outcome.progress);
+        }
+        return output;
       },
       [&](const Task& task, const TaskOutput& output) {
-        append << output.lines.front() << '\n' << std::flush;
-        done[ids[task.runs.front()]] = nlohmann::json::parse(output.lines.front());
-        if (progress) std::cout << "  " << output.notes.front() << "\n" << std::flush;
+        for (std::size_t k = 0; k < task.runs.size(); ++k) {
+          // At once: a stop loses only the tasks in flight (a task is the unit a rank reports).
+          append << output.lines.at(k) << '\n' << std::flush;
+          done[plan.ids[task.runs[k]]] = json::parse(output.lines[k]);
+          if (options.progress && !output.notes[k].empty())
+            std::cout << "  " << output.notes[k] << "\n" << std::flush;
+          progress.finished(task.runs[k]);
+        }
       });
   return done;
 }

@@ -6,7 +6,7 @@
 
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 

@@ -35,8 +35,13 @@ struct StudyKind {
   std::function<std::vector<SceneKey>()> keys;
 };
 
-/// Every kind, in the order messages and docs list them (verification/kinds/StudyKinds.cpp).
+/// Every kind, in the order messages and docs list them (verification/kinds/StudyKinds.cpp),
+/// then those registered.
 const std::vector<StudyKind>& study_kinds();
+
+/// Adds a kind (before any study runs: the list may move); a name already known is refused with
+/// InputError. Returns true, so that a file can register at static initialization.
+bool register_study_kind(StudyKind kind);
 
 /// The kind of that name; throws InputError "<where>'<name>': expected <every kind>".
 const StudyKind& study_kind(const std::string& name, const std::string& where);

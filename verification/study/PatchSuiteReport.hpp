@@ -4,7 +4,7 @@
 #include <sstream>
 #include <vector>
 
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

@@ -11,10 +11,10 @@
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
 #include "dg/DgElasticity.hpp"
-#include "verification/SolveRun.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 #include "verification/report/SampleStatistics.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 namespace {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

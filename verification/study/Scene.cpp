@@ -13,7 +13,7 @@
 #include "verification/harness/PhysicsKeys.hpp"
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneObject.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 #include "verification/study/StaticSceneKeys.hpp"
 
 namespace vorodg {

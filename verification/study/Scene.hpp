@@ -2,7 +2,7 @@
 // A scene names one study (docs/design.md, "Studies, scenes and reports"): the problems, the
 // material, the mesh families with their levels and realizations, the formulations with their
 // knobs. Every key is documented in docs/scenes.md and validated through the settings schema
-// (verification/model/SettingsSchema.hpp): an unknown key or a wrong type is an error naming the
+// (verification/solve/SettingsSchema.hpp): an unknown key or a wrong type is an error naming the
 // file and the key (with the nearest valid key suggested).
 #include <cstdint>
 #include <filesystem>
@@ -13,8 +13,8 @@
 
 #include "core/geometry/Rectangle.hpp"
 #include "core/meshgen/MeshFamily.hpp"
-#include "verification/SolveRun.hpp"
 #include "verification/model/Choices.hpp"
+#include "verification/solve/SolveRun.hpp"
 #include "verification/study/TradeoffSettings.hpp"
 
 namespace vorodg {

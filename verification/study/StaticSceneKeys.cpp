@@ -5,7 +5,7 @@
 
 #include "verification/harness/PhysicsKeys.hpp"
 #include "verification/harness/StudyKind.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

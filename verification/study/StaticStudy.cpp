@@ -6,7 +6,7 @@
 #include "core/util/Stopwatch.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 #include "verification/study/StudyReport.hpp"
 
 namespace vorodg {

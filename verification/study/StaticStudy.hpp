@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "verification/harness/StudyKind.hpp"
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 #include "verification/study/StaticSceneKeys.hpp"
 #include "verification/study/StudyRunner.hpp"

@@ -9,6 +9,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
 #include "verification/cli/JsonOutput.hpp"
+#include "verification/harness/StudyFiles.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 #include "verification/study/KpTrendReport.hpp"
 #include "verification/study/PatchSuiteReport.hpp"
@@ -24,12 +25,6 @@ using nlohmann::json;
 std::string csv_text(std::string s) {
   std::replace(s.begin(), s.end(), '"', '\'');
   return "\"" + s + "\"";
-}
-
-void write_results_csv(const std::vector<RunRecord>& records, const std::filesystem::path& out) {
-  std::string csv = csv_header(run_record_fields());
-  for (const RunRecord& record : records) csv += csv_row(run_record_fields(), record);
-  write_file_atomically(out / "results.csv", csv);
 }
 
 /// Seconds per stage, summed over each group's runs (wall times: never in summary.json).
@@ -124,11 +119,11 @@ void write_convergence(const StudySummary& summary, const std::filesystem::path&
 
 StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>& records,
                                const std::filesystem::path& out) {
-  write_results_csv(records, out);
+  write_results_csv(out, run_record_fields(), records);
   write_timings(scene, records, out);
   const json published = published_reference(scene);
   const StudySummary summary = summarize_study(scene, records, published);
-  write_json(out / "summary.json", to_json(scene, summary));
+  write_summary(out, to_json(scene, summary));
 
   std::ostringstream md;
   md << "# " << scene.name << "\n\n"

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

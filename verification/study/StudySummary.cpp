@@ -7,6 +7,7 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
+#include "verification/harness/StudyFiles.hpp"
 
 namespace vorodg {
 namespace {
@@ -167,12 +168,10 @@ json published_reference(const Scene& scene) {
 }
 
 json to_json(const Scene& scene, const StudySummary& summary) {
-  json out = {{"scene",
-               {{"name", scene.name},
-                {"study", scene.study},
-                {"description", scene.description},
-                {"problems", scene.problems}}},
-              {"groups", json::array()}};
+  json out = summary_head(scene.name, scene.study);
+  out.update({{"description", scene.description},
+              {"problems", scene.problems},
+              {"groups", json::array()}});
   for (const GroupSummary& g : summary.groups) {
     json j = {{"key", g.key},     {"mesh", g.mesh},         {"problem", g.problem},
               {"nu", g.nu},       {"variant", g.variant},   {"formulation", g.formulation},

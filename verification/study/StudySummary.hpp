@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "verification/model/RunRecord.hpp"
 #include "verification/report/RateFit.hpp"
 #include "verification/report/SampleStatistics.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

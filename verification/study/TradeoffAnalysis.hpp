@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "verification/model/RunRecord.hpp"
 #include "verification/report/RateFit.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/StudySummary.hpp"
 #include "verification/study/TradeoffSettings.hpp"
 

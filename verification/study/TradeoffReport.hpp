@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/StudySummary.hpp"
 
 namespace vorodg {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/StudyRunner.hpp"
 #include "verification/study/TradeoffAnalysis.hpp"
 

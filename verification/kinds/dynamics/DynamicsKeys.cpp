@@ -11,7 +11,7 @@
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
 #include "verification/model/Choices.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 namespace {

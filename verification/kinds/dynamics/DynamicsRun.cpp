@@ -17,7 +17,7 @@
 #include "dynamics/LumpedMass.hpp"
 #include "verification/kinds/dynamics/DynamicsHistory.hpp"
 #include "verification/kinds/dynamics/FragmentRecord.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace fs = std::filesystem;
 

@@ -14,7 +14,7 @@
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
 #include "verification/model/Choices.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 namespace {

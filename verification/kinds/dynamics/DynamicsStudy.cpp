@@ -19,6 +19,7 @@
 #include "dynamics/Fragmentation.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/EnsembleStudy.hpp"
+#include "verification/harness/StudyFiles.hpp"
 #include "verification/harness/StudyParts.hpp"
 #include "verification/kinds/dynamics/DynamicsHistory.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
@@ -218,9 +219,7 @@ std::string report_md(const DynamicsScene& scene, const StudyRecords<DynamicsRec
 void write_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result,
                    const fs::path& out) {
   const std::vector<RecordField<DynamicsRecord>> fields = dynamics_fields(scene);
-  std::string csv = csv_header(fields);
-  for (const DynamicsRecord& r : result.records) csv += csv_row(fields, r);
-  write_file_atomically(out / "results.csv", csv);
+  write_results_csv(out, fields, result.records);
   json settings = json::object();
   for (const auto& [key, value] : scene.settings) settings[key] = value;
   json runs = json::array();
@@ -231,18 +230,17 @@ void write_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord
       j.erase(timing);  // the same results give the same bytes, on any number of processes
     runs.push_back(j);
   }
-  json summary = {{"scene", scene.name},
-                  {"study", scene.fragmentation ? "fragmentation" : "dynamics"},
-                  {"problem", scene.problem->name()},
+  json summary = summary_head(scene.name, scene.fragmentation ? "fragmentation" : "dynamics");
+  summary.update({{"problem", scene.problem->name()},
                   {"settings", settings},
                   {"runs", result.records.size()},
                   {"incomplete", result.incomplete},
-                  {"records", runs}};
+                  {"records", runs}});
   for (const auto& [name, field] : measure_fields())
     if (const double w = worst(result.records, field);
         std::isfinite(w) && !std::string_view(name).ends_with("seconds"))
       summary["worst"][name] = w;
-  write_file_atomically(out / "summary.json", summary.dump(1) + "\n");
+  write_summary(out, summary);
   std::string md = report_md(scene, result);
   if (scene.fragmentation) {
     const std::vector<FragmentLevel> levels = fragment_levels(result.records, out);

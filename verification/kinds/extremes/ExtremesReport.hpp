@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

@@ -17,6 +17,7 @@
 #include "core/util/Format.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/EnsembleStudy.hpp"
+#include "verification/harness/StudyFiles.hpp"
 #include "verification/harness/StudyParts.hpp"
 #include "verification/kinds/fracture/FractureKeys.hpp"
 #include "verification/kinds/fracture/FractureRun.hpp"
@@ -178,20 +179,17 @@ std::string worst_errors(const std::vector<FractureRecord>& records, json& summa
 
 void write_reports(const FractureScene& scene, const StudyRecords<FractureRecord>& result,
                    const fs::path& out) {
-  std::string csv = csv_header(fracture_fields());
-  for (const FractureRecord& r : result.records) csv += csv_row(fracture_fields(), r);
-  write_file_atomically(out / "results.csv", csv);
+  write_results_csv(out, fracture_fields(), result.records);
 
   const std::string problem = scene.geometry.problem->name();
   const std::string mode = cracking_mode_name(scene.mode);
   const std::string control = load_control_name(scene.loading.control);
-  json summary = {{"scene", scene.name},
-                  {"study", "fracture"},
-                  {"problem", problem},
+  json summary = summary_head(scene.name, "fracture");
+  summary.update({{"problem", problem},
                   {"mode", mode},
                   {"control", control},
                   {"runs", result.records.size()},
-                  {"incomplete", result.incomplete}};
+                  {"incomplete", result.incomplete}});
   // The expected dissipation once the ligament is fully cracked: G x ligament x thickness.
   const double ligament = scene.geometry.domain.height() - scene.geometry.notch_depth;
   summary["full_separation_energy"] = scene.law.fracture_energy * ligament * scene.thickness;
@@ -215,7 +213,7 @@ void write_reports(const FractureScene& scene, const StudyRecords<FractureRecord
     if (!r.complete) md << "\n- " << r.run.id() << " is incomplete: " << r.failure << "\n";
     if (!r.ended.empty()) md << "\n- " << r.run.id() << " ended early: " << r.ended << "\n";
   }
-  write_file_atomically(out / "summary.json", summary.dump(1) + "\n");
+  write_summary(out, summary);
   write_file_atomically(out / "report.md", md.str());
 }
 

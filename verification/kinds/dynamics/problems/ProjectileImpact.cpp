@@ -8,7 +8,7 @@
 #include "core/util/Format.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
 #include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 namespace {

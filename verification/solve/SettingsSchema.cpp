@@ -1,4 +1,4 @@
-#include "verification/model/SettingsSchema.hpp"
+#include "verification/solve/SettingsSchema.hpp"
 
 #include <charconv>
 #include <cmath>

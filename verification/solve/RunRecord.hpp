@@ -12,8 +12,8 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/DgElasticity.hpp"
-#include "verification/SolveRun.hpp"
 #include "verification/harness/RecordFields.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "verification/model/RunRecord.hpp"
+#include "verification/solve/RunRecord.hpp"
 
 #include <cmath>
 

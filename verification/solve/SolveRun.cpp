@@ -1,4 +1,4 @@
-#include "verification/SolveRun.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 #include <cmath>
 

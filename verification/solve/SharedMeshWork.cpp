@@ -1,4 +1,4 @@
-#include "verification/SharedMeshWork.hpp"
+#include "verification/solve/SharedMeshWork.hpp"
 
 #include "core/util/Stopwatch.hpp"
 

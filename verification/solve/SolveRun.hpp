@@ -16,8 +16,8 @@
 #include "core/solve/LinearSolverChoice.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "dg/DgElasticity.hpp"
-#include "verification/SharedMeshWork.hpp"
 #include "verification/model/Choices.hpp"
+#include "verification/solve/SharedMeshWork.hpp"
 
 namespace vorodg {
 

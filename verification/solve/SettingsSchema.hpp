@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "verification/SolveRun.hpp"
 #include "verification/model/Choices.hpp"
+#include "verification/solve/SolveRun.hpp"
 
 namespace vorodg {
 

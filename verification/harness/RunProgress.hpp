@@ -1,27 +1,20 @@
 #pragma once
 // The progress line of a study: runs done, time spent, and an estimate of the time left that
-// weighs every run by its expected cost (its expected DOFs to a power), so a study whose fine
-// levels come last is not promised to end early.
-#include <atomic>
+// weighs every run by its expected cost (what the kind says a run costs, in any unit), so a study
+// whose fine levels come last is not promised to end early. Printed on stderr: a bar on a
+// terminal, every tenth of the runs otherwise.
 #include <cstddef>
 #include <mutex>
 #include <vector>
 
 #include "core/util/Stopwatch.hpp"
-#include "verification/model/RunRecord.hpp"
-#include "verification/study/Scene.hpp"
 
 namespace vorodg {
 
-/// The expected cost of a run in arbitrary units, from the scene alone (no mesh is built):
-/// its expected degrees of freedom to the power 1.1 (fitted on fig26: CG time
-/// grows as DOFs^1.04, DG as DOFs^1.12).
-double expected_cost(const Scene& scene, const StudyRun& run);
-
-class StudyProgress {
+class RunProgress {
  public:
   /// `costs` of every run of the study; `done[i]` says run i is already finished.
-  StudyProgress(std::vector<double> costs, const std::vector<bool>& done, bool show);
+  RunProgress(std::vector<double> costs, const std::vector<bool>& done, bool show);
   /// Run i has finished.
   void finished(std::size_t i);
   /// The estimate of the seconds left, from the cost done since the start.

@@ -80,11 +80,44 @@ void QuasiStaticPath::factor(const Eigen::SparseMatrix<double>& tangent, Eigen::
   }
 }
 
+double QuasiStaticPath::control_gap(const State& start, const State& at, const Eigen::VectorXd& u,
+                                    const Target& target) const {
+  switch (target.control) {
+    case LoadControl::displacement: return std::abs(target.value - at.lambda);
+    case LoadControl::cmod:
+      return std::abs(target.value - model_.mouth_gauge().dot(u)) /
+             std::max(std::abs(target.value), 1e-300);
+    case LoadControl::arc_length:
+      return std::abs(released(start, at) - target.value) / target.value;
+  }
+  return 0.0;
+}
+
+std::optional<double> QuasiStaticPath::load_step(const State& start, const State& at,
+                                                 const Target& target,
+                                                 const NewtonSolves& n) const {
+  if (target.control == LoadControl::displacement) return target.value - at.lambda;
+  const ProportionalConstraints& cons = model_.constraints();
+  if (target.control == LoadControl::cmod) {
+    const Eigen::VectorXd gauge_free = cons.restrict(model_.mouth_gauge());
+    const double gauge_lambda = model_.mouth_gauge().dot(cons.reference());
+    const double c = model_.mouth_gauge().dot(n.u);
+    const double denominator = gauge_lambda - gauge_free.dot(n.b);
+    if (denominator == 0.0) return std::nullopt;
+    return (target.value - c - gauge_free.dot(n.a)) / denominator;
+  }
+  // released(start, x + dx, lambda + dl) = s, linearized: dP = t (q.dx + k_rr dl)
+  const double t = model_.setup().thickness, p0 = model_.load(start.force);
+  const Eigen::VectorXd& r = cons.reference();
+  const double k_rr = r.dot(n.K * r);
+  const double denominator = 0.5 * (p0 - start.lambda * t * (k_rr - n.q.dot(n.b)));
+  if (denominator == 0.0) return std::nullopt;
+  return (target.value - released(start, at) + 0.5 * start.lambda * t * n.q.dot(n.a)) / denominator;
+}
+
 bool QuasiStaticPath::newton(const State& start, const Target& target, State& out, int& iterations,
                              const Guess& guess) {
   const ProportionalConstraints& cons = model_.constraints();
-  const Eigen::VectorXd gauge_free = cons.restrict(model_.mouth_gauge());
-  const double gauge_lambda = model_.mouth_gauge().dot(cons.reference());
   out.x = start.x;
   out.lambda = start.lambda;
   if (guess.from && guess.to) {  // between two converged states of a smooth stretch
@@ -103,17 +136,7 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
     Eigen::SparseMatrix<double> K;
     out.force = model_.forces(u, out.points, &K);
     const Eigen::VectorXd R = cons.restrict(out.force);
-    double gap = 0.0;  // how far the extra equation is from holding
-    switch (target.control) {
-      case LoadControl::displacement: gap = std::abs(target.value - out.lambda); break;
-      case LoadControl::cmod:
-        gap = std::abs(target.value - model_.mouth_gauge().dot(u)) /
-              std::max(std::abs(target.value), 1e-300);
-        break;
-      case LoadControl::arc_length:
-        gap = std::abs(released(start, out) - target.value) / target.value;
-        break;
-    }
+    const double gap = control_gap(start, out, u, target);
     // Residual relative to the larger of the strength's force scale and the reactions (whose
     // round-off floor it shares).
     const double reactions = std::sqrt(std::max(out.force.squaredNorm() - R.squaredNorm(), 0.0));
@@ -141,22 +164,9 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
       have_factor = true, reused_from = INFINITY;
     }
     const Eigen::VectorXd a = solver_.solve(-R), b = solver_.solve(q);
-    double dl = 0.0;
-    if (target.control == LoadControl::displacement) {
-      dl = target.value - out.lambda;
-    } else if (target.control == LoadControl::cmod) {
-      const double c = model_.mouth_gauge().dot(u);
-      const double denominator = gauge_lambda - gauge_free.dot(b);
-      if (denominator == 0.0) return false;
-      dl = (target.value - c - gauge_free.dot(a)) / denominator;
-    } else {  // released(start, x + dx, lambda + dl) = s, linearized: dP = t (q.dx + k_rr dl)
-      const double t = model_.setup().thickness, p0 = model_.load(start.force);
-      const Eigen::VectorXd& r = cons.reference();
-      const double k_rr = r.dot(K * r);
-      const double denominator = 0.5 * (p0 - start.lambda * t * (k_rr - q.dot(b)));
-      if (denominator == 0.0) return false;
-      dl = (target.value - released(start, out) + 0.5 * start.lambda * t * q.dot(a)) / denominator;
-    }
+    const std::optional<double> step = load_step(start, out, target, {u, K, q, a, b});
+    if (!step) return false;
+    const double dl = *step;
     const Eigen::VectorXd dx = a - dl * b;
     const double alpha = iterations > 0 ? line_search(start, out, dx, dl, R.norm()) : 1.0;
     out.x += alpha * dx;
@@ -218,14 +228,7 @@ double QuasiStaticPath::released(const State& start, const State& at) const {
   return 0.5 * (model_.load(start.force) * at.lambda - model_.load(at.force) * start.lambda);
 }
 
-bool QuasiStaticPath::run(const Observer& observe) {
-  State state;
-  state.x = Eigen::VectorXd::Zero(model_.num_free_dofs());
-  state.points = model_.initial_points();
-  state.force = Eigen::VectorXd::Zero(model_.num_dofs());
-  last_ = point_of(state, 0, PathPoint{});
-  observe(last_, full(state), state.points);
-
+bool QuasiStaticPath::calibrate(const State& state) {
   // A probe at a stroke far below anything that softens gives the linear response per unit
   // lambda, and with it the scale of the path.
   const double lambda_probe = 1e-9 * model_.space().mesh().domain().scale() / model_.stroke(1.0);
@@ -257,6 +260,41 @@ bool QuasiStaticPath::run(const Observer& observe) {
   arc_start_ = crack_energy() / options_.steps;
   arc_ = arc_start_;
   if (options_.control == LoadControl::arc_length) elastic_step_ = 1.5 * lambda_event;
+  return true;
+}
+
+bool QuasiStaticPath::end_at_failed_step(const State& state, int step) {
+  if (softened(state) && std::abs(last_.load) <= kFinalSnapLoad * peak_load_) {
+    const std::string after = " after cmod " + std::to_string(last_.cmod) + " (load " +
+                              std::to_string(std::abs(last_.load) / peak_load_) + " of the peak)";
+    stop_reason_ =
+        jumped_ ? "the last ligament snapped" + after +
+                      ": a jump no quasi-static control follows, not booked"
+                : "the remnants could not be followed" + after + ": a step failed after every cut";
+    return true;
+  }
+  const std::string where = " (stroke " + std::to_string(model_.stroke(state.lambda)) + ", cmod " +
+                            std::to_string(cmod(state)) + ")";
+  failure_ = jumped_ ? "step " + std::to_string(step) +
+                           ": the path jumped to another equilibrium, the energy balance "
+                           "missing more than " +
+                           std::to_string(kJumpLimit) + " of the work at the smallest cut" + where +
+                           ": a snap that " + load_control_name(options_.control) +
+                           " control cannot follow"
+                     : "step " + std::to_string(step) + " did not converge after " +
+                           std::to_string(options_.max_cuts) + " cuts" + where;
+  return false;
+}
+
+bool QuasiStaticPath::run(const Observer& observe) {
+  State state;
+  state.x = Eigen::VectorXd::Zero(model_.num_free_dofs());
+  state.points = model_.initial_points();
+  state.force = Eigen::VectorXd::Zero(model_.num_dofs());
+  last_ = point_of(state, 0, PathPoint{});
+  observe(last_, full(state), state.points);
+
+  if (!calibrate(state)) return false;
 
   const int limit = 20 * (options_.steps + options_.tail_steps) + 1000;
   for (int step = 1; !finished(state); ++step) {
@@ -266,27 +304,7 @@ bool QuasiStaticPath::run(const Observer& observe) {
     }
     int iterations = 0, inserted = 0;
     if (!take_step(state, iterations, inserted)) {
-      if (softened(state) && std::abs(last_.load) <= kFinalSnapLoad * peak_load_) {
-        const std::string after = " after cmod " + std::to_string(last_.cmod) + " (load " +
-                                  std::to_string(std::abs(last_.load) / peak_load_) +
-                                  " of the peak)";
-        stop_reason_ = jumped_ ? "the last ligament snapped" + after +
-                                     ": a jump no quasi-static control follows, not booked"
-                               : "the remnants could not be followed" + after +
-                                     ": a step failed after every cut";
-        return true;
-      }
-      const std::string where = " (stroke " + std::to_string(model_.stroke(state.lambda)) +
-                                ", cmod " + std::to_string(cmod(state)) + ")";
-      failure_ = jumped_ ? "step " + std::to_string(step) +
-                               ": the path jumped to another equilibrium, the energy balance "
-                               "missing more than " +
-                               std::to_string(kJumpLimit) + " of the work at the smallest cut" +
-                               where + ": a snap that " + load_control_name(options_.control) +
-                               " control cannot follow"
-                         : "step " + std::to_string(step) + " did not converge after " +
-                               std::to_string(options_.max_cuts) + " cuts" + where;
-      return false;
+      return end_at_failed_step(state, step);
     }
     PathPoint p = point_of(state, step, last_);
     p.iterations = iterations;

@@ -104,6 +104,20 @@ class QuasiStaticPath {
   bool newton(const State& start, const Target& target, State& out, int& iterations) {
     return newton(start, target, out, iterations, Guess{nullptr, nullptr, 0.0});
   }
+  /// How far the control's extra equation is from holding at `at` (u: its full displacement).
+  double control_gap(const State& start, const State& at, const Eigen::VectorXd& u,
+                     const Target& target) const;
+  /// What a Newton iteration solved: the full displacement, the tangent, dR/d lambda and the
+  /// two solutions a = K^-1 (-R), b = K^-1 q.
+  struct NewtonSolves {
+    const Eigen::VectorXd& u;
+    const Eigen::SparseMatrix<double>& K;
+    const Eigen::VectorXd &q, &a, &b;
+  };
+  /// The iteration's load-factor step dl that meets the control's linearized equation; none
+  /// where that equation is singular.
+  std::optional<double> load_step(const State& start, const State& at, const Target& target,
+                                  const NewtonSolves& n) const;
   double line_search(const State& start, const State& at, const Eigen::VectorXd& dx, double dl,
                      double residual) const;
   static bool stagnates(const std::vector<double>& history, double relative);
@@ -127,6 +141,13 @@ class QuasiStaticPath {
   void factor(const Eigen::SparseMatrix<double>& tangent, Eigen::VectorXd& q);
   PathPoint point_of(const State& s, int step, const PathPoint& previous) const;
   bool take_step(State& state, int& iterations, int& inserted);
+  /// The elastic probe from the unloaded `state`: the path's scale, the load factor of the first
+  /// event, and the first step of the controls that need one. False (failure_ set) if the probe
+  /// does not converge.
+  bool calibrate(const State& state);
+  /// After a step failed at every cut: true (stop_reason_ set) if the path ends there as a snap
+  /// of the softened remnants, false (failure_ set) otherwise.
+  bool end_at_failed_step(const State& state, int step);
   double event_excess(const State& trial) const;
   int insert_failed_points(State& trial);
   struct BalanceDrift {
@@ -167,5 +188,11 @@ class QuasiStaticPath {
   double arc_start_ = 0.0;     // and its first (and largest) value
   std::string failure_;
 };
+
+/// What a caller may watch of a fracture run, point by point: the model, the converged point and
+/// the states of the interface points (a study records them; the Python layer collects the
+/// curve and the cracks from them).
+using FracturePathObserver = std::function<void(
+    const CohesiveFracture& model, const PathPoint& point, const std::vector<InterfacePoint>&)>;
 
 }  // namespace vorodg

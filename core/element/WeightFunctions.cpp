@@ -159,6 +159,28 @@ void vertex_blocks(const CellCondensation& cc, double* out) {
   }
 }
 
+/// The inner-node values of each of the cell's vertices' weight functions (`values`: the cell's
+/// block, vertex after vertex), from their boundary values already there, by the condensed
+/// cell's factor of K(inner, inner).
+void recover_inner_values(const CellCondensation& cc, int N, double* values) {
+  const int nn = cc.nodes, ni = cc.n_inner, nb = 2 * N - 1;
+  const FanLattice lat(cc.n, N);
+  for (int k = 0; k < cc.n; ++k) {
+    double* out = values + static_cast<std::size_t>(k) * nn;
+    int bn[2 * kMaxCondensedNodes];
+    CellCondensation::boundary_nodes(lat, cc.n, N, k, bn);
+    double x[kMaxCondensedNodes];
+    for (int i = 0; i < ni; ++i) {
+      double r = cc.f[cc.inner[i]];
+      for (int a = 0; a < nb; ++a) r -= cc.K[cc.inner[i] * nn + bn[a]] * out[bn[a]];
+      x[i] = r;
+    }
+    forward_solve(cc.L.data(), ni, x);
+    backward_solve(cc.L.data(), ni, x);
+    for (int i = 0; i < ni; ++i) out[cc.inner[i]] = x[i];
+  }
+}
+
 }  // namespace
 
 void check_weight_options(const WeightFunctionOptions& o) {
@@ -272,22 +294,7 @@ void WeightFunctions::solve_by_condensation(int threads) {
 #pragma omp for schedule(dynamic, 256)
     for (int c = 0; c < nc; ++c) {
       condense_cell(mesh_, centroids_[c], c, N, m, degree, cc);
-      const int nn = cc.nodes, ni = cc.n_inner;
-      const FanLattice lat(cc.n, N);
-      for (int k = 0; k < cc.n; ++k) {
-        double* out = values_.data() + offsets_[c] + static_cast<std::size_t>(k) * nn;
-        int bn[2 * kMaxCondensedNodes];
-        CellCondensation::boundary_nodes(lat, cc.n, N, k, bn);
-        double x[kMaxCondensedNodes];
-        for (int i = 0; i < ni; ++i) {
-          double r = cc.f[cc.inner[i]];
-          for (int a = 0; a < nb; ++a) r -= cc.K[cc.inner[i] * nn + bn[a]] * out[bn[a]];
-          x[i] = r;
-        }
-        forward_solve(cc.L.data(), ni, x);
-        backward_solve(cc.L.data(), ni, x);
-        for (int i = 0; i < ni; ++i) out[cc.inner[i]] = x[i];
-      }
+      recover_inner_values(cc, N, values_.data() + offsets_[c]);
     }
   }
 }

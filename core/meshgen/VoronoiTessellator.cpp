@@ -118,6 +118,59 @@ int find_root(std::vector<int>& parent, int i) {
   return i;
 }
 
+/// Each seed's Voronoi cell as the loop of the circumcentres of the Delaunay faces around it
+/// (CSR: offsets, then face indices into centres), each circumcentre computed once.
+struct CircumcentreLoops {
+  std::vector<Point> centres;
+  std::vector<int> offsets{0};
+  std::vector<int> faces;
+};
+
+CircumcentreLoops circumcentre_loops(Delaunay& dt, std::size_t num_seeds) {
+  std::vector<Delaunay::Vertex_handle> seed_vertex(num_seeds);
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    if (v->info() >= 0) seed_vertex[v->info()] = v;
+  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = -1;
+  CircumcentreLoops loops;
+  loops.centres.reserve(2 * num_seeds + 64);
+  loops.faces.reserve(6 * num_seeds);
+  for (std::size_t i = 0; i < num_seeds; ++i) {
+    auto start = dt.incident_faces(seed_vertex[i]);
+    auto f = start;
+    do {
+      if (dt.is_infinite(f))
+        throw NumericalError("Voronoi tessellation: the cell of seed " + std::to_string(i) +
+                             " is unbounded; the seeds do not fill the domain");
+      if (f->info() < 0) {
+        f->info() = static_cast<int>(loops.centres.size());
+        const CgalPoint c = dt.circumcenter(f);
+        loops.centres.emplace_back(c.x(), c.y());
+      }
+      loops.faces.push_back(f->info());
+    } while (++f != start);
+    loops.offsets.push_back(static_cast<int>(loops.faces.size()));
+  }
+  return loops;
+}
+
+/// Coinciding circumcentres merged (a union-find forest: find_root gives each its survivor).
+/// Co-circular seeds (every seed with its mirror and a neighbour's mirror pair, or a seed at a
+/// corner) give zero-length Voronoi edges.
+std::vector<int> merged_centres(const CircumcentreLoops& loops, double merge_tol) {
+  std::vector<int> parent(loops.centres.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (std::size_t c = 0; c + 1 < loops.offsets.size(); ++c) {
+    const int n = loops.offsets[c + 1] - loops.offsets[c];
+    for (int k = 0; k < n; ++k) {
+      const int a = loops.faces[loops.offsets[c] + k];
+      const int b = loops.faces[loops.offsets[c] + (k + 1) % n];
+      if ((loops.centres[a] - loops.centres[b]).norm() <= merge_tol)
+        parent[find_root(parent, a)] = find_root(parent, b);
+    }
+  }
+  return parent;
+}
+
 }  // namespace
 
 PolygonMesh voronoi_mesh(const Rectangle& domain, const std::vector<Point>& seeds, double spacing) {
@@ -132,47 +185,11 @@ PolygonMesh voronoi_mesh(const Rectangle& domain, const std::vector<Point>& seed
   if (static_cast<std::size_t>(dt.number_of_vertices()) != pts.size())
     throw InputError("Voronoi tessellation: two seeds coincide");
 
-  // Voronoi vertices are the circumcentres of the Delaunay faces around original seeds.
-  std::vector<Delaunay::Vertex_handle> seed_vertex(seeds.size());
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
-    if (v->info() >= 0) seed_vertex[v->info()] = v;
-  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = -1;
-  std::vector<Point> centres;
-  centres.reserve(2 * seeds.size() + 64);
-  std::vector<int> offsets{0};
-  std::vector<int> loop_faces;
-  loop_faces.reserve(6 * seeds.size());
-  for (std::size_t i = 0; i < seeds.size(); ++i) {
-    auto start = dt.incident_faces(seed_vertex[i]);
-    auto f = start;
-    do {
-      if (dt.is_infinite(f))
-        throw NumericalError("Voronoi tessellation: the cell of seed " + std::to_string(i) +
-                             " is unbounded; the seeds do not fill the domain");
-      if (f->info() < 0) {
-        f->info() = static_cast<int>(centres.size());
-        const CgalPoint c = dt.circumcenter(f);
-        centres.emplace_back(c.x(), c.y());
-      }
-      loop_faces.push_back(f->info());
-    } while (++f != start);
-    offsets.push_back(static_cast<int>(loop_faces.size()));
-  }
-
-  // Merge coinciding circumcentres: co-circular seeds (every seed with its mirror and a
-  // neighbour's mirror pair, or a seed at a corner) give zero-length Voronoi edges.
-  const double merge_tol = 1e-9 * spacing;
-  std::vector<int> parent(centres.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (std::size_t c = 0; c + 1 < offsets.size(); ++c) {
-    const int n = offsets[c + 1] - offsets[c];
-    for (int k = 0; k < n; ++k) {
-      const int a = loop_faces[offsets[c] + k];
-      const int b = loop_faces[offsets[c] + (k + 1) % n];
-      if ((centres[a] - centres[b]).norm() <= merge_tol)
-        parent[find_root(parent, a)] = find_root(parent, b);
-    }
-  }
+  const CircumcentreLoops loops = circumcentre_loops(dt, seeds.size());
+  const std::vector<Point>& centres = loops.centres;
+  const std::vector<int>& offsets = loops.offsets;
+  const std::vector<int>& loop_faces = loops.faces;
+  std::vector<int> parent = merged_centres(loops, 1e-9 * spacing);
   // Number the surviving vertices and rebuild the loops without repeats. The cell of a seed
   // lying on a side (not mirrored there: it is its own mirror) straddles the side symmetrically
   // and is clipped to it.

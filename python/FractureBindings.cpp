@@ -7,7 +7,6 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
-#include <variant>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
@@ -17,11 +16,8 @@
 #include "fracture/CrackState.hpp"
 #include "fracture/Fragments.hpp"
 #include "python/Bindings.hpp"
-#include "verification/cli/RunCommand.hpp"
-#include "verification/harness/SceneVariants.hpp"
-#include "verification/kinds/dynamics/DynamicsMesh.hpp"
-#include "verification/kinds/dynamics/DynamicsRun.hpp"
-#include "verification/kinds/fracture/FractureRun.hpp"
+#include "verification/api/SceneRuns.hpp"
+#include "verification/api/SceneStudy.hpp"
 
 namespace vorodg::python {
 namespace {
@@ -29,41 +25,18 @@ namespace {
 namespace fs = std::filesystem;
 using RunChoice = std::variant<int, std::string>;
 
-/// A scene's text and the name messages give it: a dict, a file or a shipped scene's name.
-std::pair<std::string, std::string> scene_text(const py::handle& scene) {
-  if (py::isinstance<py::dict>(scene)) return {from_python(scene).dump(), "scene"};
-  const fs::path file = resolve_scene(py::str(scene));
-  return {read_file(file), file.string()};
-}
-
-/// The scene's part (itself, or the variant of that label).
-template <class SceneT>
-const SceneT& part(const SceneT& scene, const std::optional<std::string>& variant) {
-  const std::vector<const SceneT*> parts = study_parts(scene);
-  std::string labels;
-  for (const SceneT* p : parts) {
-    if (variant ? p->label == *variant : parts.size() == 1) return *p;
-    labels += (labels.empty() ? "" : ", ") + p->label;
+/// Which run of which scene: a dict, a file or a shipped scene's name, and the part and run.
+SceneRunChoice choice_of(const py::handle& scene, const std::string& output,
+                         const std::optional<std::string>& variant, const RunChoice& run) {
+  SceneRunChoice choice{"scene", "scene", variant, run, output};
+  if (py::isinstance<py::dict>(scene)) {
+    choice.text = from_python(scene).dump();
+  } else {
+    const fs::path file = resolve_scene(py::str(scene));
+    choice.text = read_file(file);
+    choice.source = file.string();
   }
-  throw InputError(variant ? "variant '" + *variant + "': no such variant (" + labels + ")"
-                           : "the scene has variants: give variant= one of " + labels);
-}
-
-/// The run of the part's meshes: by place (0, 1, ...) or by id ("rcp-L0-R2").
-EnsembleRunId pick_run(const std::vector<SceneMesh>& meshes, const RunChoice& run) {
-  const std::vector<EnsembleRunId> runs = ensemble_runs(meshes);
-  if (const int* i = std::get_if<int>(&run)) {
-    if (*i < 0 || *i >= static_cast<int>(runs.size()))
-      throw InputError("run " + std::to_string(*i) + ": expected 0 <= run < " +
-                       std::to_string(runs.size()));
-    return runs[*i];
-  }
-  std::string ids;
-  for (const EnsembleRunId& id : runs) {
-    if (id.id() == std::get<std::string>(run)) return id;
-    ids += (ids.empty() ? "" : ", ") + id.id();
-  }
-  throw InputError("run '" + std::get<std::string>(run) + "': no such run (" + ids + ")");
+  return choice;
 }
 
 /// The columns of a curve, one array each.
@@ -105,37 +78,32 @@ struct Interfaces {
 
 py::dict fracture_path(const py::handle& scene, const std::string& output,
                        const std::optional<std::string>& variant, const RunChoice& run) {
-  const auto [text, source] = scene_text(scene);
-  const FractureScene parsed = parse_fracture_scene(text, source);
-  const FractureScene& s = part(parsed, variant);
-  const EnsembleRunId id = pick_run(s.meshes, run);
   Curve curve;
   Interfaces interfaces;
-  const FractureRecord r =
-      run_fracture(s, id, output,
-                   [&](const CohesiveFracture& model, const PathPoint& p,
-                       const std::vector<InterfacePoint>& points) {
-                     for (const auto& [name, value] : {std::pair{"step", double(p.step)},
-                                                       {"displacement", p.stroke},
-                                                       {"cmod", p.cmod},
-                                                       {"load", p.load},
-                                                       {"external_work", p.external_work},
-                                                       {"elastic_energy", p.energy.elastic},
-                                                       {"dissipated_energy", p.energy.dissipated},
-                                                       {"coupling_energy", p.energy.coupling},
-                                                       {"cohesive_energy", p.energy.cohesive},
-                                                       {"switched_energy", p.energy.switched},
-                                                       {"crack_length", p.energy.crack_length},
-                                                       {"inserted", double(p.inserted)},
-                                                       {"newton_iterations", double(p.iterations)}})
-                       curve.add(name, value);
-                     interfaces.take(model, points);
-                   });
+  SceneRunResult r = fracture_scene_run(
+      choice_of(scene, output, variant, run), [&](const CohesiveFracture& model, const PathPoint& p,
+                                                  const std::vector<InterfacePoint>& points) {
+        for (const auto& [name, value] : {std::pair{"step", double(p.step)},
+                                          {"displacement", p.stroke},
+                                          {"cmod", p.cmod},
+                                          {"load", p.load},
+                                          {"external_work", p.external_work},
+                                          {"elastic_energy", p.energy.elastic},
+                                          {"dissipated_energy", p.energy.dissipated},
+                                          {"coupling_energy", p.energy.coupling},
+                                          {"cohesive_energy", p.energy.cohesive},
+                                          {"switched_energy", p.energy.switched},
+                                          {"crack_length", p.energy.crack_length},
+                                          {"inserted", double(p.inserted)},
+                                          {"newton_iterations", double(p.iterations)}})
+          curve.add(name, value);
+        interfaces.take(model, points);
+      });
   py::dict out;
-  out["record"] = to_python(fracture_record_json(r));
+  out["record"] = to_python(r.record);
   out["curve"] = curve.arrays();
   out["interfaces"] = interfaces.arrays();
-  out["mesh"] = MeshObject{fracture_run_mesh(s, id).mesh, MeshFamily::file};
+  out["mesh"] = MeshObject{std::move(r.mesh), MeshFamily::file};
   return out;
 }
 
@@ -169,32 +137,25 @@ struct FragmentData {
 py::dict fragmentation_run(const py::handle& scene, const std::string& output,
                            const std::optional<std::string>& variant, const RunChoice& run,
                            bool force) {
-  const auto [text, source] = scene_text(scene);
-  const DynamicsScene parsed = parse_dynamics_scene(text, source, force);
-  const DynamicsScene& s = part(parsed, variant);
-  if (!s.fragmentation)
-    throw InputError(source + ": a dynamics scene; fragmentation_run takes a fragmentation one");
-  const EnsembleRunId id = pick_run(s.meshes, run);
+  const SceneRunChoice choice = choice_of(scene, output, variant, run);
   std::optional<FragmentData> fragments;
   std::vector<int> broken;
-  std::optional<PolygonMesh> mesh;
-  DynamicsRecord r;
+  std::optional<SceneRunResult> r;
   {
     py::gil_scoped_release unlocked;
-    r = run_dynamics(s, id, output, [&](const ExplicitSimulation& model) {
+    r = fragmentation_scene_run(choice, force, [&](const ExplicitSimulation& model) {
       const CrackState state = model.cracks->broken_state();
       const Fragments pieces(state, model.mass.pair_masses());
       fragments.emplace(pieces);
       fragments->velocity = pieces.velocities(model.run->dofs(), model.run->velocity());
       broken.assign(state.flags().begin(), state.flags().end());
-      mesh.emplace(model.mesh());
     });
   }
   py::dict out;
-  out["record"] = to_python(dynamics_record_json(s, r));
+  out["record"] = to_python(r->record);
   out["fragments"] = fragments->arrays();
   out["broken"] = py::array_t<int>(static_cast<py::ssize_t>(broken.size()), broken.data());
-  out["mesh"] = MeshObject{std::move(*mesh), MeshFamily::file};
+  out["mesh"] = MeshObject{std::move(r->mesh), MeshFamily::file};
   return out;
 }
 

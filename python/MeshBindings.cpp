@@ -13,8 +13,8 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
 #include "python/Bindings.hpp"
-#include "verification/cli/CliSupport.hpp"
-#include "verification/cli/JsonOutput.hpp"
+#include "verification/api/JsonOutput.hpp"
+#include "verification/api/MeshSource.hpp"
 
 namespace vorodg::python {
 namespace {
@@ -104,9 +104,8 @@ py::array_t<int> edge_pairs(const PolygonMesh& mesh, bool cells) {
   return out;
 }
 
-}  // namespace
-
-void bind_mesh(py::module_& m) {
+/// vorodg.Mesh: its constructor from arrays, its arrays and measures, and its writer.
+void bind_mesh_class(py::module_& m) {
   py::class_<MeshObject, std::shared_ptr<MeshObject>>(
       m, "Mesh",
       "A polygon mesh: vertices, counter-clockwise cells (CSR: offsets, connectivity), unique "
@@ -173,7 +172,10 @@ void bind_mesh(py::module_& m) {
                std::to_string(o.mesh.num_vertices()) + " vertices, domain " +
                o.mesh.domain().to_string() + ">";
       });
+}
 
+/// The ways to get a mesh besides arrays: generated as `vorodg mesh` does, or read from .vtu.
+void bind_mesh_sources(py::module_& m) {
   const MeshSourceOptions defaults;
   const Rectangle box = Rectangle::parse(defaults.domain);
   m.def("generate_mesh", &generated, py::arg("family") = defaults.family,
@@ -196,6 +198,13 @@ void bind_mesh(py::module_& m) {
       py::arg("path"), py::arg("domain") = py::none(),
       "A mesh from a .vtu file (its domain from the file's FieldData, else the bounding box, "
       "unless given); refused (ValueError) unless valid.");
+}
+
+}  // namespace
+
+void bind_mesh(py::module_& m) {
+  bind_mesh_class(m);
+  bind_mesh_sources(m);
 }
 
 }  // namespace vorodg::python

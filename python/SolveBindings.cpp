@@ -12,8 +12,7 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "python/Bindings.hpp"
-#include "verification/cli/SettingOptions.hpp"
-#include "verification/cli/SolveCommand.hpp"
+#include "verification/api/SolveOptions.hpp"
 #include "verification/solve/RunRecord.hpp"
 #include "verification/solve/SettingsSchema.hpp"
 

@@ -11,7 +11,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
 #include "python/Bindings.hpp"
-#include "verification/cli/RunCommand.hpp"
+#include "verification/api/SceneStudy.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/StudyKind.hpp"
 
@@ -71,7 +71,7 @@ py::dict run(const py::handle& scene, const std::string& output, int threads, bo
              bool plots, bool force, const std::optional<std::string>& shard) {
   if (output.empty()) throw InputError("run: expected an output folder");
   if (threads < 1) throw InputError("threads " + std::to_string(threads) + ": expected >= 1");
-  RunCommandOptions o;
+  SceneStudyOptions o;
   o.scene = scene_source(scene, output);
   o.out = output;
   o.threads = threads;
@@ -87,7 +87,7 @@ py::dict run(const py::handle& scene, const std::string& output, int threads, bo
     // The runs' worker threads print through the redirection, which takes the interpreter's
     // lock: this thread must not hold it meanwhile.
     py::gil_scoped_release unlocked;
-    code = run_study_scene(o);
+    code = run_scene_study(o);
   }
   Ensemble::set_shard({});
   py::dict r = results(output);

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """The folders are the architecture (docs/design.md, "Pipeline and folders"): every #include of a
-library's sources may name only the folders below it. Prints each breach (file, line, the folder
+library's sources may name only the folders below it, and the generic parts of verification/
+(harness, model, report) name no formulation, physics library or study kind; python/ includes
+nothing of verification/cli or verification/kinds. Prints each breach (file, line, the folder
 it reaches) and exits 1 if there is one.
 
 Usage: folder_rules.py SOURCE_DIR
@@ -19,6 +21,16 @@ ALLOWED = {
     "dynamics/contact": {"core"},
     "dynamics": {"core", "fracture", "interfaces", "dynamics/contact"},
 }
+# The parts of verification/ that know no physics: what they may include of the repository.
+GENERIC = {
+    "verification/harness": {"core", "verification/harness", "verification/model",
+                             "verification/report"},
+    "verification/model": {"core", "verification/model"},
+    "verification/report": {"core", "verification/report"},
+}
+# What the Python module may not include: it binds the library objects and the program's
+# operations (verification/api), not the command line or the study kinds' internals.
+PYTHON_FORBIDDEN = ("verification/cli", "verification/kinds")
 FOLDERS = ("core", "fracture", "interfaces", "cg", "dg", "dynamics", "verification")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
@@ -29,6 +41,41 @@ def library_of(path):
         if path == lib or path.startswith(lib + "/"):
             return lib
     return None
+
+
+def generic_breaches(root):
+    """The harness, the model and the report layer include no formulation, no physics library
+    and no study kind: only core and the generic parts of verification/ they are allowed."""
+    breaches = 0
+    for part, allowed in GENERIC.items():
+        for folder, _, files in os.walk(os.path.join(root, part)):
+            for name in sorted(files):
+                if not name.endswith((".cpp", ".hpp")):
+                    continue
+                rel = os.path.relpath(os.path.join(folder, name), root)
+                for number, line in enumerate(open(os.path.join(folder, name), encoding="utf-8"), 1):
+                    match = INCLUDE.match(line)
+                    if not match or match.group(1).split("/")[0] not in FOLDERS:
+                        continue
+                    target = match.group(1)
+                    if not any(target == a or target.startswith(a + "/") for a in allowed):
+                        print(f"{rel}:{number}: {part} includes {target}")
+                        breaches += 1
+    return breaches
+
+
+def python_breaches(root):
+    breaches = 0
+    folder = os.path.join(root, "python")
+    for name in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:
+        if not name.endswith((".cpp", ".hpp")):
+            continue
+        for number, line in enumerate(open(os.path.join(folder, name), encoding="utf-8"), 1):
+            match = INCLUDE.match(line)
+            if match and match.group(1).startswith(PYTHON_FORBIDDEN):
+                print(f"python/{name}:{number}: python includes {match.group(1)}")
+                breaches += 1
+    return breaches
 
 
 def main(root):
@@ -50,6 +97,7 @@ def main(root):
                     if target != lib and target not in ALLOWED[lib]:
                         print(f"{rel}:{number}: {lib} includes {match.group(1)} ({target})")
                         breaches += 1
+    breaches += generic_breaches(root) + python_breaches(root)
     print(f"folder rules: {breaches} breaches")
     return 1 if breaches else 0
 

@@ -53,7 +53,7 @@ const char* kTwoSweeps = R"({
 })";
 
 TEST(ExtremesScene, SweepsInheritTheTopLevelKeysAndTheirOverridesWin) {
-  const Scene scene = parse_scene(kTwoSweeps, "two.json");
+  const Scene scene = parse_scene(kTwoSweeps, "two.json", {.sweeps = true});
   EXPECT_EQ(scene.study, "extremes");
   EXPECT_EQ(scene.name, "two-sweeps");
   EXPECT_EQ(scene.description, "parsing test");
@@ -118,7 +118,7 @@ TEST(ExtremesScene, SweepsInheritTheTopLevelKeysAndTheirOverridesWin) {
 TEST(ExtremesScene, TheShippedSceneCoversEveryAxisAndItsExtremes) {
   const fs::path file = kRepo / "data" / "scenes" / "extremes.json";
   ASSERT_TRUE(fs::exists(file)) << file;
-  const Scene scene = read_scene(file);
+  const Scene scene = read_scene(file, {.sweeps = true});
   EXPECT_EQ(scene.study, "extremes");
   ASSERT_FALSE(scene.sweeps.empty());
 

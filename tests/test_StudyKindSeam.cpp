@@ -11,7 +11,7 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/meshgen/MeshFamily.hpp"
-#include "verification/cli/RunCommand.hpp"
+#include "verification/api/SceneStudy.hpp"
 #include "verification/harness/EnsembleStudy.hpp"
 #include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneVariants.hpp"
@@ -131,13 +131,13 @@ TEST(StudyKindSeam, AToyKindRegisteredInOneLineRunsEndToEndThroughTheHarness) {
   ASSERT_TRUE(registered);
   const fs::path dir = fs::temp_directory_path() / "vorodg_study_kind_seam";
   fs::remove_all(dir);
-  RunCommandOptions options;
+  SceneStudyOptions options;
   options.scene = write_scene(dir).string();
   options.out = (dir / "out").string();
   options.threads = 2;
   options.quiet = true;
   options.no_plots = true;
-  ASSERT_EQ(run_study_scene(options), 0);
+  ASSERT_EQ(run_scene_study(options), 0);
 
   // Seven runs: 2 levels x 2 realizations of hex, 1 x 3 of rcp, named as every kind names them.
   const std::vector<std::string> csv = lines_of(dir / "out" / "results.csv");
@@ -161,7 +161,7 @@ TEST(StudyKindSeam, AToyKindRegisteredInOneLineRunsEndToEndThroughTheHarness) {
   // A rerun resumes: every run is in results.jsonl, so nothing runs and nothing is appended.
   const std::vector<std::string> before = lines_of(dir / "out" / "results.jsonl");
   ASSERT_EQ(before.size(), 7u);
-  ASSERT_EQ(run_study_scene(options), 0);
+  ASSERT_EQ(run_scene_study(options), 0);
   EXPECT_EQ(lines_of(dir / "out" / "results.jsonl"), before);
   fs::remove_all(dir);
 }

@@ -64,7 +64,7 @@ bool has_reason(const TradeoffConfig& c, const std::string& words) {
 }
 
 TEST(TradeoffAnalysis, OnlyConvergingTimedConfigurationsStandOnTheFront) {
-  const Scene scene = parse_scene(kScene, "made-up scene");
+  const Scene scene = parse_scene(kScene, "made-up scene", {.tradeoff = true});
   std::vector<RunRecord> records;
   for (const StudyRun& run : expand_runs(scene)) records.push_back(made_up(run));
   const StudySummary summary = summarize_study(scene, records, nullptr);
@@ -119,7 +119,7 @@ TEST(TradeoffAnalysis, TheCheckRunsTheSmallestTargetWithinReachOnly) {
     std::string text = kScene;
     text.replace(text.find("\"min_seconds\": 0.5"), 18,
                  std::string("\"min_seconds\": 0.5, \"targets\": ") + targets);
-    const Scene scene = parse_scene(text, "made-up scene");
+    const Scene scene = parse_scene(text, "made-up scene", {.tradeoff = true});
     std::vector<RunRecord> records;
     for (const StudyRun& run : expand_runs(scene)) records.push_back(made_up(run));
     const StudySummary summary = summarize_study(scene, records, nullptr);

@@ -1,6 +1,7 @@
 #pragma once
 // Numbers in messages: short and exact enough to find the offending value (std::to_string
 // prints a fixed six decimals, which hides small and large values alike).
+#include <charconv>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -12,6 +13,13 @@ inline std::string fmt(double x, int precision = 6) {
   os.precision(precision);
   os << x;
   return os.str();
+}
+
+/// The shortest text that reads back to the value (0.7, not 0.69999999999999996).
+inline std::string exact_text(double x) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, end);
 }
 
 /// "a, b or c": the names of `items` (each item's `name` member) for a message's "expected ...".

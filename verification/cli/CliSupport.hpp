@@ -9,19 +9,9 @@
 
 #include "core/io/VtuMesh.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "verification/api/MeshSource.hpp"
 
 namespace vorodg {
-
-struct MeshSourceOptions {
-  std::string family = std::string(family_name(MeshSpec{}.family));
-  std::string domain = "0,0,4,1";
-  double d = 0.0;  // rcp, tri
-  double h = 0.0;  // hex, perturbed-hex, quad
-  double r = MeshSpec{}.perturbation;
-  std::uint64_t seed = MeshSpec{}.seed;
-  double regularize = MeshSpec{}.regularization;
-  std::string file;  // --mesh FILE.vtu (solve only)
-};
 
 /// Where a command writes its .vtu (`-o FILE`) and how (`--ascii`; compressed binary otherwise).
 struct VtuOutputOptions {
@@ -41,10 +31,6 @@ CLI::Validator unsigned_integer();
 
 /// Registers --family, --domain, --d, --h, --r, --seed, --regularize on a subcommand.
 void add_mesh_source_options(CLI::App& command, MeshSourceOptions& o);
-/// The MeshSpec the options describe (family `file` when o.file is set). `domain_given` says
-/// whether --domain was on the command line (an imported mesh otherwise keeps its own).
-MeshSpec mesh_spec(const MeshSourceOptions& o, bool domain_given);
-
 /// Prints "# <prefix> --option value ..." with every option's value or default.
 void echo_options(const std::string& prefix, const CLI::App& command,
                   const std::map<std::string, std::string>& resolved = {});

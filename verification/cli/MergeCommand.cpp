@@ -89,7 +89,7 @@ int run_merge_command(const MergeCommandOptions& o, const CLI::App& command) {
   run.threads = 1;
   run.no_plots = o.no_plots;
   run.quiet = true;
-  return run_study_scene(run);
+  return run_scene_study(run);
 }
 
 }  // namespace vorodg

@@ -10,8 +10,8 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "verification/api/JsonOutput.hpp"
 #include "verification/cli/CliSupport.hpp"
-#include "verification/cli/JsonOutput.hpp"
 
 namespace vorodg {
 namespace {

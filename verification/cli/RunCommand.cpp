@@ -4,11 +4,10 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
+#include "verification/api/SceneStudy.hpp"
 #include "verification/cli/CliSupport.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/StudyKind.hpp"
@@ -19,31 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scenes_dir() {
-  return fs::path(VORODG_DATA_DIR) / "scenes";
-}
-
-/// "K/N" of --shard.
-Shard parse_shard(const std::string& text) {
-  Shard shard;
-  char slash = 0;
-  std::istringstream in(text);
-  if (!(in >> shard.index >> slash >> shard.count) || slash != '/' || !in.eof())
-    throw InputError("--shard '" + text + "': expected K/N, e.g. 3/16");
-  return shard;
-}
-
-/// Names the scene in the output folder (for `vorodg merge`), once its runs are done: bad input
-/// leaves nothing behind. Rank 0 of an MPI job, or each shard, writes it.
-void record_scene(const fs::path& out, const fs::path& scene) {
-  if (!Ensemble::coordinator()) return;
-  write_file_atomically(out / kRunInfoFile,
-                        nlohmann::json{{"scene", fs::absolute(scene).string()}}.dump(1) + "\n");
-}
-
 int list_scenes() {
   std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(scenes_dir()))
+  for (const auto& e : fs::directory_iterator(shipped_scenes_dir()))
     if (e.path().extension() == ".json") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   std::size_t width = 0;
@@ -58,14 +35,6 @@ int list_scenes() {
 }
 
 }  // namespace
-
-std::filesystem::path resolve_scene(const std::string& name) {
-  if (fs::exists(name)) return name;
-  const fs::path shipped = scenes_dir() / (name + ".json");
-  if (fs::exists(shipped)) return shipped;
-  throw InputError("scene '" + name +
-                   "': no such file, and no shipped scene of that name (see vorodg run --list)");
-}
 
 CLI::App* add_run_command(CLI::App& app, RunCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand("run", "Run a study scene and write its report");
@@ -97,21 +66,7 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   if (o.out.empty()) throw InputError("run: expected an output folder (-o DIR)");
   if (o.threads < 1) throw InputError("--threads " + std::to_string(o.threads) + ": expected >= 1");
   echo_options("vorodg run", command);
-  return run_study_scene(o);
-}
-
-int run_study_scene(const RunCommandOptions& o) {
-  if (!o.shard.empty()) Ensemble::set_shard(parse_shard(o.shard));
-  StudyCall call;
-  call.scene = fs::absolute(resolve_scene(o.scene));
-  call.out = o.out;
-  call.threads = o.threads;
-  call.progress = !o.quiet;
-  call.no_plots = o.no_plots;
-  call.force = o.force;
-  const int code = scene_kind(read_file(call.scene), call.scene.string()).run(call);
-  record_scene(o.out, call.scene);
-  return code;
+  return run_scene_study(o);
 }
 
 }  // namespace vorodg

@@ -37,24 +37,4 @@ void add_setting_options(CLI::App& cmd, SettingOptions& o) {
   }
 }
 
-SolveSettings checked_settings(const SettingOptions& o) {
-  SolveSettings settings = o.settings;
-  for (const auto& [key, text] : o.choice_texts) {
-    const SettingSpec& spec = setting_spec(key);
-    if (const auto message = check_text(spec, text)) throw InputError(spec.flag + " " + *message);
-    spec.set_text(settings, text);
-  }
-  if (const auto error = check_settings(settings))
-    throw InputError(error->spec->flag + " " + error->message);
-  return settings;
-}
-
-std::map<std::string, std::string> resolved_defaults(const SolveSettings& settings) {
-  std::map<std::string, std::string> out;
-  for (const SettingSpec& spec : setting_specs())
-    if (!spec.default_doc.empty() && !spec.flag.empty())
-      out[spec.flag] = value_text(spec, settings);
-  return out;
-}
-
 }  // namespace vorodg

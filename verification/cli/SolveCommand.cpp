@@ -7,7 +7,7 @@
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/cli/JsonOutput.hpp"
+#include "verification/api/JsonOutput.hpp"
 #include "verification/cli/ResultFile.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/solve/RunRecord.hpp"
@@ -40,10 +40,6 @@ void print_summary(const SolveSettings& settings, const MeshSpec& spec, const Ru
 }
 
 }  // namespace
-
-int default_solve_threads() {
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
 
 CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& o) {
   CLI::App* cmd =

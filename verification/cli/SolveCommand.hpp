@@ -17,9 +17,6 @@ struct SolveCommandOptions {
   std::string metrics;
 };
 
-/// A solve's threads unless told: every core (results are bitwise the same for any count).
-int default_solve_threads();
-
 CLI::App* add_solve_command(CLI::App& app, SolveCommandOptions& options);
 int run_solve_command(const SolveCommandOptions& options, const CLI::App& command);
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "verification/harness/MeshBlock.hpp"
 #include "verification/harness/ResumableRuns.hpp"
-#include "verification/study/Scene.hpp"
 
 namespace vorodg {
 

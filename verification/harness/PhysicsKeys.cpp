@@ -4,7 +4,6 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Format.hpp"
 #include "verification/model/Choices.hpp"
-#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 

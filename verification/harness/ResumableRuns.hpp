@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/study/Scene.hpp"
+#include "verification/harness/MeshBlock.hpp"
 
 namespace vorodg {
 

@@ -6,7 +6,6 @@
 
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
 

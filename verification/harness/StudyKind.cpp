@@ -20,6 +20,12 @@ const StudyKind& study_kind(const std::string& name, const std::string& where) {
   throw InputError(where + "'" + name + "': expected " + names);
 }
 
+Choices study_choices() {
+  Choices choices;
+  for (const StudyKind& kind : study_kinds()) choices.push_back({kind.name, kind.doc});
+  return choices;
+}
+
 std::string scene_study(const std::string& text, const std::string& source) {
   const nlohmann::json root = parse_scene_json(text, source);
   SceneObject top(root, "", source);

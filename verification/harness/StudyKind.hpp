@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "verification/harness/SceneKeys.hpp"
+#include "verification/model/Choices.hpp"
 
 namespace vorodg {
 
@@ -38,6 +39,9 @@ struct StudyKind {
 /// Every kind, in the order messages and docs list them (verification/kinds/StudyKinds.cpp),
 /// then those registered.
 const std::vector<StudyKind>& study_kinds();
+
+/// The kinds' names and docs, as a choice table (messages, `--keys`).
+Choices study_choices();
 
 /// Adds a kind (before any study runs: the list may move); a name already known is refused with
 /// InputError. Returns true, so that a file can register at static initialization.

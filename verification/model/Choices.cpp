@@ -1,7 +1,5 @@
 #include "verification/model/Choices.hpp"
 
-#include "verification/harness/StudyKind.hpp"
-
 #include <algorithm>
 #include <stdexcept>
 #include <string_view>
@@ -87,15 +85,6 @@ const Choices& plane_choices() {
 stress  plane stress
 strain  plane strain
 )");
-  return choices;
-}
-
-const Choices& study_choices() {  // the registry's kinds (verification/kinds/StudyKinds.cpp)
-  static const Choices choices = [] {
-    Choices c;
-    for (const StudyKind& kind : study_kinds()) c.push_back({kind.name, kind.doc});
-    return c;
-  }();
   return choices;
 }
 

@@ -26,7 +26,6 @@ const Choices& ordering_choices();
 const Choices& solver_choices();
 const Choices& element_choices();  // the element families
 const Choices& plane_choices();
-const Choices& study_choices();
 const Choices& sweep_axis_choices();  // what an extremes sweep varies
 const Choices& baseline_choices();    // what an extremes sweep compares errors with
 

@@ -242,12 +242,6 @@ const SettingSpec& setting_spec(const std::string& key) {
   throw std::out_of_range("no setting '" + key + "'");
 }
 
-std::string exact_text(double x) {
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, end);
-}
-
 std::string value_text(const SettingSpec& spec, const SolveSettings& settings) {
   switch (spec.kind) {
     case SettingKind::choice: return spec.get_text(settings);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/util/Format.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/solve/SolveRun.hpp"
 
@@ -48,8 +49,6 @@ const std::vector<SettingSpec>& setting_specs();
 /// The spec of a scene key; throws std::out_of_range for an unknown one.
 const SettingSpec& setting_spec(const std::string& key);
 
-/// The shortest text that reads back to the value (0.7, not 0.69999999999999996).
-std::string exact_text(double x);
 /// The setting's value in `settings` as text: numbers exact, flags true/false, choices by name.
 std::string value_text(const SettingSpec& spec, const SolveSettings& settings);
 /// The default, as text (the words of default_doc where the default depends on the formulation).

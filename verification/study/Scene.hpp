@@ -13,29 +13,12 @@
 
 #include "core/geometry/Rectangle.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "verification/harness/MeshBlock.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/solve/SolveRun.hpp"
 #include "verification/study/TradeoffSettings.hpp"
 
 namespace vorodg {
-
-struct SceneMesh {
-  std::string label;  // default: the family name
-  MeshFamily family = MeshFamily::rcp;
-  std::vector<double> sizes;  // d (rcp, tri) or h (hex, perturbed-hex, quad), coarse to fine
-  /// file: one .vtu per level, coarse to fine, resolved against the scene's folder. Their sizes
-  /// are the meshes' h_avg, so that every study counts levels by `sizes`.
-  std::vector<std::filesystem::path> files;
-  int realizations = 1;
-  std::uint64_t seed = MeshSpec{}.seed;
-  double perturbation = MeshSpec{}.perturbation;
-  double regularization = MeshSpec{}.regularization;
-  bool symmetric = false;   // rcp: mirrored about the vertical mid-line
-  bool notch_only = false;  // symmetric "notch": mirrored along the notch and at the top only
-
-  /// What the generator needs for one realization of one level.
-  MeshSpec spec(const Rectangle& domain, int level, std::uint64_t realization_seed) const;
-};
 
 struct SceneFormulation {
   std::string label;  // default: the name, plus the knobs that differ from the defaults
@@ -75,13 +58,17 @@ struct Scene {
   double broken_factor = 30.0;    // error above this times the baseline: broken
 };
 
-class SceneObject;
-/// One entry of "meshes" (the keys of docs/scenes.md); every study kind reads its meshes so.
-SceneMesh read_mesh(SceneObject& m, const Rectangle& domain);
+/// The top-level blocks a static kind's scenes take besides the common keys: each kind passes
+/// its own (the extremes kind: sweeps; the trade-off kind: tradeoff), so the reader names no kind.
+struct StaticSceneForm {
+  bool sweeps = false;    // `sweeps`: the scene is a list of sweeps, each a study of its own
+  bool tradeoff = false;  // `tradeoff`: the trade-off settings block
+};
 
 /// Reads and validates a scene. Throws InputError naming the file and the key.
-Scene read_scene(const std::filesystem::path& path);
+Scene read_scene(const std::filesystem::path& path, const StaticSceneForm& form = {});
 /// The same from text (`source` names it in messages).
-Scene parse_scene(const std::string& text, const std::string& source);
+Scene parse_scene(const std::string& text, const std::string& source,
+                  const StaticSceneForm& form = {});
 
 }  // namespace vorodg

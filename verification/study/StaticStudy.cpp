@@ -20,14 +20,14 @@ StudyOptions study_options(const StudyCall& call) {
 }
 
 int run_static_study(
-    const Scene& scene, const StudyCall& call,
+    const Scene& scene, const StudyCall& call, const ReportSections& sections,
     const std::function<void(const std::vector<RunRecord>&, const StudyOptions&)>& check) {
   const Stopwatch clock;
   const StudyOptions options = study_options(call);
   const std::vector<RunRecord> results = run_study(scene, options);
   if (check) check(results, options);
   if (!Ensemble::writes_reports()) return 0;  // the reports are the coordinator's
-  const StudyReport report = write_study_report(scene, results, call.out);
+  const StudyReport report = write_study_report(scene, results, call.out, sections);
   if (!call.no_plots) draw_plots("plot_study.py", call.out);
   finish_report_markdown(report.markdown, call.out, study_pictures());
   std::cout << "\n"
@@ -35,14 +35,17 @@ int run_static_study(
             << " s; report in " << (call.out / "report.md").string() << "\n";
   if (report.unexpected > 0) {
     std::cerr << "vorodg: " << report.unexpected
-              << " patch-suite outcomes differ from the expected ones\n";
+              << " outcomes differ from the expected ones (see report.md)\n";
     return 1;
   }
   return 0;
 }
 
-std::string read_static_scene(const std::string& text, const std::string& source) {
-  return parse_scene(text, source).description;
+std::function<std::string(const std::string&, const std::string&)> static_scene_reader(
+    StaticSceneForm form) {
+  return [form](const std::string& text, const std::string& source) {
+    return parse_scene(text, source, form).description;
+  };
 }
 
 }  // namespace vorodg

@@ -8,14 +8,11 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
-#include "verification/cli/JsonOutput.hpp"
+#include "verification/api/JsonOutput.hpp"
 #include "verification/harness/StudyFiles.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 #include "verification/study/KpTrendReport.hpp"
-#include "verification/study/PatchSuiteReport.hpp"
-#include "verification/study/PenaltyAnalysis.hpp"
 #include "verification/study/StudySummary.hpp"
-#include "verification/study/TradeoffReport.hpp"
 
 namespace vorodg {
 namespace {
@@ -117,8 +114,14 @@ void write_convergence(const StudySummary& summary, const std::filesystem::path&
 
 }  // namespace
 
+int convergence_sections(const ReportInput& in, std::ostringstream& md) {
+  write_convergence(in.summary, in.out, md);
+  write_kp_trend(in.summary, md);
+  return 0;
+}
+
 StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>& records,
-                               const std::filesystem::path& out) {
+                               const std::filesystem::path& out, const ReportSections& sections) {
   write_results_csv(out, run_record_fields(), records);
   write_timings(scene, records, out);
   const json published = published_reference(scene);
@@ -133,16 +136,7 @@ StudyReport write_study_report(const Scene& scene, const std::vector<RunRecord>&
   md << "; E = " << scene.E << ", plane " << plane_name(scene.plane) << "; " << records.size()
      << " runs.\n\n";
   StudyReport report;
-  if (scene.study == "patch-suite")
-    report.unexpected = write_patch_suite(scene, records, md);
-  else
-    write_convergence(summary, out, md);
-  write_kp_trend(summary, md);
-  if (scene.study == "penalty-sweep") {
-    write_penalty_analysis(scene, out, md);
-    write_penalty_comparison(scene, records, md);
-  }
-  if (scene.study == "trade-off") write_tradeoff(scene, summary, records, out, md);
+  report.unexpected = sections({scene, summary, records, out}, md);
   if (published.is_object() && published.contains("trend"))
     md << "Published trend (" << published.value("source", "")
        << "): " << published["trend"].get<std::string>() << "\n\n";

@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "core/util/Format.hpp"
-#include "verification/cli/JsonOutput.hpp"
+#include "verification/api/JsonOutput.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 #include "verification/study/TradeoffVerification.hpp"
 

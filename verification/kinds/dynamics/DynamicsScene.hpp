@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "dynamics/ExplicitParameters.hpp"
+#include "verification/harness/MeshBlock.hpp"
 #include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
-#include "verification/study/Scene.hpp"
 
 namespace vorodg {
 

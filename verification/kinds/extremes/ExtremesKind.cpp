@@ -14,9 +14,11 @@
 namespace vorodg {
 namespace {
 
+constexpr StaticSceneForm kExtremesForm{true, false};  // a list of sweeps
+
 int run_extremes(const StudyCall& call) {
   const Stopwatch clock;
-  const Scene scene = read_scene(call.scene);
+  const Scene scene = read_scene(call.scene, kExtremesForm);
   std::vector<std::vector<RunRecord>> results;
   std::size_t runs = 0;
   for (const auto& sweep : scene.sweeps) {
@@ -44,8 +46,8 @@ int run_extremes(const StudyCall& call) {
 }  // namespace
 
 StudyKind extremes_kind() {
-  return {"extremes", "sweeps to the numerical extremes, a verdict per run", read_static_scene,
-          run_extremes, extremes_scene_keys};
+  return {"extremes", "sweeps to the numerical extremes, a verdict per run",
+          static_scene_reader(kExtremesForm), run_extremes, extremes_scene_keys};
 }
 
 }  // namespace vorodg

@@ -45,11 +45,6 @@ GeneratedMesh fracture_run_mesh(const FractureScene& scene, const EnsembleRunId&
 void check_fracture_meshes(const FractureScene& scene, const std::vector<EnsembleRunId>& runs);
 
 /// Runs one realization, writing curves/<id>.csv, cracks/<id>.csv and vtu/<id>.pvd under `out`.
-/// What a caller may watch of a run, point by point: the model, the converged point and the
-/// states of the interface points (the Python layer collects the curve and the cracks from it).
-using FracturePathObserver = std::function<void(
-    const CohesiveFracture& model, const PathPoint& point, const std::vector<InterfacePoint>&)>;
-
 FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run,
                             const std::filesystem::path& out,
                             const FracturePathObserver& observe = {});

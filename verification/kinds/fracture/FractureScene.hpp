@@ -15,7 +15,7 @@
 #include "fracture/CohesiveLaw.hpp"
 #include "fracture/FractureProblem.hpp"
 #include "fracture/MohrCoulomb.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/harness/MeshBlock.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "verification/cli/JsonOutput.hpp"
+#include "verification/api/JsonOutput.hpp"
 
 #include <cmath>
 

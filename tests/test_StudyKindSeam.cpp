@@ -163,6 +163,15 @@ TEST(StudyKindSeam, AToyKindRegisteredInOneLineRunsEndToEndThroughTheHarness) {
   ASSERT_EQ(before.size(), 7u);
   ASSERT_EQ(run_scene_study(options), 0);
   EXPECT_EQ(lines_of(dir / "out" / "results.jsonl"), before);
+
+  // A line of a run the scene does not have (an older id) is kept, ignored and reported.
+  std::ofstream(dir / "out" / "results.jsonl", std::ios::app) << R"({"id": "hex/L0/R0"})"
+                                                              << "\n";
+  testing::internal::CaptureStderr();
+  ASSERT_EQ(run_scene_study(options), 0);
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("holds 1 finished run(s) this scene does not have"), std::string::npos) << err;
+  EXPECT_EQ(lines_of(dir / "out" / "results.jsonl").size(), 8u);
   fs::remove_all(dir);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
@@ -36,6 +37,20 @@ std::map<std::string, json> finished_lines(const RunPlan& plan, const std::files
         line != lines.end() && !readable(i, line->second))
       lines.erase(line);  // not a record of this version: it runs again
   return lines;
+}
+
+/// Says on stderr how many finished lines belong to no run of the plan (written by another
+/// version, or before the scene was edited): they are kept in the file and ignored.
+void note_orphans(const RunPlan& plan, const std::map<std::string, json>& lines,
+                  const std::filesystem::path& jsonl) {
+  if (!Ensemble::coordinator()) return;
+  const std::set<std::string> ids(plan.ids.begin(), plan.ids.end());
+  std::size_t orphans = 0;
+  for (const auto& [id, line] : lines) orphans += ids.count(id) == 0;
+  if (orphans > 0)
+    std::cerr << "vorodg: note: " << jsonl.string() << " holds " << orphans
+              << " finished run(s) this scene does not have (another version, or an edited "
+                 "scene); they are ignored\n";
 }
 
 /// One task per block with runs still to do, holding those runs, at the block's place.
@@ -82,6 +97,7 @@ std::map<std::string, json> run_resumable(const RunPlan& plan, const std::filesy
                                           const ReadableLine& readable) {
   make_folder(jsonl.parent_path());
   std::map<std::string, json> done = finished_lines(plan, jsonl, readable);
+  note_orphans(plan, done, jsonl);
   std::vector<bool> finished;
   for (const std::string& id : plan.ids) finished.push_back(done.count(id) > 0);
   const std::vector<Task> tasks = pending_tasks(plan, finished);

@@ -120,9 +120,10 @@ TEST(StudyKinds, EveryNumberHasAFiniteRange) {
       const bool numeric = k.is_number() || (k.type.front() == '[' && k.name != "domain" &&
                                              k.name != "second_block.domain");
       if (!numeric) continue;
-      ASSERT_TRUE(k.lower && k.upper) << kind.name << ": " << k.name << " has no finite range";
-      EXPECT_TRUE(std::isfinite(*k.lower) && std::isfinite(*k.upper)) << k.name;
-      EXPECT_LT(*k.lower, *k.upper) << k.name;
+      const Bounds& b = k.bounds;
+      ASSERT_TRUE(b.lower && b.upper) << kind.name << ": " << k.name << " has no finite range";
+      EXPECT_TRUE(std::isfinite(*b.lower) && std::isfinite(*b.upper)) << k.name;
+      EXPECT_LT(*b.lower, *b.upper) << k.name;
       // The range holds its default wherever the default is a number.
       try {
         EXPECT_FALSE(check_key(k, key_default(k))) << kind.name << ": " << k.name;

@@ -9,22 +9,15 @@ namespace vorodg {
 
 SceneKey key(std::string name, std::string type, std::string fallback, std::string range,
              std::string doc) {
-  return {std::move(name),
-          std::move(type),
-          std::move(fallback),
-          std::move(range),
-          std::move(doc),
-          {},
-          {},
-          false,
-          false};
+  return {std::move(name),  std::move(type), std::move(fallback),
+          std::move(range), std::move(doc),  Bounds{}};
 }
 
 SceneKey bounded(std::string name, std::string type, std::string fallback, std::string range,
                  std::string doc, double lower, bool lower_open, double upper, bool upper_open) {
   SceneKey k =
       key(std::move(name), std::move(type), std::move(fallback), std::move(range), std::move(doc));
-  k.lower = lower, k.lower_open = lower_open, k.upper = upper, k.upper_open = upper_open;
+  k.bounds = {lower, upper, lower_open, upper_open};
   return k;
 }
 
@@ -45,9 +38,7 @@ double key_default(const SceneKey& key) {
 }
 
 std::optional<std::string> check_key(const SceneKey& key, double value) {
-  const bool low = key.lower && (key.lower_open ? !(value > *key.lower) : !(value >= *key.lower));
-  const bool high = key.upper && (key.upper_open ? !(value < *key.upper) : !(value <= *key.upper));
-  if (std::isfinite(value) && !low && !high) return std::nullopt;
+  if (key.bounds.admits(value)) return std::nullopt;
   return "expected " + key.range + ", found " + fmt(value);
 }
 

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/util/Bounds.hpp"
+
 namespace vorodg {
 
 struct SceneKey {
@@ -20,8 +22,7 @@ struct SceneKey {
   std::string range;     // what is accepted, in words (messages and docs)
   std::string doc;
   // The bounds the reader enforces on a number (none: not a number, or checked by the reader).
-  std::optional<double> lower, upper;
-  bool lower_open = false, upper_open = false;
+  Bounds bounds;
   bool is_number() const { return type == "number" || type == "integer"; }
 };
 

@@ -1,5 +1,6 @@
 #include "verification/solve/SettingsSchema.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -63,13 +64,13 @@ SettingSpec choice(std::string key, std::string flag, std::string doc, SettingSc
 // Every number has a finite upper bound too: a generous limit of what the physics allows, so
 // that a value that would overflow a run is refused as bad input (docs/robustness.md).
 SettingRange above(double lower, double upper) {
-  return {lower, upper, true, false, {}};
+  return {{lower, upper, true, false}, {}};
 }
 SettingRange at_least(double lower, double upper) {
-  return {lower, upper, false, false, {}};
+  return {{lower, upper, false, false}, {}};
 }
 SettingRange one_of(std::vector<int> allowed) {
-  return {std::nullopt, std::nullopt, true, true, allowed};
+  return {{}, allowed};
 }
 
 /// The DG penalty's scaling: unset means the formulation's default (dg/DgElasticity.hpp).
@@ -258,14 +259,12 @@ std::string default_text(const SettingSpec& spec) {
 std::string requirement_text(const SettingSpec& spec) {
   if (spec.kind == SettingKind::choice) return choice_list(*spec.choices);
   if (spec.kind == SettingKind::flag) return "true or false";
-  const SettingRange& r = spec.range;
-  if (!r.allowed.empty()) {
+  const std::vector<int>& allowed = spec.range.allowed;
+  const Bounds& r = spec.range.bounds;
+  if (!allowed.empty()) {
     std::string out;
-    for (std::size_t i = 0; i < r.allowed.size(); ++i)
-      out += (i == 0                      ? ""
-              : i + 1 == r.allowed.size() ? " or "
-                                          : ", ") +
-             std::to_string(r.allowed[i]);
+    for (std::size_t i = 0; i < allowed.size(); ++i)
+      out += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + std::to_string(allowed[i]);
     return out;
   }
   const std::string lo = r.lower ? bound_text(*r.lower) + (r.lower_open ? " < " : " <= ") : "";
@@ -278,14 +277,9 @@ std::string requirement_text(const SettingSpec& spec) {
 
 std::optional<std::string> check_value(const SettingSpec& spec, double value) {
   const SettingRange& r = spec.range;
-  bool ok = std::isfinite(value);
-  if (ok && !r.allowed.empty()) {
-    ok = false;
-    for (int allowed : r.allowed) ok = ok || value == allowed;
-  }
-  if (ok && r.lower) ok = r.lower_open ? value > *r.lower : value >= *r.lower;
-  if (ok && r.upper) ok = r.upper_open ? value < *r.upper : value <= *r.upper;
-  if (ok) return std::nullopt;
+  const bool listed =
+      r.allowed.empty() || std::find(r.allowed.begin(), r.allowed.end(), value) != r.allowed.end();
+  if (listed && r.bounds.admits(value)) return std::nullopt;
   return exact_text(value) + ": expected " + requirement_text(spec) + " (" + spec.doc + ")";
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/util/Bounds.hpp"
 #include "core/util/Format.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/solve/SolveRun.hpp"
@@ -21,8 +22,7 @@ enum class SettingKind { number, integer, flag, choice };
 enum class SettingScope { top, material, formulation, outputs, command_line };
 
 struct SettingRange {
-  std::optional<double> lower, upper;  // numbers and integers
-  bool lower_open = true, upper_open = true;
+  Bounds bounds;             // numbers and integers
   std::vector<int> allowed;  // integers: the only values allowed (empty: any in the range)
 };
 

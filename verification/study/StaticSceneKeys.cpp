@@ -25,12 +25,11 @@ std::vector<SceneKey> schema_keys(SettingScope scope, const std::string& prefix)
     keys.push_back(key(prefix + spec.key, list ? "number or list" : type.at(spec.kind),
                        default_text(spec), requirement_text(spec), spec.doc));
     SceneKey& k = keys.back();
-    k.lower = spec.range.lower, k.upper = spec.range.upper;
-    k.lower_open = spec.range.lower_open, k.upper_open = spec.range.upper_open;
+    k.bounds = spec.range.bounds;
     if (!spec.range.allowed.empty()) {  // a list of values: its least and greatest
       const auto [lo, hi] =
           std::minmax_element(spec.range.allowed.begin(), spec.range.allowed.end());
-      k.lower = *lo, k.upper = *hi, k.lower_open = k.upper_open = false;
+      k.bounds = {*lo, *hi, false, false};
     }
   }
   return keys;

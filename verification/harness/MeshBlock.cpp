@@ -103,8 +103,7 @@ void read_symmetry(SceneObject& m, SceneMesh& mesh, const std::string& family) {
     m.fail_value("symmetric", "only the rcp family is mirrored, found family " + family);
 }
 
-}  // namespace
-
+/// The families a scene can name: those generated, and meshes read from files.
 const Choices& scene_family_choices() {
   static const Choices choices = [] {
     Choices out = generated_family_choices();
@@ -113,6 +112,8 @@ const Choices& scene_family_choices() {
   }();
   return choices;
 }
+
+}  // namespace
 
 SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
   SceneMesh mesh;

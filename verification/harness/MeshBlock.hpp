@@ -33,9 +33,6 @@ struct SceneMesh {
   MeshSpec spec(const Rectangle& domain, int level, std::uint64_t realization_seed) const;
 };
 
-/// The families a scene can name: those generated, and meshes read from files.
-const Choices& scene_family_choices();
-
 /// Reads one mesh block (files are read and validated now); throws InputError naming the key.
 SceneMesh read_mesh(SceneObject& m, const Rectangle& domain);
 

@@ -1,10 +1,8 @@
 #include "verification/study/StudyRunner.hpp"
 
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <set>
-#include <tuple>
 
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
@@ -127,17 +125,18 @@ SolveSettings run_settings(const Scene& scene, const StudyRun& run) {
 
 namespace {
 
-/// The harness's plan: one block per (mesh, level, realization), its runs in expand_runs order.
+/// The harness's plan: one block per (mesh, level, realization), whose runs expand_runs lists
+/// together.
 RunPlan study_plan(const Scene& scene, const std::vector<StudyRun>& runs) {
   RunPlan plan;
-  std::map<std::tuple<int, int, int>, std::size_t> block_of;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     plan.ids.push_back(runs[i].id);
     plan.costs.push_back(expected_cost(scene, runs[i]));
-    const std::tuple key{runs[i].mesh, runs[i].level, runs[i].realization};
-    const auto [block, added] = block_of.emplace(key, plan.blocks.size());
-    if (added) plan.blocks.emplace_back();
-    plan.blocks[block->second].push_back(i);
+    const bool same_block = i > 0 && runs[i].mesh == runs[i - 1].mesh &&
+                            runs[i].level == runs[i - 1].level &&
+                            runs[i].realization == runs[i - 1].realization;
+    if (!same_block) plan.blocks.emplace_back();
+    plan.blocks.back().push_back(i);
   }
   return plan;
 }

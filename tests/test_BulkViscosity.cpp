@@ -19,8 +19,8 @@
 #include "core/util/Errors.hpp"
 #include "dynamics/BulkViscosity.hpp"
 #include "dynamics/GlobalTimeStep.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
 #include "support/DynamicsModel.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 
 namespace vorodg {
@@ -286,7 +286,7 @@ BarMeasures run_bar(const std::string& text) {
   const DynamicsScene scene = parse_dynamics_scene(text, "test scene");
   ExplicitSimulation model = dynamics_simulation(scene, ensemble_runs(scene.meshes).front());
   CentralDifference& run = *model.run;
-  DynamicsProbe probe(scene, model.bodies, run);
+  DynamicsProbe probe(scene, *scene.problem, model.bodies, run, scene.output_every);
   std::vector<int> middle;
   for (int i = 0; i < run.dofs().num_nodes(); ++i)
     if (std::abs(run.node_position(i).x() - 0.5) < 0.01) middle.push_back(i);

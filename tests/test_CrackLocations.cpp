@@ -2,7 +2,7 @@
 // column (0.3 x 1.83 m, struck at its bottom-left corner): every edge is placed by its midpoint,
 // within one width (0.3 m) of the corner, in the middle third of the height, or elsewhere; the
 // fractions add to one; no broken edge gives NaN.
-#include "verification/kinds/dynamics/CrackLocations.hpp"
+#include "dynamics/problems/CrackLocations.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "core/util/Errors.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
 #include "verification/harness/EnsembleRun.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 
 namespace vorodg {
@@ -31,7 +31,7 @@ struct Bar {
 Bar run_bar(const std::string& text) {
   const DynamicsScene scene = parse_dynamics_scene(text, "test scene");
   ExplicitSimulation model = dynamics_simulation(scene, ensemble_runs(scene.meshes).front());
-  DynamicsProbe probe(scene, model.bodies, *model.run);
+  DynamicsProbe probe(scene, *scene.problem, model.bodies, *model.run, scene.output_every);
   for (long s = 0; s < model.steps; ++s) {
     model.run->step();
     probe.observe();

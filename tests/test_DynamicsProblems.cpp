@@ -1,4 +1,4 @@
-// The dynamics problems as classes (verification/kinds/dynamics/problems/):
+// The dynamics problems as classes (dynamics/problems/):
 //   - every problem of the registry reads from a scene that names it, with its defaults: the body's
 //     domain, velocity and spin, gravity, and a run length (an end time or a step count);
 //   - a key that only another problem reads is refused with one line naming the key and the
@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <string>
 
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Errors.hpp"
-#include "verification/harness/SceneKeyReader.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 #include "verification/solve/SettingsSchema.hpp"
@@ -49,8 +49,8 @@ TEST(DynamicsProblems, EachReadsWithItsDefaults) {
     EXPECT_TRUE((s.end > 0.0) != (s.steps > 0))
         << p->name() << ": end " << s.end << ", steps " << s.steps;
     EXPECT_EQ(static_cast<bool>(s.wall), p->hits_wall()) << p->name();
-    EXPECT_EQ(s.external_momentum(), p->hits_wall() || p->prescribes_velocity() ||
-                                         p->default_gravity() != Eigen::Vector2d::Zero())
+    EXPECT_EQ(external_momentum(s, *s.problem), p->hits_wall() || p->prescribes_velocity() ||
+                                                    p->default_gravity() != Eigen::Vector2d::Zero())
         << p->name();
   }
 }

@@ -12,9 +12,9 @@
 
 #include "core/mesh/MeshValidator.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
 #include "fracture/FractureProblem.hpp"
-#include "verification/harness/SceneObject.hpp"
 #include "verification/study/Scene.hpp"
 
 namespace vorodg {

@@ -11,9 +11,9 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "verification/api/SceneStudy.hpp"
 #include "verification/harness/EnsembleStudy.hpp"
-#include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/harness/StudyFiles.hpp"
 #include "verification/harness/StudyKind.hpp"

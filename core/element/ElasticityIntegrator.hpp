@@ -59,6 +59,11 @@ class ElasticityIntegrator {
     }
   };
   MeanStrainOperators all_mean_strain_operators(int threads) const;
+  /// Cell c's mean stress from its kept mean strain operator: D times the operator times u.
+  Eigen::Vector3d mean_stress(const MeanStrainOperators& kept, int c,
+                              const Eigen::VectorXd& u) const {
+    return material_.D() * (kept.block(c) * u);
+  }
 
  private:
   void add_vem_stabilization(int c, Eigen::MatrixXd& K) const;

@@ -23,4 +23,10 @@ IsotropicElasticity::IsotropicElasticity(double E, double nu, PlaneModel model)
   }
 }
 
+double IsotropicElasticity::von_mises(const Eigen::Vector3d& s) const {
+  const double szz = model_ == PlaneModel::strain ? nu_ * (s[0] + s[1]) : 0.0;
+  const double a = s[0] - s[1], b = s[1] - szz, c = szz - s[0];
+  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3 * s[2] * s[2]);
+}
+
 }  // namespace vorodg

@@ -20,6 +20,9 @@ class IsotropicElasticity {
   double mu() const { return E_ / (2 * (1 + nu_)); }
   /// In-plane constitutive matrix.
   const Eigen::Matrix3d& D() const { return D_; }
+  /// Von Mises stress of an in-plane stress state (sxx, syy, sxy); in plane strain sigma_zz =
+  /// nu (sxx + syy) enters it, in plane stress it is zero.
+  double von_mises(const Eigen::Vector3d& stress) const;
 
  private:
   double E_, nu_;

@@ -11,7 +11,7 @@ std::vector<VtuField> cell_fields(const PolygonMesh& mesh, const SolveResult& r,
   for (int c = 0; c < mesh.num_cells(); ++c) {
     const Eigen::Vector3d& s = r.cell_mean_stress[c];
     stress.values.insert(stress.values.end(), {s[0], s[1], s[2]});
-    vm.values.push_back(von_mises(s, exact.material()));
+    vm.values.push_back(exact.material().von_mises(s));
     id.values.push_back(c);
     double largest = 0.0;
     for (int e : mesh.cell_edges(c)) largest = std::max(largest, r.edge_gaps[e]);

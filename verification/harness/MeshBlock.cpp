@@ -5,10 +5,10 @@
 
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshValidator.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "verification/harness/PhysicsKeys.hpp"
-#include "verification/harness/SceneKeyReader.hpp"
 
 namespace vorodg {
 namespace {

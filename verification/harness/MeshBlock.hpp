@@ -10,7 +10,7 @@
 
 #include "core/geometry/Rectangle.hpp"
 #include "core/meshgen/MeshFamily.hpp"
-#include "verification/harness/SceneObject.hpp"
+#include "core/schema/SceneObject.hpp"
 #include "verification/model/Choices.hpp"
 
 namespace vorodg {

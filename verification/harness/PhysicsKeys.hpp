@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/harness/SceneKeys.hpp"
+#include "core/schema/SceneKeys.hpp"
 
 namespace vorodg {
 

@@ -1,7 +1,7 @@
 #include "verification/harness/SceneVariants.hpp"
 
+#include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
-#include "verification/harness/SceneObject.hpp"
 
 namespace vorodg {
 

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
-#include "verification/harness/SceneObject.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 

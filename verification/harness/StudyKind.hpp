@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/harness/SceneKeys.hpp"
+#include "core/schema/SceneKeys.hpp"
 #include "verification/model/Choices.hpp"
 
 namespace vorodg {

@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Stopwatch.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
-#include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/harness/StudyKind.hpp"
 

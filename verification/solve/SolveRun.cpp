@@ -43,12 +43,6 @@ void require_converged(const SolveResult& r, const SolveSettings& settings) {
                        "); nothing written: raise --max-iter, or --kp");
 }
 
-double von_mises(const Eigen::Vector3d& s, const IsotropicElasticity& material) {
-  const double szz = material.model() == PlaneModel::strain ? material.nu() * (s[0] + s[1]) : 0.0;
-  const double a = s[0] - s[1], b = s[1] - szz, c = szz - s[0];
-  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3 * s[2] * s[2]);
-}
-
 namespace {
 
 /// Runs the formulation and fills the displacement part of the result.
@@ -232,22 +226,23 @@ Eigen::VectorXd cell_dofs(const PolygonMesh& mesh, const SolveResult& result, in
   return result.cell_dof_values.segment(result.cell_offsets[c], 2 * mesh.cell_size(c));
 }
 
-/// The cell mean stresses, D times the mean strain operator times the cell's DOFs.
-void measure_mean_stresses(const PolygonMesh& mesh, const ExactSolution& problem,
+/// The cell mean stresses (ElasticityIntegrator::mean_stress).
+void measure_mean_stresses(const ElasticityIntegrator& integrator,
                            const ElasticityIntegrator::MeanStrainOperators& mean_strain,
                            SolveResult& result) {
+  const PolygonMesh& mesh = integrator.table().mesh();
   result.cell_mean_stress.resize(mesh.num_cells());
   for (int c = 0; c < mesh.num_cells(); ++c)
-    result.cell_mean_stress[c] =
-        problem.material().D() * (mean_strain.block(c) * cell_dofs(mesh, result, c));
+    result.cell_mean_stress[c] = integrator.mean_stress(mean_strain, c, cell_dofs(mesh, result, c));
 }
 
 /// The errors against the exact solution, on the error rule's own points.
-void measure_errors(const ElementTable& table, const ExactSolution& problem,
+void measure_errors(const ElasticityIntegrator& integrator, const ExactSolution& problem,
                     const SolveSettings& settings,
                     const ElasticityIntegrator::MeanStrainOperators& mean_strain,
                     SolveResult& result) {
   Stopwatch clock;
+  const ElementTable& table = integrator.table();
   const PolygonMesh& mesh = table.mesh();
   CellDilatationMean dilatation_mean;
   if (settings.mean_dilation)
@@ -263,7 +258,7 @@ void measure_errors(const ElementTable& table, const ExactSolution& problem,
   result.energy_error = errors.energy_error;
   result.cell_l2_density = errors.cell_l2_density;
   result.cell_energy_density = errors.cell_energy_density;
-  measure_mean_stresses(mesh, problem, mean_strain, result);  // timed with the errors as before
+  measure_mean_stresses(integrator, mean_strain, result);  // timed with the errors as before
   result.seconds["error"] = clock.seconds();
 }
 
@@ -286,9 +281,9 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
       cg ? solve_cg(integrator, *problem, settings, analyses, own_table.get(), result)
          : solve_dg(integrator, *problem, settings, analyses, result);
   if (settings.errors)
-    measure_errors(table, *problem, settings, mean_strain, result);
+    measure_errors(integrator, *problem, settings, mean_strain, result);
   else
-    measure_mean_stresses(mesh, *problem, mean_strain, result);
+    measure_mean_stresses(integrator, mean_strain, result);
   return result;
 }
 

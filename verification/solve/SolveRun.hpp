@@ -90,7 +90,4 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
 /// NumericalError saying so (how it stopped, after how many iterations) unless it converged.
 void require_converged(const SolveResult& result, const SolveSettings& settings);
 
-/// Von Mises stress of an in-plane stress state (sigma_zz = nu (sxx + syy) in plane strain).
-double von_mises(const Eigen::Vector3d& stress, const IsotropicElasticity& material);
-
 }  // namespace vorodg

@@ -5,9 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "core/schema/SceneKeyReader.hpp"
+#include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
-#include "verification/harness/SceneKeyReader.hpp"
-#include "verification/harness/SceneObject.hpp"
 #include "verification/study/Scene.hpp"
 #include "verification/study/StaticSceneKeys.hpp"
 

@@ -8,7 +8,7 @@
 // bounds of these keys from here; docs/scenes.md lists the same rows.
 #include <string>
 
-#include "verification/harness/SceneKeys.hpp"
+#include "core/schema/SceneKeys.hpp"
 
 namespace vorodg {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "verification/harness/SceneKeyReader.hpp"
-#include "verification/harness/SceneObject.hpp"
+#include "core/schema/SceneKeyReader.hpp"
+#include "core/schema/SceneObject.hpp"
 #include "verification/study/StaticSceneKeys.hpp"
 
 namespace vorodg {

@@ -4,12 +4,12 @@
 #include <stdexcept>
 
 #include "core/element/ElementTable.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Format.hpp"
 #include "dynamics/contact/ContactLaws.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 #include "fracture/SofteningLaws.hpp"
 #include "verification/harness/PhysicsKeys.hpp"
-#include "verification/harness/SceneKeyReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/solve/SettingsSchema.hpp"
 
@@ -31,6 +31,14 @@ std::string contact_default(const std::function<std::string(const ContactDefault
   return per_problem_text([&](const DynamicsProblem& p) { return text(p.default_contact()); });
 }
 
+/// The keys only one problem reads, each problem's rows in the problems' order.
+std::vector<SceneKey> problem_keys() {
+  std::vector<SceneKey> keys;
+  for (const std::unique_ptr<DynamicsProblem>& p : dynamics_problems())
+    append_keys(keys, p->keys());
+  return keys;
+}
+
 /// The study, the problem and the body it is about.
 std::vector<SceneKey> study_keys() {
   return {
@@ -42,39 +50,10 @@ std::vector<SceneKey> study_keys() {
       key("domain", "[x0, y0, x1, y1]",
           per_problem_text([](const DynamicsProblem& p) { return rect_text(p.default_domain()); }),
           kRectangleRange, "the (first) body, in m"),
-      bounded("strain_rate", "number", "1e5", "0 < strain_rate <= 1e9",
-              "strip-expansion: the initial velocity is strain_rate (x - x_mid) along x, 1/s", 0.0,
-              true, 1e9),
   };
 }
 
-/// The notched beam's keys (three-point-bend, fragmentation): the quasi-static fracture study's
-/// where it has them (notch_depth, cracking.mode), and the load point's speed.
-std::vector<SceneKey> bend_keys() {
-  return {
-      bounded(
-          "notch_depth", "number", "0", "0 <= notch_depth <= 1e6, below the height",
-          "three-point-bend: a traction-free slit at the crack line (mid-span) from the bottom, "
-          "m (as in a fracture study)",
-          0.0, false, 1e6),
-      key("cracking.mode", "string", "restricted", "pre-inserted or restricted",
-          "three-point-bend: cohesive faces on every edge of the crack line above the notch from "
-          "t = 0 (the law from zero opening), or only the crack line's edges checked by the "
-          "insertion criterion (docs/dynamics.md, \"Three-point bend\")"),
-      bounded("rate.speed", "number", "0.1", "0 < speed <= 1e4",
-              "three-point-bend: the load point's downward speed, m/s", 0.0, true, 1e4),
-      bounded("rate.rise", "number", "5 H / c_d", "0 < rise <= 1e3",
-              "three-point-bend: the speed rises as (1 - cos) / 2 from 0 over this time, s (H the "
-              "beam's depth, c_d the dilatational speed)",
-              0.0, true, 1e3),
-      bounded("rate.max_displacement", "number", "span / 1000", "0 < max_displacement <= 1e3",
-              "three-point-bend: the load point's travel that ends the run where time.end and "
-              "time.steps are not given, m",
-              0.0, true, 1e3),
-  };
-}
-
-/// How the bodies are thrown, and the wave bar's input.
+/// How the (first) body is thrown.
 std::vector<SceneKey> body_keys() {
   return {
       bounded("initial_velocity", "[vx, vy]", per_problem_text([](const DynamicsProblem& p) {
@@ -89,24 +68,6 @@ std::vector<SceneKey> body_keys() {
               "spin of the (first) body about its centre of mass at t = 0, rad/s (small strain: "
               "the spin is the linearized rotation)",
               -1e6, false, 1e6),
-      key("second_block.domain", "[x0, y0, x1, y1]", "domain moved right by 1.05 times its width",
-          "x0 < x1, y0 < y1, apart from domain",
-          "two-blocks: the second body (family file: the same size as domain)"),
-      bounded("second_block.initial_velocity", "[vx, vy]", "minus initial_velocity",
-              "each |component| <= 1e4", "two-blocks: the second body's velocity, m/s", -1e4, false,
-              1e4),
-      bounded("second_block.angular_velocity", "number", "0", "|omega| <= 1e6",
-              "two-blocks: the second body's spin, rad/s", -1e6, false, 1e6),
-      key("sides", "string", "free", "free or rollers",
-          "wave-bar: the long sides free (uniaxial stress, bar speed) or on rollers (uniaxial "
-          "strain, dilatational speed)"),
-      bounded("pulse.amplitude", "number", "1", "0 < |amplitude| <= 1e4",
-              "wave-bar: the peak of the velocity prescribed on the left end, m/s", -1e4, false,
-              1e4),
-      bounded("pulse.duration", "number", "0.9 L / c", "0 < duration <= 1e3",
-              "wave-bar: (1 - cos) rise, hold and (1 + cos) fall, a third each, s (c the expected "
-              "speed, L the bar's length)",
-              0.0, true, 1e3),
   };
 }
 
@@ -152,7 +113,7 @@ std::vector<SceneKey> bulk_viscosity_keys() {
   };
 }
 
-/// The kinematics, gravity, and the column's and the projectile's keys.
+/// The kinematics and gravity.
 std::vector<SceneKey> impact_keys() {
   return {
       key("interfaces", "string", "insertion", "insertion or dg (dg: with small kinematics)",
@@ -171,19 +132,6 @@ std::vector<SceneKey> impact_keys() {
                 return point_text(p.default_gravity());
               }),
               "each |component| <= 1e6", "body force per unit mass, m/s^2", -1e6, false, 1e6),
-      bounded("obliquity", "number", "45", "0 <= obliquity < 90",
-              "column-impact: the tilt of the plane the column falls on, degrees (the plane passes "
-              "through the column's bottom-left corner, its normal [sin, cos] of the tilt)",
-              0.0, false, 90.0, true),
-      bounded("projectile.speed", "number", "20", "0 < speed <= 1e4",
-              "projectile-impact: the rigid projectile's constant downward speed, m/s", 0.0, true,
-              1e4),
-      bounded("projectile.width", "number", "0.1", "0 < width <= 1e6",
-              "projectile-impact: the width of its flat nose, m (the top vertices under it move "
-              "down at its speed from t = 0, free to slide)",
-              0.0, true, 1e6),
-      bounded("projectile.position", "number", "the middle of the top side", "nose within the top",
-              "projectile-impact: x of the nose's centre, m", -1e6, false, 1e6),
   };
 }
 
@@ -294,7 +242,6 @@ std::vector<SceneKey> output_keys() {
 std::vector<SceneKey> make_keys() {
   std::vector<SceneKey> keys = naming_keys();
   append_keys(keys, study_keys());
-  append_keys(keys, bend_keys());
   append_keys(keys, cohesive_keys({"3e8", "100", "10", "0",
                                    "dynamics needs an initially elastic law; its springs share "
                                    "the stable step",
@@ -323,6 +270,7 @@ std::vector<SceneKey> make_keys() {
           "exact gradient of the faces' energy, but it made column runs unstable "
           "(docs/impact.md, \"The ablation\")"));
   append_keys(keys, body_keys());
+  append_keys(keys, problem_keys());
   append_keys(keys, elastic_keys("2e11", "0.3"));
   append_keys(keys, material_keys());
   append_keys(keys, bulk_viscosity_keys());

@@ -5,7 +5,7 @@
 // computed by the reader. docs/scenes.md lists the same table (a test checks every key).
 #include <string>
 
-#include "verification/harness/SceneKeys.hpp"
+#include "core/schema/SceneKeys.hpp"
 
 namespace vorodg {
 

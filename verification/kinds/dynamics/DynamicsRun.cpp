@@ -11,6 +11,7 @@
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Stopwatch.hpp"
+#include "dynamics/CellStress.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/ContactForces.hpp"
 #include "dynamics/ExplicitSimulation.hpp"
@@ -53,24 +54,9 @@ void write_frame(const fs::path& file, const PolygonMesh& mesh, const CentralDif
       velocity.values.push_back(run.velocity()[2 * i + d]);
     }
   }
-  const IsotropicElasticity& m = integrator.material();
-  const CorotationalFrames* frames = run.force().frames();
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    Eigen::VectorXd uc(2 * mesh.cell_size(c));
-    CorotationalFrames::Turn turn;  // none for small rotations
-    if (frames)
-      turn = frames->local_displacements(c, run.dofs(), run.displacement(), uc);
-    else
-      for (int k = 0; k < mesh.cell_size(c); ++k)
-        uc.segment<2>(2 * k) = run.displacement().segment<2>(2 * run.dofs().node(c, k));
-    const Eigen::Vector3d s = CorotationalFrames::global_stress(
-        turn, (stiffness.empty() ? 1.0 : stiffness[c]) * (m.D() * (strain.block(c) * uc)));
-    const double sz = m.model() == PlaneModel::strain ? m.nu() * (s[0] + s[1]) : 0.0;
+  for (const Eigen::Vector3d& s : cell_mean_stresses(run, integrator, strain, stiffness)) {
     stress.values.insert(stress.values.end(), {s[0], s[1], s[2]});
-    von_mises.values.push_back(
-        std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - sz) * (s[1] - sz) +
-                         (sz - s[0]) * (sz - s[0])) +
-                  3.0 * s[2] * s[2]));
+    von_mises.values.push_back(integrator.material().von_mises(s));
   }
   cell_fields.insert(cell_fields.begin(), {stress, von_mises});
   // The frame's domain is the deformed bounding box (the bodies have moved off the reference one).
@@ -217,7 +203,7 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
   r.contact_stiffness = model.contact_stiffness;
   r.dofs = model.run->dofs().num_dofs();
   RunOutputs outputs(model, scene, out, id.id());
-  DynamicsProbe probe(scene, model.bodies, *model.run);
+  DynamicsProbe probe(scene, *scene.problem, model.bodies, *model.run, scene.output_every);
   if (model.cracks) probe.watch_cracks(model.cracks->cohesive());
   const double setup = clock.seconds();
   try {

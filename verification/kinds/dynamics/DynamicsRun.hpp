@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "dynamics/ExplicitSimulation.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsMesh.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 
 namespace vorodg {

@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "dynamics/contact/ContactLaws.hpp"
-#include "verification/harness/SceneObject.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
@@ -247,11 +247,6 @@ const std::string& DynamicsScene::setting(const std::string& key) const {
   for (const auto& [name, value] : settings)
     if (name == key) return value;
   throw std::out_of_range("dynamics scene: no setting " + key);
-}
-
-bool DynamicsScene::external_momentum() const {
-  return wall || problem->prescribes_velocity() || damping != 0.0 ||
-         gravity != Eigen::Vector2d::Zero();
 }
 
 DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source, bool force) {

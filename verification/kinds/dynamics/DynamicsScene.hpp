@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "dynamics/ExplicitParameters.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 #include "verification/harness/MeshBlock.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 
@@ -45,9 +45,6 @@ struct DynamicsScene : ExplicitParameters {
 
   /// The value used for `key`, as echoed; throws std::out_of_range for a key not read.
   const std::string& setting(const std::string& key) const;
-  /// True where something outside the bodies changes their momentum: a wall, a prescribed
-  /// velocity, gravity or damping.
-  bool external_momentum() const;
 };
 
 /// Reads a dynamics scene from its JSON text; throws InputError naming the key. `force` allows

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "verification/harness/SceneKeyReader.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 

@@ -1,14 +1,14 @@
 #pragma once
-// What a fragmentation run leaves in its record and files once it ends: the fragments (count,
-// largest, single cells, the largest one's turn), the law's energies and balance, where the
-// broken edges are, and the files fragments/<run>.csv (each fragment's mass, cells, centre and
-// velocity) and cracks/<run>.csv (the step at which each edge cracked).
+// What a fragmentation run leaves in its record and files once it ends: its fragmentation
+// measures (dynamics/problems/FragmentMeasures) and the files fragments/<run>.csv (each
+// fragment's mass, cells, centre and velocity) and cracks/<run>.csv (the step at which each edge
+// cracked).
 #include <filesystem>
 #include <string>
 
 #include "dynamics/Fragmentation.hpp"
 #include "dynamics/LumpedMass.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
 #include "verification/kinds/dynamics/DynamicsScene.hpp"
 
 namespace vorodg {

@@ -1,6 +1,6 @@
 #pragma once
 // The key table of a fracture scene (FractureKeys.cpp; docs/scenes.md "Fracture studies").
-#include "verification/harness/SceneKeys.hpp"
+#include "core/schema/SceneKeys.hpp"
 
 namespace vorodg {
 

@@ -4,10 +4,10 @@
 #include <stdexcept>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "fracture/SofteningLaws.hpp"
-#include "verification/harness/SceneKeyReader.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/kinds/fracture/FractureKeys.hpp"
 #include "verification/model/Choices.hpp"

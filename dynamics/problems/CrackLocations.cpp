@@ -1,4 +1,4 @@
-#include "verification/kinds/dynamics/CrackLocations.hpp"
+#include "dynamics/problems/CrackLocations.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/geometry/Rectangle.hpp"
-#include "verification/harness/SceneKeys.hpp"
-#include "verification/harness/SceneObject.hpp"
+#include "core/schema/SceneKeys.hpp"
+#include "core/schema/SceneObject.hpp"
 
 namespace vorodg {
 

@@ -1,17 +1,25 @@
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Format.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
-#include "verification/kinds/dynamics/DynamicsScene.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
 
 namespace vorodg {
 
-DynamicsWall DynamicsProblem::default_wall(const DynamicsScene& scene) const {
-  const DynamicsBody& body = scene.bodies[0];
+std::vector<std::string> DynamicsProblem::own_keys() const {
+  std::vector<std::string> top;
+  for (const SceneKey& k : keys()) {
+    const std::string name = k.name.substr(0, k.name.find('.'));
+    if (std::find(top.begin(), top.end(), name) == top.end()) top.push_back(name);
+  }
+  return top;
+}
+
+DynamicsWall DynamicsProblem::default_wall(const ExplicitParameters& physics) const {
+  const DynamicsBody& body = physics.bodies[0];
   // Thrown at the wall: the plane touches the body's leading point and faces its velocity.
   const Point ahead = hits_wall() ? Point(body.velocity.normalized()) : Point(1, 0);
   const Point centre = 0.5 * (body.domain.lo() + body.domain.hi());
@@ -24,10 +32,15 @@ MeshSpec DynamicsProblem::mesh_spec(const MeshSpec& spec) const {
   return spec;
 }
 
-std::unique_ptr<ProblemProbe> DynamicsProblem::probe(const DynamicsScene&, const BodiesMesh&,
-                                                     const CentralDifference&,
+std::unique_ptr<ProblemProbe> DynamicsProblem::probe(const ExplicitParameters&, const BodiesMesh&,
+                                                     const CentralDifference&, int,
                                                      DynamicsMeasures&) const {
   return nullptr;
+}
+
+bool external_momentum(const ExplicitParameters& physics, const DynamicsProblem& problem) {
+  return physics.wall || problem.prescribes_velocity() || physics.damping != 0.0 ||
+         physics.gravity != Eigen::Vector2d::Zero();
 }
 
 std::vector<ReportColumn> DynamicsProblem::report_columns() const {

@@ -1,7 +1,7 @@
 // The registry of dynamics problems, in the order docs and messages list them. A problem is a
 // DynamicsProblem in its own file of this folder, made by make_<name>(); adding one is its file
 // and one line here.
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 #define VORODG_DYNAMICS_PROBLEMS(PROBLEM) \
   PROBLEM(wave_bar)                       \

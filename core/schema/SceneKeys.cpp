@@ -1,4 +1,4 @@
-#include "verification/harness/SceneKeys.hpp"
+#include "core/schema/SceneKeys.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -10,13 +10,13 @@
 #include <numbers>
 
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
+#include "dynamics/problems/BendCurve.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 #include "fracture/FractureProblem.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/BendCurve.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -44,13 +44,36 @@ double travel(double t, double speed, double rise) {
 class ThreePointBend : public DynamicsProblem {
  public:
   std::string name() const override { return "three-point-bend"; }
-  std::vector<std::string> own_keys() const override { return {"notch_depth", "cracking", "rate"}; }
+  /// The quasi-static fracture study's keys where it has them (notch_depth, cracking.mode),
+  /// and the load point's speed.
+  std::vector<SceneKey> keys() const override {
+    return {
+        bounded("notch_depth", "number", "0", "0 <= notch_depth <= 1e6, below the height",
+                "three-point-bend: a traction-free slit at the crack line (mid-span) from the "
+                "bottom, m (as in a fracture study)",
+                0.0, false, 1e6),
+        key("cracking.mode", "string", "restricted", "pre-inserted or restricted",
+            "three-point-bend: cohesive faces on every edge of the crack line above the notch "
+            "from t = 0 (the law from zero opening), or only the crack line's edges checked by "
+            "the insertion criterion (docs/dynamics.md, \"Three-point bend\")"),
+        bounded("rate.speed", "number", "0.1", "0 < speed <= 1e4",
+                "three-point-bend: the load point's downward speed, m/s", 0.0, true, 1e4),
+        bounded("rate.rise", "number", "5 H / c_d", "0 < rise <= 1e3",
+                "three-point-bend: the speed rises as (1 - cos) / 2 from 0 over this time, s (H "
+                "the beam's depth, c_d the dilatational speed)",
+                0.0, true, 1e3),
+        bounded("rate.max_displacement", "number", "span / 1000", "0 < max_displacement <= 1e3",
+                "three-point-bend: the load point's travel that ends the run where time.end and "
+                "time.steps are not given, m",
+                0.0, true, 1e3),
+    };
+  }
   bool needs_fragmentation() const override { return true; }
   bool uses_thickness() const override { return true; }
   bool prescribes_velocity() const override { return true; }
   Rectangle default_domain() const override { return Rectangle(0.0, 0.0, 2.0, 0.2); }
 
-  void read(DynamicsSceneReader& r, DynamicsScene& s) override {
+  void read(SceneKeyReader& r, ExplicitParameters& s) override {
     const Rectangle& d = s.bodies[0].domain;
     geometry_.problem = fracture_problem("three-point-bend");
     geometry_.domain = d;
@@ -73,7 +96,7 @@ class ThreePointBend : public DynamicsProblem {
   }
 
   /// Until the load point has travelled rate.max_displacement.
-  void default_length(DynamicsScene& s) const override {
+  void default_length(ExplicitParameters& s) const override {
     if (travel_ >= travel(rise_, speed_, rise_)) {
       s.end = travel_ / speed_ + 0.5 * rise_;
       return;
@@ -115,12 +138,12 @@ class ThreePointBend : public DynamicsProblem {
           {{c.vertex}, c.component, [=](double t) { return c.reference * speed * ramp(t, rise); }});
   }
 
-  std::unique_ptr<ProblemProbe> probe(const DynamicsScene& scene, const BodiesMesh& bodies,
-                                      const CentralDifference& run,
+  std::unique_ptr<ProblemProbe> probe(const ExplicitParameters&, const BodiesMesh& bodies,
+                                      const CentralDifference& run, int output_every,
                                       DynamicsMeasures& m) const override {
     const FractureSetup s = setup(bodies.mesh);
     const BendGauges gauges{s.load_vertex, s.mouth.vertices.front(), geometry_.line_x, thickness_,
-                            scene.output_every};
+                            output_every};
     return std::make_unique<BendCurve>(bodies.mesh, run, gauges, m);
   }
 

@@ -4,11 +4,10 @@
 #include <cmath>
 
 #include "core/mesh/PolygonMesh.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
-#include "verification/solve/SettingsSchema.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -16,11 +15,24 @@ namespace {
 class ProjectileImpact : public DynamicsProblem {
  public:
   std::string name() const override { return "projectile-impact"; }
-  std::vector<std::string> own_keys() const override { return {"projectile"}; }
+  std::vector<SceneKey> keys() const override {
+    return {
+        bounded("projectile.speed", "number", "20", "0 < speed <= 1e4",
+                "projectile-impact: the rigid projectile's constant downward speed, m/s", 0.0, true,
+                1e4),
+        bounded("projectile.width", "number", "0.1", "0 < width <= 1e6",
+                "projectile-impact: the width of its flat nose, m (the top vertices under it "
+                "move down at its speed from t = 0, free to slide)",
+                0.0, true, 1e6),
+        bounded("projectile.position", "number", "the middle of the top side",
+                "nose within the top", "projectile-impact: x of the nose's centre, m", -1e6, false,
+                1e6),
+    };
+  }
   Rectangle default_domain() const override { return Rectangle(0, 0, 4.0, 0.3); }
   bool prescribes_velocity() const override { return true; }
 
-  void read(DynamicsSceneReader& r, DynamicsScene& s) override {
+  void read(SceneKeyReader& r, ExplicitParameters& s) override {
     const Rectangle& beam = s.bodies[0].domain;
     SceneObject o = r.object("projectile");
     speed_ = r.number(o, "projectile.speed");
@@ -34,7 +46,7 @@ class ProjectileImpact : public DynamicsProblem {
     o.finish();
   }
 
-  void default_length(DynamicsScene& s) const override { s.end = 3e-3; }
+  void default_length(ExplicitParameters& s) const override { s.end = 3e-3; }
   std::string default_length_doc() const override { return "3e-3"; }
 
   /// The top vertices under the nose move down at the projectile's speed.

@@ -5,11 +5,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Format.hpp"
-#include "verification/kinds/dynamics/DynamicsMesh.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -21,16 +20,16 @@ constexpr double kGravity = 9.81;
 /// from the struck corner than half the column's length, in the reference configuration.
 class RearStrikeProbe : public ProblemProbe {
  public:
-  RearStrikeProbe(const DynamicsScene& scene, const BodiesMesh& bodies,
+  RearStrikeProbe(const ExplicitParameters& physics, const BodiesMesh& bodies,
                   const CentralDifference& run)
       : run_(run) {
-    const Rectangle& column = scene.bodies[0].domain;
+    const Rectangle& column = physics.bodies[0].domain;
     const double half = 0.5 * std::max(column.width(), column.height());
     const PolygonMesh& mesh = bodies.mesh;
     const std::vector<int>& loops = mesh.cell_vertex_list();
     rear_.assign(loops.size(), 0);
     for (std::size_t p = 0; p < loops.size(); ++p)
-      rear_[p] = (mesh.vertex(loops[p]) - scene.wall->point).norm() > half;
+      rear_[p] = (mesh.vertex(loops[p]) - physics.wall->point).norm() > half;
   }
 
   /// Only the pairs contact pushed can carry a plane force: a scan of every rear pair each step
@@ -53,26 +52,32 @@ class RearStrikeProbe : public ProblemProbe {
 class ColumnImpact : public DynamicsProblem {
  public:
   std::string name() const override { return "column-impact"; }
-  std::vector<std::string> own_keys() const override { return {"obliquity"}; }
+  std::vector<SceneKey> keys() const override {
+    return {bounded("obliquity", "number", "45", "0 <= obliquity < 90",
+                    "column-impact: the tilt of the plane the column falls on, degrees (the plane "
+                    "passes through the column's bottom-left corner, its normal [sin, cos] of the "
+                    "tilt)",
+                    0.0, false, 90.0, true)};
+  }
   Rectangle default_domain() const override { return Rectangle(0, 0, 0.3, 1.83); }
   Eigen::Vector2d default_velocity() const override { return {0.0, -7.6}; }
   Eigen::Vector2d default_gravity() const override { return {0.0, -kGravity}; }
   bool hits_wall() const override { return true; }
 
-  void read(DynamicsSceneReader& r, DynamicsScene&) override {
+  void read(SceneKeyReader& r, ExplicitParameters&) override {
     obliquity_ = r.number(r.top(), "obliquity");
   }
 
   /// The plane through the column's bottom-left corner, its normal [sin, cos] of the tilt.
-  DynamicsWall default_wall(const DynamicsScene& s) const override {
+  DynamicsWall default_wall(const ExplicitParameters& s) const override {
     const double theta = obliquity_ * std::numbers::pi / 180.0;
     return {s.bodies[0].domain.lo(), Point(std::sin(theta), std::cos(theta))};
   }
 
-  std::unique_ptr<ProblemProbe> probe(const DynamicsScene& scene, const BodiesMesh& bodies,
-                                      const CentralDifference& run,
+  std::unique_ptr<ProblemProbe> probe(const ExplicitParameters& physics, const BodiesMesh& bodies,
+                                      const CentralDifference& run, int,
                                       DynamicsMeasures&) const override {
-    return std::make_unique<RearStrikeProbe>(scene, bodies, run);
+    return std::make_unique<RearStrikeProbe>(physics, bodies, run);
   }
 
   std::vector<ReportColumn> report_columns() const override {
@@ -92,7 +97,7 @@ class ColumnImpact : public DynamicsProblem {
   /// each against its absence.
   ContactDefaults default_contact() const override { return {true, 0.1, 0.75, 0.75, 0.06, 1.2}; }
 
-  void default_length(DynamicsScene& s) const override { s.end = 0.3; }
+  void default_length(ExplicitParameters& s) const override { s.end = 0.3; }
   std::string default_length_doc() const override { return "0.3"; }
 
  private:

@@ -17,7 +17,7 @@
 #include "core/mesh/PolygonMesh.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/CohesiveForces.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 

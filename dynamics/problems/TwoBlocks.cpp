@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "core/schema/SceneKeyReader.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -14,12 +14,23 @@ namespace {
 class TwoBlocks : public DynamicsProblem {
  public:
   std::string name() const override { return "two-blocks"; }
-  std::vector<std::string> own_keys() const override { return {"second_block"}; }
+  std::vector<SceneKey> keys() const override {
+    return {
+        key("second_block.domain", "[x0, y0, x1, y1]", "domain moved right by 1.05 times its width",
+            "x0 < x1, y0 < y1, apart from domain",
+            "two-blocks: the second body (family file: the same size as domain)"),
+        bounded("second_block.initial_velocity", "[vx, vy]", "minus initial_velocity",
+                "each |component| <= 1e4", "two-blocks: the second body's velocity, m/s", -1e4,
+                false, 1e4),
+        bounded("second_block.angular_velocity", "number", "0", "|omega| <= 1e6",
+                "two-blocks: the second body's spin, rad/s", -1e6, false, 1e6),
+    };
+  }
   Rectangle default_domain() const override { return Rectangle(0, 0, 0.2, 0.1); }
   Eigen::Vector2d default_velocity() const override { return {1.0, 0.0}; }
 
   /// The second block: by default the first moved right by 1.05 of its width, thrown back.
-  void read(DynamicsSceneReader& r, DynamicsScene& s) override {
+  void read(SceneKeyReader& r, ExplicitParameters& s) override {
     const DynamicsBody& a = s.bodies[0];
     SceneObject o = r.object("second_block");
     const double shift = 1.05 * a.domain.width();
@@ -38,7 +49,7 @@ class TwoBlocks : public DynamicsProblem {
     s.bodies.push_back(b);
   }
 
-  void default_length(DynamicsScene& s) const override {
+  void default_length(ExplicitParameters& s) const override {
     const DynamicsBody &a = s.bodies[0], &b = s.bodies[1];
     const Rectangle &d = a.domain, &e = b.domain;
     const double gap = std::hypot(std::max({0.0, e.x0() - d.x1(), d.x0() - e.x1()}),
@@ -51,8 +62,8 @@ class TwoBlocks : public DynamicsProblem {
     return "the flight to contact plus 3 x 2 L / c_bar (L: the longer side of either block)";
   }
 
-  std::unique_ptr<ProblemProbe> probe(const DynamicsScene& s, const BodiesMesh&,
-                                      const CentralDifference&,
+  std::unique_ptr<ProblemProbe> probe(const ExplicitParameters& s, const BodiesMesh&,
+                                      const CentralDifference&, int,
                                       DynamicsMeasures& m) const override {
     if (s.wall) return nullptr;  // a wall's estimate stands
     const Point relative = s.bodies[0].velocity - s.bodies[1].velocity;

@@ -1,11 +1,12 @@
 #pragma once
-// One problem of the dynamics and fragmentation study kinds, as a class (the dynamics side's
-// counterpart of the static ExactSolution): what it throws, strikes or stretches. Each problem
-// owns its bodies' defaults, the keys only it reads (a wave bar's pulse, a projectile, a second
+// One problem of explicit dynamics, as a class (the dynamics side's counterpart of the static
+// ExactSolution): what it throws, strikes or stretches. Each problem owns its bodies' defaults,
+// the scene keys only it reads with their rows (a wave bar's pulse, a projectile, a second
 // block), its boundary conditions and initial velocities beyond the rigid motion, the length of
-// a run when the scene gives none, the measures of its own (a wave's arrival) and the columns
-// report.md shows for it. The scene, the model, the probe and the report ask the problem; none
-// of them names one. The problems are listed once, in DynamicsProblems.cpp.
+// a run when the scene gives none, the measures of its own (a wave's arrival) and the columns a
+// report shows for it. It works on the plain parameters of a run (ExplicitParameters): a study's
+// scene, the probe and the report ask the problem, and none of them names one. The problems are
+// listed once, in DynamicsProblems.cpp.
 #include <Eigen/Core>
 #include <array>
 #include <filesystem>
@@ -16,15 +17,16 @@
 #include <vector>
 
 #include "core/geometry/Rectangle.hpp"
+#include "core/schema/SceneKeys.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/ExplicitLoading.hpp"
+#include "dynamics/ExplicitParameters.hpp"
 
 namespace vorodg {
 
 struct BodiesMesh;
 struct DynamicsMeasures;
-struct DynamicsScene;
-class DynamicsSceneReader;
+class SceneKeyReader;
 class PolygonMesh;
 struct MeshSpec;
 
@@ -65,8 +67,11 @@ class DynamicsProblem : public ExplicitLoading {
   virtual std::string name() const = 0;
 
   // ---- the scene's keys
-  /// Top-level keys only this problem reads: every other problem refuses them.
-  virtual std::vector<std::string> own_keys() const { return {}; }
+  /// The rows of the keys only this problem reads (name, type, default, range, doc), spliced
+  /// into the key table of the kinds that run it.
+  virtual std::vector<SceneKey> keys() const { return {}; }
+  /// The top-level names of keys(): every other problem refuses them.
+  std::vector<std::string> own_keys() const;
   /// True where the problem exists only with crack insertion (a fragmentation study).
   virtual bool needs_fragmentation() const { return false; }
   /// The (first) body where `domain`, `initial_velocity` and `angular_velocity` are not given.
@@ -75,15 +80,15 @@ class DynamicsProblem : public ExplicitLoading {
   virtual double default_angular_velocity() const { return 0.0; }
   virtual Eigen::Vector2d default_gravity() const { return Eigen::Vector2d::Zero(); }
   /// Reads the problem's own keys, once the material and the first body are read (a second
-  /// body goes into scene.bodies).
-  virtual void read(DynamicsSceneReader& reader, DynamicsScene& scene) = 0;
+  /// body goes into physics.bodies).
+  virtual void read(SceneKeyReader& reader, ExplicitParameters& physics) = 0;
   /// True where the body is thrown at a fixed rigid plane: the wall is required.
   virtual bool hits_wall() const { return false; }
   /// The wall where the scene's `wall` leaves its point or normal out: by default the plane
   /// through the body's leading point, facing its velocity.
-  virtual DynamicsWall default_wall(const DynamicsScene& scene) const;
+  virtual DynamicsWall default_wall(const ExplicitParameters& physics) const;
   /// The run's length where the scene gives neither time.end nor time.steps: sets one of them.
-  virtual void default_length(DynamicsScene& scene) const = 0;
+  virtual void default_length(ExplicitParameters& physics) const = 0;
   /// That default in words, for the key table.
   virtual std::string default_length_doc() const = 0;
   virtual ContactDefaults default_contact() const { return {}; }
@@ -107,12 +112,18 @@ class DynamicsProblem : public ExplicitLoading {
   // ---- what is measured and reported
   /// True where the bodies keep their angular momentum unless something outside acts.
   virtual bool measures_angular_momentum() const { return false; }
-  /// The measures of its own, with their theory set in `m` at t = 0 (nullptr: none).
-  virtual std::unique_ptr<ProblemProbe> probe(const DynamicsScene&, const BodiesMesh&,
-                                              const CentralDifference&, DynamicsMeasures& m) const;
+  /// The measures of its own, with their theory set in `m` at t = 0 (nullptr: none); a curve
+  /// it draws takes a point every `output_every` steps.
+  virtual std::unique_ptr<ProblemProbe> probe(const ExplicitParameters&, const BodiesMesh&,
+                                              const CentralDifference&, int output_every,
+                                              DynamicsMeasures& m) const;
   /// The columns of report.md after the common ones; by default the contact's.
   virtual std::vector<ReportColumn> report_columns() const;
 };
+
+/// True where something outside the bodies changes their momentum: a wall, a prescribed
+/// velocity, gravity or damping.
+bool external_momentum(const ExplicitParameters& physics, const DynamicsProblem& problem);
 
 /// A new problem of each kind, in the order docs and messages list them.
 std::vector<std::unique_ptr<DynamicsProblem>> dynamics_problems();

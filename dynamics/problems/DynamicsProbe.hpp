@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/BodiesMesh.hpp"
 #include "dynamics/CentralDifference.hpp"
 #include "dynamics/CorotationalFrames.hpp"
-#include "verification/kinds/dynamics/DynamicsMesh.hpp"
-#include "verification/kinds/dynamics/DynamicsScene.hpp"
+#include "dynamics/ExplicitParameters.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 
@@ -79,8 +80,10 @@ constexpr double kLargeRotation = 0.1;
 
 class DynamicsProbe {
  public:
-  /// `run` must be initialized; it and the mesh outlive the probe.
-  DynamicsProbe(const DynamicsScene& scene, const BodiesMesh& bodies, const CentralDifference& run);
+  /// `run` must be initialized; it, the parameters, the problem and the mesh outlive the probe.
+  /// Rotations are sampled (and a problem's curves drawn) every `output_every` steps.
+  DynamicsProbe(const ExplicitParameters& physics, const DynamicsProblem& problem,
+                const BodiesMesh& bodies, const CentralDifference& run, int output_every);
 
   /// After every step: books the step's record and contact reports.
   void observe();
@@ -97,7 +100,7 @@ class DynamicsProbe {
  private:
   void observe_contact();
 
-  const DynamicsScene& scene_;
+  const ExplicitParameters& physics_;
   const BodiesMesh& bodies_;
   const CentralDifference& run_;
   DynamicsMeasures m_;

@@ -3,8 +3,8 @@
 // extent along the wall's normal.
 #include <algorithm>
 
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "core/schema/SceneKeyReader.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -14,10 +14,10 @@ class WallImpact : public DynamicsProblem {
   std::string name() const override { return "wall-impact"; }
   Rectangle default_domain() const override { return Rectangle(0, 0, 0.4, 0.1); }
   Eigen::Vector2d default_velocity() const override { return {1.0, 0.0}; }
-  void read(DynamicsSceneReader&, DynamicsScene&) override {}
+  void read(SceneKeyReader&, ExplicitParameters&) override {}
   bool hits_wall() const override { return true; }
 
-  void default_length(DynamicsScene& s) const override {
+  void default_length(ExplicitParameters& s) const override {
     const Rectangle& body = s.bodies[0].domain;
     const Point n = s.wall->normal;
     double gap = 1e300;  // from the leading corner to the wall, at the approach speed

@@ -1,11 +1,11 @@
-#include "verification/kinds/dynamics/problems/BendCurve.hpp"
+#include "dynamics/problems/BendCurve.hpp"
 
 #include <cmath>
 #include <set>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Format.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,8 +1,8 @@
 // free-body: a block thrown and spun with nothing acting on it. Measured: the drift of its
 // momentum and of its angular momentum, which the central-difference map keeps to round-off.
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "core/schema/SceneKeyReader.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -13,8 +13,8 @@ class FreeBody : public DynamicsProblem {
   Rectangle default_domain() const override { return Rectangle(0, 0, 1, 1); }
   Eigen::Vector2d default_velocity() const override { return {1.0, 0.5}; }
   double default_angular_velocity() const override { return 1.0; }
-  void read(DynamicsSceneReader&, DynamicsScene&) override {}
-  void default_length(DynamicsScene& s) const override { s.steps = 1000; }
+  void read(SceneKeyReader&, ExplicitParameters&) override {}
+  void default_length(ExplicitParameters& s) const override { s.steps = 1000; }
   std::string default_length_doc() const override { return "1000 steps"; }
   bool measures_angular_momentum() const override { return true; }
 

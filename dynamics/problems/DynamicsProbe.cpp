@@ -1,32 +1,33 @@
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
 
 #include <algorithm>
 
 namespace vorodg {
 
-DynamicsProbe::DynamicsProbe(const DynamicsScene& scene, const BodiesMesh& bodies,
-                             const CentralDifference& run)
-    : scene_(scene), bodies_(bodies), run_(run), start_(run.record()), frames_(bodies.mesh) {
+DynamicsProbe::DynamicsProbe(const ExplicitParameters& physics, const DynamicsProblem& problem,
+                             const BodiesMesh& bodies, const CentralDifference& run,
+                             int output_every)
+    : physics_(physics), bodies_(bodies), run_(run), start_(run.record()), frames_(bodies.mesh) {
   const Eigen::VectorXd& mass = run.node_masses();
   total_mass_ = mass.sum();
   for (int i = 0; i < mass.size(); ++i)
     momentum_scale_ += mass[i] * run.velocity().segment<2>(2 * i).norm();
   // Only what no wall, prescribed velocity, gravity or damping acts on keeps its momentum.
-  conserves_momentum_ = !scene.external_momentum();
-  conserves_angular_momentum_ = conserves_momentum_ && scene.problem->measures_angular_momentum();
-  if (scene.corotational) m_.max_rotation = NAN;
+  conserves_momentum_ = !external_momentum(physics, problem);
+  conserves_angular_momentum_ = conserves_momentum_ && problem.measures_angular_momentum();
+  if (physics.corotational) m_.max_rotation = NAN;
   if (conserves_momentum_) m_.momentum_drift = 0.0;
   if (conserves_angular_momentum_) m_.angular_momentum_drift = 0.0;
-  if (scene.wall) {
-    const Point n = scene.wall->normal;
+  if (physics.wall) {
+    const Point n = physics.wall->normal;
     m_.impact_velocity = -start_.momentum.dot(n) / total_mass_;
     m_.rebound_estimate = m_.impact_velocity;
-    m_.contact_time_estimate = 2.0 * extent(scene.bodies[0].domain, n) / scene.bar_speed();
+    m_.contact_time_estimate = 2.0 * extent(physics.bodies[0].domain, n) / physics.bar_speed();
     m_.peak_wall_force = 0.0;
-    m_.peak_wall_force_estimate = scene.density * scene.bar_speed() * m_.impact_velocity *
-                                  extent(scene.bodies[0].domain, Point(-n.y(), n.x()));
+    m_.peak_wall_force_estimate = physics.density * physics.bar_speed() * m_.impact_velocity *
+                                  extent(physics.bodies[0].domain, Point(-n.y(), n.x()));
   }
-  problem_ = scene.problem->probe(scene, bodies, run, m_);
+  problem_ = problem.probe(physics, bodies, run, output_every, m_);
 }
 
 void DynamicsProbe::observe_contact() {
@@ -38,7 +39,8 @@ void DynamicsProbe::observe_contact() {
   m_.max_penetration_over_h = m_.max_penetration / bodies_.h_avg;
   m_.tunnelled_contacts += a.new_tunnels;
   m_.late_contacts += a.new_late;
-  if (scene_.wall) m_.peak_wall_force = std::max(m_.peak_wall_force, contact->plane_force().norm());
+  if (physics_.wall)
+    m_.peak_wall_force = std::max(m_.peak_wall_force, contact->plane_force().norm());
   in_contact_ = a.contacts + b.contacts > 0;
   if (!in_contact_) return;
   if (std::isnan(m_.contact_start)) m_.contact_start = run_.time();
@@ -47,7 +49,7 @@ void DynamicsProbe::observe_contact() {
 }
 
 void DynamicsProbe::observe_rotation() {
-  if (scene_.corotational) return;  // the cells' frames turn with them: no limit to watch
+  if (physics_.corotational) return;  // the cells' frames turn with them: no limit to watch
   const double largest = frames_.largest_mean_rotation(run_.dofs(), run_.displacement());
   m_.max_rotation = std::max(m_.max_rotation, largest);
   if (std::isnan(m_.large_rotation_time) && largest > kLargeRotation)
@@ -84,8 +86,8 @@ const DynamicsMeasures& DynamicsProbe::finish() {
   m_.contact_ended = !in_contact_;
   // A contact from the step it was first seen to the last: within a step of its duration.
   if (m_.contact_steps > 0) m_.contact_time = m_.contact_end - m_.contact_start + run_.dt();
-  if (scene_.wall)
-    m_.rebound_velocity = run_.record().momentum.dot(scene_.wall->normal) / total_mass_;
+  if (physics_.wall)
+    m_.rebound_velocity = run_.record().momentum.dot(physics_.wall->normal) / total_mass_;
   if (const ContactForces* contact = run_.contact()) {
     m_.contact_friction_dissipated = contact->friction_dissipated();
     m_.contact_velocity_dissipated = contact->velocity_penalty_dissipated();

@@ -6,10 +6,10 @@
 #include <numbers>
 
 #include "core/mesh/PolygonMesh.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Format.hpp"
-#include "verification/kinds/dynamics/DynamicsProbe.hpp"
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "dynamics/problems/DynamicsProbe.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -72,11 +72,24 @@ class ArrivalProbe : public ProblemProbe {
 class WaveBar : public DynamicsProblem {
  public:
   std::string name() const override { return "wave-bar"; }
-  std::vector<std::string> own_keys() const override { return {"sides", "pulse"}; }
+  std::vector<SceneKey> keys() const override {
+    return {
+        key("sides", "string", "free", "free or rollers",
+            "wave-bar: the long sides free (uniaxial stress, bar speed) or on rollers (uniaxial "
+            "strain, dilatational speed)"),
+        bounded("pulse.amplitude", "number", "1", "0 < |amplitude| <= 1e4",
+                "wave-bar: the peak of the velocity prescribed on the left end, m/s", -1e4, false,
+                1e4),
+        bounded("pulse.duration", "number", "0.9 L / c", "0 < duration <= 1e3",
+                "wave-bar: (1 - cos) rise, hold and (1 + cos) fall, a third each, s (c the "
+                "expected speed, L the bar's length)",
+                0.0, true, 1e3),
+    };
+  }
   Rectangle default_domain() const override { return Rectangle(0, 0, 1, 0.05); }
   bool prescribes_velocity() const override { return true; }
 
-  void read(DynamicsSceneReader& r, DynamicsScene& s) override {
+  void read(SceneKeyReader& r, ExplicitParameters& s) override {
     rollers_ = r.word(r.top(), "sides", " free rollers ") == "rollers";
     // The speed the pulse should travel at.
     speed_ = rollers_ ? s.dilatational_speed() : s.bar_speed();
@@ -88,7 +101,7 @@ class WaveBar : public DynamicsProblem {
     o.finish();
   }
 
-  void default_length(DynamicsScene& s) const override { s.end = 2.0 * length_ / speed_; }
+  void default_length(ExplicitParameters& s) const override { s.end = 2.0 * length_ / speed_; }
   std::string default_length_doc() const override { return "2 L / c"; }
 
   void add_boundaries(const PolygonMesh& mesh, CentralDifference& run) const override {
@@ -100,8 +113,8 @@ class WaveBar : public DynamicsProblem {
         run.add_velocity_boundary({mesh.side_vertices(side), 1, [](double) { return 0.0; }});
   }
 
-  std::unique_ptr<ProblemProbe> probe(const DynamicsScene&, const BodiesMesh& bodies,
-                                      const CentralDifference& run,
+  std::unique_ptr<ProblemProbe> probe(const ExplicitParameters&, const BodiesMesh& bodies,
+                                      const CentralDifference& run, int,
                                       DynamicsMeasures& m) const override {
     m.wave_speed_theory = speed_;
     m.arrival_theory = length_ / speed_;

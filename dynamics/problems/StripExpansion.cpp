@@ -1,8 +1,8 @@
 // strip-expansion (fragmentation only): a thin strip stretched about its middle at a uniform
 // strain rate, which cracks open into fragments (docs/fragmentation.md): the count and the sizes
 // against the 1D theories.
-#include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
-#include "verification/kinds/dynamics/problems/DynamicsProblem.hpp"
+#include "core/schema/SceneKeyReader.hpp"
+#include "dynamics/problems/DynamicsProblem.hpp"
 
 namespace vorodg {
 namespace {
@@ -10,15 +10,19 @@ namespace {
 class StripExpansion : public DynamicsProblem {
  public:
   std::string name() const override { return "strip-expansion"; }
-  std::vector<std::string> own_keys() const override { return {"strain_rate"}; }
+  std::vector<SceneKey> keys() const override {
+    return {bounded("strain_rate", "number", "1e5", "0 < strain_rate <= 1e9",
+                    "strip-expansion: the initial velocity is strain_rate (x - x_mid) along x, 1/s",
+                    0.0, true, 1e9)};
+  }
   bool needs_fragmentation() const override { return true; }
   Rectangle default_domain() const override { return Rectangle(0, 0, 0.002, 1e-5); }
 
-  void read(DynamicsSceneReader& r, DynamicsScene&) override {
+  void read(SceneKeyReader& r, ExplicitParameters&) override {
     strain_rate_ = r.number(r.top(), "strain_rate");
   }
 
-  void default_length(DynamicsScene& s) const override {
+  void default_length(ExplicitParameters& s) const override {
     s.end = 20.0 * s.criterion.tensile_cutoff / (s.E * strain_rate_);
   }
   std::string default_length_doc() const override {

@@ -1,4 +1,4 @@
-#include "verification/harness/SceneObject.hpp"
+#include "core/schema/SceneObject.hpp"
 
 #include <algorithm>
 #include <cstdint>

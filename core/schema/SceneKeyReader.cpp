@@ -1,4 +1,4 @@
-#include "verification/harness/SceneKeyReader.hpp"
+#include "core/schema/SceneKeyReader.hpp"
 
 #include <cmath>
 #include <iostream>

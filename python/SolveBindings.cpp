@@ -65,8 +65,8 @@ void set_keyword(SettingOptions& o, const std::string& name, const py::handle& v
       return;
     }
     case SettingKind::choice:
-      if (!py::isinstance<py::str>(value)) refuse(requirement_text(spec));
-      o.choice_texts[spec.key] = value.cast<std::string>();
+      if (!py::isinstance<py::str>(value)) refuse(spec.range);
+      o.choice_texts[spec.name] = value.cast<std::string>();
       return;
   }
 }
@@ -126,8 +126,8 @@ py::list schema() {
                 : spec.kind == SettingKind::integer ? "integer"
                 : spec.kind == SettingKind::flag    ? "flag"
                                                     : "choice";
-    s["default"] = default_text(spec);
-    s["range"] = requirement_text(spec);
+    s["default"] = spec.fallback;
+    s["range"] = spec.range;
     s["doc"] = spec.doc;
     out.append(s);
   }

@@ -23,8 +23,7 @@ SolveSettings checked_settings(const SettingOptions& o) {
 std::map<std::string, std::string> resolved_defaults(const SolveSettings& settings) {
   std::map<std::string, std::string> out;
   for (const SettingSpec& spec : setting_specs())
-    if (!spec.default_doc.empty() && !spec.flag.empty())
-      out[spec.flag] = value_text(spec, settings);
+    if (spec.default_depends && !spec.flag.empty()) out[spec.flag] = value_text(spec, settings);
   return out;
 }
 

@@ -18,20 +18,20 @@ void add_setting_options(CLI::App& cmd, SettingOptions& o) {
       case SettingKind::number:
         cmd.add_option_function<double>(
                spec.flag, [p, &o](const double& v) { p->set(o.settings, v); }, spec.doc)
-            ->default_str(default_text(spec))
+            ->default_str(spec.fallback)
             ->check(finite_number());
         break;
       case SettingKind::integer:
         cmd.add_option_function<int>(
                spec.flag, [p, &o](const int& v) { p->set(o.settings, v); },
-               spec.doc + " (" + requirement_text(spec) + ")")
-            ->default_str(default_text(spec));
+               spec.doc + " (" + spec.range + ")")
+            ->default_str(spec.fallback);
         break;
       case SettingKind::choice:
         cmd.add_option_function<std::string>(
-               spec.flag, [p, &o](const std::string& v) { o.choice_texts[p->key] = v; },
+               spec.flag, [p, &o](const std::string& v) { o.choice_texts[p->name] = v; },
                spec.doc + ": " + choice_alternatives(*spec.choices))
-            ->default_str(default_text(spec));
+            ->default_str(spec.fallback);
         break;
     }
   }

@@ -13,16 +13,39 @@ namespace {
 
 using S = SolveSettings;
 
+/// A setting's numeric range as its builders state it: bounds, or the only values allowed.
+struct SettingRange {
+  Bounds bounds;
+  std::vector<int> allowed;
+};
+
+/// The type a scene key of this kind has in the docs.
+std::string type_name(SettingKind kind) {
+  switch (kind) {
+    case SettingKind::number: return "number";
+    case SettingKind::integer: return "integer";
+    case SettingKind::flag: return "bool";
+    case SettingKind::choice: return "string";
+  }
+  return "?";
+}
+
 SettingSpec base(std::string key, std::string flag, std::string symbol, std::string doc,
                  SettingKind kind, SettingScope scope, SettingRange range) {
   SettingSpec spec;
-  spec.key = std::move(key);
+  spec.name = std::move(key);
+  spec.type = type_name(kind);
   spec.flag = std::move(flag);
   spec.symbol = std::move(symbol);
   spec.doc = std::move(doc);
   spec.kind = kind;
   spec.scope = scope;
-  spec.range = std::move(range);
+  spec.bounds = range.bounds;
+  spec.allowed = std::move(range.allowed);
+  if (!spec.allowed.empty()) {  // a list of values: bounded by its least and greatest
+    const auto [lo, hi] = std::minmax_element(spec.allowed.begin(), spec.allowed.end());
+    spec.bounds = {double(*lo), double(*hi), false, false};
+  }
   return spec;
 }
 
@@ -80,7 +103,8 @@ SettingSpec penalty_choice() {
       SettingScope::formulation, penalty_choices(),
       [](const S& s) { return penalty_name(penalty_scaling(dg_options(s))); },
       [](S& s, const std::string& v) { s.dg.penalty = parse_penalty(v); });
-  spec.default_doc = "auto for dg-sipg, else h-avg";
+  spec.fallback = "auto for dg-sipg, else h-avg";
+  spec.default_depends = true;
   return spec;
 }
 
@@ -91,7 +115,8 @@ SettingSpec traction_choice() {
       traction_choices(),
       [](const S& s) { return traction_name(interface_traction(dg_options(s))); },
       [](S& s, const std::string& v) { s.dg.traction = parse_traction(v); });
-  spec.default_doc = "fan for dg-sipg, else mean";
+  spec.fallback = "fan for dg-sipg, else mean";
+  spec.default_depends = true;
   return spec;
 }
 
@@ -103,7 +128,8 @@ SettingSpec kp_number() {
                           SettingKind::number, SettingScope::formulation, above(0, 1e16));
   spec.get = [](const S& s) { return penalty_multiplier(dg_options(s)); };
   spec.set = [](S& s, double v) { s.dg.kp = v; };
-  spec.default_doc = "1 with penalty auto, else 1000";
+  spec.fallback = "1 with penalty auto, else 1000";
+  spec.default_depends = true;
   return spec;
 }
 
@@ -217,50 +243,17 @@ std::vector<SettingSpec> run_specs() {
   };
 }
 
-std::vector<SettingSpec> make_specs() {
-  std::vector<SettingSpec> specs;
-  for (auto group : {problem_specs, element_specs, dg_specs, run_specs}) {
-    std::vector<SettingSpec> more = group();
-    specs.insert(specs.end(), more.begin(), more.end());
-  }
-  return specs;
-}
-
 std::string bound_text(double x) {
   return exact_text(x);
 }
 
-}  // namespace
-
-const std::vector<SettingSpec>& setting_specs() {
-  static const std::vector<SettingSpec> specs = make_specs();
-  return specs;
-}
-
-const SettingSpec& setting_spec(const std::string& key) {
-  for (const SettingSpec& spec : setting_specs())
-    if (spec.key == key) return spec;
-  throw std::out_of_range("no setting '" + key + "'");
-}
-
-std::string value_text(const SettingSpec& spec, const SolveSettings& settings) {
-  switch (spec.kind) {
-    case SettingKind::choice: return spec.get_text(settings);
-    case SettingKind::flag: return spec.get(settings) != 0.0 ? "true" : "false";
-    default: return exact_text(spec.get(settings));
-  }
-}
-
-std::string default_text(const SettingSpec& spec) {
-  if (!spec.default_doc.empty()) return spec.default_doc;
-  return value_text(spec, SolveSettings{});
-}
-
+/// What the range requires, for messages and docs: "-1 < nu < 0.5", "1, 3 or 6", "stress or
+/// strain".
 std::string requirement_text(const SettingSpec& spec) {
   if (spec.kind == SettingKind::choice) return choice_list(*spec.choices);
   if (spec.kind == SettingKind::flag) return "true or false";
-  const std::vector<int>& allowed = spec.range.allowed;
-  const Bounds& r = spec.range.bounds;
+  const std::vector<int>& allowed = spec.allowed;
+  const Bounds& r = spec.bounds;
   if (!allowed.empty()) {
     std::string out;
     for (std::size_t i = 0; i < allowed.size(); ++i)
@@ -275,17 +268,52 @@ std::string requirement_text(const SettingSpec& spec) {
   return lo + spec.symbol + hi;
 }
 
+/// Every setting with its row complete: the range in words, and the default read from a
+/// default-constructed SolveSettings where it does not depend on the formulation.
+std::vector<SettingSpec> make_specs() {
+  std::vector<SettingSpec> specs;
+  for (auto group : {problem_specs, element_specs, dg_specs, run_specs}) {
+    std::vector<SettingSpec> more = group();
+    specs.insert(specs.end(), more.begin(), more.end());
+  }
+  for (SettingSpec& spec : specs) {
+    spec.range = requirement_text(spec);
+    if (!spec.default_depends) spec.fallback = value_text(spec, SolveSettings{});
+  }
+  return specs;
+}
+
+}  // namespace
+
+const std::vector<SettingSpec>& setting_specs() {
+  static const std::vector<SettingSpec> specs = make_specs();
+  return specs;
+}
+
+const SettingSpec& setting_spec(const std::string& key) {
+  for (const SettingSpec& spec : setting_specs())
+    if (spec.name == key) return spec;
+  throw std::out_of_range("no setting '" + key + "'");
+}
+
+std::string value_text(const SettingSpec& spec, const SolveSettings& settings) {
+  switch (spec.kind) {
+    case SettingKind::choice: return spec.get_text(settings);
+    case SettingKind::flag: return spec.get(settings) != 0.0 ? "true" : "false";
+    default: return exact_text(spec.get(settings));
+  }
+}
+
 std::optional<std::string> check_value(const SettingSpec& spec, double value) {
-  const SettingRange& r = spec.range;
-  const bool listed =
-      r.allowed.empty() || std::find(r.allowed.begin(), r.allowed.end(), value) != r.allowed.end();
-  if (listed && r.bounds.admits(value)) return std::nullopt;
-  return exact_text(value) + ": expected " + requirement_text(spec) + " (" + spec.doc + ")";
+  const std::vector<int>& a = spec.allowed;
+  const bool listed = a.empty() || std::find(a.begin(), a.end(), value) != a.end();
+  if (listed && spec.bounds.admits(value)) return std::nullopt;
+  return exact_text(value) + ": expected " + spec.range + " (" + spec.doc + ")";
 }
 
 std::optional<std::string> check_text(const SettingSpec& spec, const std::string& text) {
   if (is_choice(*spec.choices, text)) return std::nullopt;
-  return "'" + text + "': expected " + requirement_text(spec);
+  return "'" + text + "': expected " + spec.range;
 }
 
 std::optional<SettingError> check_settings(const SolveSettings& settings) {

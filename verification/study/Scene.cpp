@@ -26,16 +26,16 @@ using nlohmann::json;
 void read_setting(SceneObject& object, const SettingSpec& spec, SolveSettings& s) {
   switch (spec.kind) {
     case SettingKind::choice: {
-      const std::string text = object.text(spec.key, spec.get_text(s));
-      if (const auto message = check_text(spec, text)) object.fail_value(spec.key, *message);
+      const std::string text = object.text(spec.name, spec.get_text(s));
+      if (const auto message = check_text(spec, text)) object.fail_value(spec.name, *message);
       spec.set_text(s, text);
       break;
     }
-    case SettingKind::flag: spec.set(s, object.flag(spec.key, spec.get(s) != 0.0)); break;
+    case SettingKind::flag: spec.set(s, object.flag(spec.name, spec.get(s) != 0.0)); break;
     case SettingKind::integer:
-      spec.set(s, object.integer(spec.key, static_cast<int>(spec.get(s))));
+      spec.set(s, object.integer(spec.name, static_cast<int>(spec.get(s))));
       break;
-    case SettingKind::number: spec.set(s, object.number(spec.key, spec.get(s))); break;
+    case SettingKind::number: spec.set(s, object.number(spec.name, spec.get(s))); break;
   }
 }
 
@@ -43,9 +43,9 @@ void read_setting(SceneObject& object, const SettingSpec& spec, SolveSettings& s
 /// formulation is a list (one run per value) and read apart.
 void read_scope(SceneObject& object, SettingScope scope, SolveSettings& s) {
   for (const SettingSpec& spec : setting_specs())
-    if (spec.scope == scope && spec.key != "kp") read_setting(object, spec, s);
+    if (spec.scope == scope && spec.name != "kp") read_setting(object, spec, s);
   if (const auto error = check_settings(s); error && error->spec->scope == scope)
-    object.fail_value(error->spec->key, error->message);
+    object.fail_value(error->spec->name, error->message);
 }
 
 std::string default_label(const SolveSettings& s) {
@@ -75,11 +75,11 @@ SceneFormulation read_formulation(SceneObject& f, const SolveSettings& material)
   read_scope(f, SettingScope::formulation, s);
   const SettingSpec& kp = setting_spec("kp");
   if (s.formulation != "cg") {
-    out.kp = f.numbers(kp.key, {kp.get(s)});
+    out.kp = f.numbers(kp.name, {kp.get(s)});
     for (double k : out.kp)
-      if (const auto message = check_value(kp, k)) f.fail_value(kp.key, *message);
-  } else if (f.has(kp.key)) {
-    f.fail_value(kp.key, "only DG formulations take a penalty");
+      if (const auto message = check_value(kp, k)) f.fail_value(kp.name, *message);
+  } else if (f.has(kp.name)) {
+    f.fail_value(kp.name, "only DG formulations take a penalty");
   }
   out.label = f.text("label", default_label(s));
   f.finish();
@@ -92,15 +92,16 @@ SolveSettings read_material(SceneObject& top, Scene& scene) {
   SceneObject material(material_value, "material", top.source());
   SolveSettings s;
   const SettingSpec& nu = setting_spec("nu");
-  scene.nu = material.numbers(nu.key, {nu.get(s)});
+  scene.nu = material.numbers(nu.name, {nu.get(s)});
   for (double value : scene.nu) {
-    if (const auto message = check_value(nu, value)) material.fail_value(nu.key, *message);
+    if (const auto message = check_value(nu, value)) material.fail_value(nu.name, *message);
   }
   s.nu = scene.nu.front();
   for (const SettingSpec& spec : setting_specs())
-    if (spec.scope == SettingScope::material && spec.key != nu.key) read_setting(material, spec, s);
+    if (spec.scope == SettingScope::material && spec.name != nu.name)
+      read_setting(material, spec, s);
   if (const auto error = check_settings(s); error && error->spec->scope == SettingScope::material)
-    material.fail_value(error->spec->key, error->message);
+    material.fail_value(error->spec->name, error->message);
   material.finish();
   scene.E = s.E;
   scene.plane = s.plane;

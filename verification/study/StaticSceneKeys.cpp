@@ -1,8 +1,5 @@
 #include "verification/study/StaticSceneKeys.hpp"
 
-#include <algorithm>
-#include <map>
-
 #include "verification/harness/PhysicsKeys.hpp"
 #include "verification/harness/StudyKind.hpp"
 #include "verification/solve/SettingsSchema.hpp"
@@ -13,24 +10,14 @@ namespace {
 
 /// The settings schema's keys of one scope, as scene keys under `prefix`.
 std::vector<SceneKey> schema_keys(SettingScope scope, const std::string& prefix) {
-  static const std::map<SettingKind, std::string> type = {{SettingKind::number, "number"},
-                                                          {SettingKind::integer, "integer"},
-                                                          {SettingKind::flag, "bool"},
-                                                          {SettingKind::choice, "string"}};
   std::vector<SceneKey> keys;
   for (const SettingSpec& spec : setting_specs()) {
     if (spec.scope != scope) continue;
+    SceneKey row = spec;  // the setting's own row, under the scope's prefix
+    row.name = prefix + spec.name;
     // nu and k_p may be lists in a scene: one run per value (read_material, read_formulation).
-    const bool list = spec.key == "nu" || spec.key == "kp";
-    keys.push_back(key(prefix + spec.key, list ? "number or list" : type.at(spec.kind),
-                       default_text(spec), requirement_text(spec), spec.doc));
-    SceneKey& k = keys.back();
-    k.bounds = spec.range.bounds;
-    if (!spec.range.allowed.empty()) {  // a list of values: its least and greatest
-      const auto [lo, hi] =
-          std::minmax_element(spec.range.allowed.begin(), spec.range.allowed.end());
-      k.bounds = {*lo, *hi, false, false};
-    }
+    if (spec.name == "nu" || spec.name == "kp") row.type = "number or list";
+    keys.push_back(row);
   }
   return keys;
 }
@@ -42,7 +29,7 @@ std::vector<SceneKey> study_keys() {
   const SettingSpec& problem = setting_spec("problem");
   return {key("study", "string", Scene{}.study, kinds,
               "the study kind (fracture, dynamics and fragmentation have tables of their own)"),
-          key("problems", "string or list", SolveSettings{}.problem, requirement_text(problem),
+          key("problems", "string or list", SolveSettings{}.problem, problem.range,
               "the exact solutions every mesh and formulation is run on (a problem with no "
               "Dirichlet side is refused: every run would be singular)"),
           key("domain", "[x0, y0, x1, y1]", "beam: [0, -0.5, 4, 0.5]; else [0, 0, 2, 1]",

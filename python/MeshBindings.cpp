@@ -7,13 +7,13 @@
 #include <functional>
 #include <optional>
 
+#include "core/io/JsonOutput.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshStatistics.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
 #include "python/Bindings.hpp"
-#include "verification/api/JsonOutput.hpp"
 #include "verification/api/MeshSource.hpp"
 
 namespace vorodg::python {

@@ -17,7 +17,7 @@
 #include "support/ElementTestMeshes.hpp"
 #include "verification/kinds/fracture/FractureScene.hpp"
 #include "verification/solve/SolveRun.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 namespace {

@@ -18,7 +18,7 @@
 #include "support/ExtremesRows.hpp"
 #include "support/RunVorodg.hpp"
 #include "verification/kinds/extremes/ExtremesReport.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 namespace {

@@ -15,7 +15,7 @@
 #include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
 #include "fracture/FractureProblem.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 namespace {

@@ -18,7 +18,7 @@
 #include "core/util/Errors.hpp"
 #include "support/RunVorodg.hpp"
 #include "verification/kinds/fracture/FractureRun.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 namespace {

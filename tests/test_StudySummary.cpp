@@ -1,7 +1,7 @@
-// The study summary (verification/study/StudySummary): statistics over realizations, rates
+// The study summary (verification/static/StudySummary): statistics over realizations, rates
 // from the one fit, spreads only where there are two or more realizations, and groups kept
 // apart by their typed fields.
-#include "verification/study/StudySummary.hpp"
+#include "verification/static/StudySummary.hpp"
 
 #include <gtest/gtest.h>
 

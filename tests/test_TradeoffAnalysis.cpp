@@ -1,5 +1,5 @@
-// The trade-off analysis on made-up runs (verification/study/TradeoffAnalysis), where every
-// number is known in closed form: 4 levels x 3 realizations of four configurations,
+// The trade-off analysis on made-up runs (verification/kinds/tradeoff/TradeoffAnalysis), where
+// every number is known in closed form: 4 levels x 3 realizations of four configurations,
 //   - "clean":     L2 error 0.5 h^2, energy error h, time 2e-3 h^-2 s (error = 1e-3 / time);
 //   - "crossing":  L2 error |h^2 - 19 h^3|, a signed error that crosses zero between h = 0.1 and
 //                  0.05: very accurate at h = 0.05 (1.25e-4), worse again at 0.025 (3.3e-4);
@@ -17,9 +17,9 @@
 #include <cstdio>
 #include <string>
 
-#include "verification/study/StudyRunner.hpp"
-#include "verification/study/TradeoffAnalysis.hpp"
-#include "verification/study/TradeoffVerification.hpp"
+#include "verification/kinds/tradeoff/TradeoffAnalysis.hpp"
+#include "verification/kinds/tradeoff/TradeoffVerification.hpp"
+#include "verification/static/StudyRunner.hpp"
 
 namespace vorodg {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // The process's one MPI session, shared by MPI's two users here: a study spread over the ranks
-// of a job (verification/study/Ensemble) and hypre's algebraic multigrid, whose objects live on
+// of a job (verification/harness/Ensemble) and hypre's algebraic multigrid, whose objects live on
 // MPI_COMM_SELF even in a single process. Whichever comes first initializes MPI; a process
 // started without a launcher becomes a singleton job of one rank. MPI_THREAD_MULTIPLE is asked
 // for because a study's worker threads call hypre while the main thread serves the other ranks.

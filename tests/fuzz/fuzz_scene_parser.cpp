@@ -13,7 +13,7 @@
 #include "FuzzSupport.hpp"
 #include "core/util/Errors.hpp"
 #include "verification/harness/StudyKind.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "verification/kinds/extremes/ExtremesReport.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg::testing {
 

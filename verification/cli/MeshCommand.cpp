@@ -4,13 +4,13 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/io/JsonOutput.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshStatistics.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/api/JsonOutput.hpp"
 #include "verification/cli/CliSupport.hpp"
 
 namespace vorodg {

@@ -3,11 +3,11 @@
 #include <iostream>
 #include <thread>
 
+#include "core/io/JsonOutput.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/api/JsonOutput.hpp"
 #include "verification/cli/ResultFile.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/solve/RunRecord.hpp"

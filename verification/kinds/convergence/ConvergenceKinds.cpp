@@ -2,10 +2,10 @@
 // realizations (convergence), over a list of k_p per DG formulation (penalty-sweep), and every
 // formulation on affine fields judged pass or fail (patch-suite). One runner serves the three;
 // each gives the report its own sections.
-#include "verification/study/KpTrendReport.hpp"
-#include "verification/study/PatchSuiteReport.hpp"
-#include "verification/study/PenaltyAnalysis.hpp"
-#include "verification/study/StaticStudy.hpp"
+#include "verification/kinds/convergence/PatchSuiteReport.hpp"
+#include "verification/kinds/convergence/PenaltyAnalysis.hpp"
+#include "verification/static/KpTrendReport.hpp"
+#include "verification/static/StaticStudy.hpp"
 
 namespace vorodg {
 namespace {

@@ -8,8 +8,8 @@
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
 #include "verification/kinds/extremes/ExtremesReport.hpp"
-#include "verification/study/StaticStudy.hpp"
-#include "verification/study/StudyReport.hpp"
+#include "verification/static/StaticStudy.hpp"
+#include "verification/static/StudyReport.hpp"
 
 namespace vorodg {
 namespace {

@@ -1,9 +1,9 @@
 // The trade-off study: error against wall time over the knobs, the Pareto front and a
 // recommendation, which is checked by running it once more before the report
 // (TradeoffVerification; docs/tradeoff.md).
-#include "verification/study/StaticStudy.hpp"
-#include "verification/study/TradeoffReport.hpp"
-#include "verification/study/TradeoffVerification.hpp"
+#include "verification/kinds/tradeoff/TradeoffReport.hpp"
+#include "verification/kinds/tradeoff/TradeoffVerification.hpp"
+#include "verification/static/StaticStudy.hpp"
 
 namespace vorodg {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/StudySummary.hpp"
+#include "verification/static/StudySummary.hpp"
 
 namespace vorodg {
 

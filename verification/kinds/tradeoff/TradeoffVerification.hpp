@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "verification/kinds/tradeoff/TradeoffAnalysis.hpp"
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/StudyRunner.hpp"
-#include "verification/study/TradeoffAnalysis.hpp"
+#include "verification/static/StudyRunner.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "verification/study/StudyRunner.hpp"
+#include "verification/static/StudyRunner.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "verification/study/StudyReport.hpp"
+#include "verification/static/StudyReport.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,12 @@
 #include <sstream>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/io/JsonOutput.hpp"
 #include "core/util/Format.hpp"
-#include "verification/api/JsonOutput.hpp"
 #include "verification/harness/StudyFiles.hpp"
 #include "verification/report/ConvergenceTable.hpp"
-#include "verification/study/KpTrendReport.hpp"
-#include "verification/study/StudySummary.hpp"
+#include "verification/static/KpTrendReport.hpp"
+#include "verification/static/StudySummary.hpp"
 
 namespace vorodg {
 namespace {

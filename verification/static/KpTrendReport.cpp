@@ -1,4 +1,4 @@
-#include "verification/study/KpTrendReport.hpp"
+#include "verification/static/KpTrendReport.hpp"
 
 #include <algorithm>
 #include <cmath>

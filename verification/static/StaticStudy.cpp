@@ -1,4 +1,4 @@
-#include "verification/study/StaticStudy.hpp"
+#include "verification/static/StaticStudy.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -7,7 +7,7 @@
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/PlotScript.hpp"
 #include "verification/solve/SettingsSchema.hpp"
-#include "verification/study/StudyReport.hpp"
+#include "verification/static/StudyReport.hpp"
 
 namespace vorodg {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "verification/study/TradeoffAnalysis.hpp"
+#include "verification/kinds/tradeoff/TradeoffAnalysis.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "verification/study/TradeoffSettings.hpp"
+#include "verification/static/TradeoffSettings.hpp"
 
 #include <algorithm>
 
 #include "core/schema/SceneKeyReader.hpp"
 #include "core/schema/SceneObject.hpp"
-#include "verification/study/StaticSceneKeys.hpp"
+#include "verification/static/StaticSceneKeys.hpp"
 
 namespace vorodg {
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 

@@ -8,10 +8,10 @@
 
 #include "verification/harness/StudyKind.hpp"
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/Scene.hpp"
-#include "verification/study/StaticSceneKeys.hpp"
-#include "verification/study/StudyReport.hpp"
-#include "verification/study/StudyRunner.hpp"
+#include "verification/static/Scene.hpp"
+#include "verification/static/StaticSceneKeys.hpp"
+#include "verification/static/StudyReport.hpp"
+#include "verification/static/StudyRunner.hpp"
 
 namespace vorodg {
 

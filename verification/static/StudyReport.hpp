@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/Scene.hpp"
-#include "verification/study/StudySummary.hpp"
+#include "verification/static/Scene.hpp"
+#include "verification/static/StudySummary.hpp"
 
 namespace vorodg {
 

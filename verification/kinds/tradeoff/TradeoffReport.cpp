@@ -1,12 +1,12 @@
-#include "verification/study/TradeoffReport.hpp"
+#include "verification/kinds/tradeoff/TradeoffReport.hpp"
 
 #include <iomanip>
 #include <iostream>
 
+#include "core/io/JsonOutput.hpp"
 #include "core/util/Format.hpp"
-#include "verification/api/JsonOutput.hpp"
+#include "verification/kinds/tradeoff/TradeoffVerification.hpp"
 #include "verification/report/ConvergenceTable.hpp"
-#include "verification/study/TradeoffVerification.hpp"
 
 namespace vorodg {
 namespace {

@@ -1,4 +1,4 @@
-#include "verification/study/TradeoffVerification.hpp"
+#include "verification/kinds/tradeoff/TradeoffVerification.hpp"
 
 #include <algorithm>
 #include <iostream>

@@ -1,4 +1,4 @@
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@
 #include "verification/harness/PhysicsKeys.hpp"
 #include "verification/harness/StudyKind.hpp"
 #include "verification/solve/SettingsSchema.hpp"
-#include "verification/study/StaticSceneKeys.hpp"
+#include "verification/static/StaticSceneKeys.hpp"
 
 namespace vorodg {
 namespace {

@@ -1,9 +1,9 @@
-#include "verification/study/StaticSceneKeys.hpp"
+#include "verification/static/StaticSceneKeys.hpp"
 
 #include "verification/harness/PhysicsKeys.hpp"
 #include "verification/harness/StudyKind.hpp"
 #include "verification/solve/SettingsSchema.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 namespace {

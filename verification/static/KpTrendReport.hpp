@@ -5,7 +5,7 @@
 // its largest k_p is within the two intervals of CG's.
 #include <sstream>
 
-#include "verification/study/StudySummary.hpp"
+#include "verification/static/StudySummary.hpp"
 
 namespace vorodg {
 

@@ -8,8 +8,8 @@
 #include "core/schema/SceneKeyReader.hpp"
 #include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
-#include "verification/study/Scene.hpp"
-#include "verification/study/StaticSceneKeys.hpp"
+#include "verification/static/Scene.hpp"
+#include "verification/static/StaticSceneKeys.hpp"
 
 namespace vorodg {
 

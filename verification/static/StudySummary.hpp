@@ -12,7 +12,7 @@
 #include "verification/report/RateFit.hpp"
 #include "verification/report/SampleStatistics.hpp"
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/Scene.hpp"
+#include "verification/static/Scene.hpp"
 
 namespace vorodg {
 

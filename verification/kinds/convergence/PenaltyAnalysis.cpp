@@ -1,4 +1,4 @@
-#include "verification/study/PenaltyAnalysis.hpp"
+#include "verification/kinds/convergence/PenaltyAnalysis.hpp"
 
 #include <algorithm>
 #include <cmath>

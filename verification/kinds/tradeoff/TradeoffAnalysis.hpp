@@ -19,8 +19,8 @@
 
 #include "verification/report/RateFit.hpp"
 #include "verification/solve/RunRecord.hpp"
-#include "verification/study/StudySummary.hpp"
-#include "verification/study/TradeoffSettings.hpp"
+#include "verification/static/StudySummary.hpp"
+#include "verification/static/TradeoffSettings.hpp"
 
 namespace vorodg {
 

@@ -1,4 +1,4 @@
-#include "verification/study/PatchSuiteReport.hpp"
+#include "verification/kinds/convergence/PatchSuiteReport.hpp"
 
 #include <iostream>
 

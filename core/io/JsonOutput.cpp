@@ -1,4 +1,4 @@
-#include "verification/api/JsonOutput.hpp"
+#include "core/io/JsonOutput.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "verification/study/StudySummary.hpp"
+#include "verification/static/StudySummary.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 #include "verification/harness/MeshBlock.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/solve/SolveRun.hpp"
-#include "verification/study/TradeoffSettings.hpp"
+#include "verification/static/TradeoffSettings.hpp"
 
 namespace vorodg {
 

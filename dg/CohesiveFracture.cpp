@@ -191,4 +191,33 @@ std::vector<int> CohesiveFracture::eligible_points(
   return out;
 }
 
+std::vector<CrackedFace> CohesiveFracture::cracked_faces(
+    const std::vector<InterfacePoint>& points) const {
+  std::vector<CrackedFace> faces;
+  const CohesiveLaw& law = interfaces_->law();
+  for (int p = 0; p + 1 < static_cast<int>(points.size()); p += 2) {
+    const Interface& f = interfaces_->face(p);
+    if (setup_.notch[f.edge]) continue;
+    bool cracked = false, open = true;
+    for (int q = p; q < p + 2; ++q) {
+      cracked |= law.dissipated_energy(points[q].history.max_opening) > 0.0;
+      open &= points[q].state == PointState::open;
+    }
+    if (cracked) faces.push_back({f.a, f.b, open});
+  }
+  return faces;
+}
+
+std::vector<double> CohesiveFracture::cell_interface_states(
+    const std::vector<InterfacePoint>& points) const {
+  std::vector<double> state(table_.mesh().num_cells(), 0.0);
+  for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+    const double s = points[p].state == PointState::open       ? 2.0
+                     : points[p].state == PointState::cohesive ? 1.0
+                                                               : 0.0;
+    for (int c : interfaces_->face(p).cell) state[c] = std::max(state[c], s);
+  }
+  return state;
+}
+
 }  // namespace vorodg

@@ -38,6 +38,12 @@ struct FractureEnergies {
   double accounted() const { return stored() + dissipated + switched; }
 };
 
+/// A crack face past the strength (softening or open) in some state of the interface points.
+struct CrackedFace {
+  Point a, b;         // its ends
+  bool open = false;  // both its points open
+};
+
 class CohesiveFracture {
  public:
   /// `coupling` chooses the intact faces' penalty, weights and traction as for dg-sipg.
@@ -72,6 +78,11 @@ class CohesiveFracture {
                             const std::vector<InterfacePoint>& points) const;
   /// Intact points that the cracking mode lets crack now.
   std::vector<int> eligible_points(const std::vector<InterfacePoint>& points) const;
+  /// The faces past the strength at `points`: a point of them has dissipated (the notch's faces
+  /// left out).
+  std::vector<CrackedFace> cracked_faces(const std::vector<InterfacePoint>& points) const;
+  /// Each cell's worst interface state at `points`: 0 intact, 1 cohesive, 2 open.
+  std::vector<double> cell_interface_states(const std::vector<InterfacePoint>& points) const;
   const StageTimes& seconds() const { return seconds_; }
 
  private:

@@ -186,4 +186,15 @@ void ExplicitSimulation::step() {
     run->step();
 }
 
+double ExplicitSimulation::energy_growth() const {
+  const StepRecord& r = run->record();
+  return (r.kinetic + r.elastic) / r.input_energy();
+}
+
+bool ExplicitSimulation::unstable() const {
+  const StepRecord& r = run->record();
+  const double energy = r.kinetic + r.elastic;
+  return !std::isfinite(energy) || energy > kEnergyBlowUp * r.input_energy();
+}
+
 }  // namespace vorodg

@@ -27,6 +27,10 @@
 
 namespace vorodg {
 
+/// A run is unstable once its kinetic plus elastic energy exceeds this many times the energy put
+/// in: a stable run stays within round-off of its input.
+constexpr double kEnergyBlowUp = 1e6;
+
 class ExplicitSimulation {
  public:
   /// Builds everything on `bodies` (whose mesh it keeps) from `parameters` and `loading` (both
@@ -62,6 +66,10 @@ class ExplicitSimulation {
   const PolygonMesh& mesh() const { return bodies.mesh; }
   /// One step of the integrator, with the insertion check after it when the run fragments.
   void step();
+  /// Kinetic plus elastic energy over the energy put in, at the last step.
+  double energy_growth() const;
+  /// True once that energy is not finite or past kEnergyBlowUp times the input.
+  bool unstable() const;
 
  private:
   /// The internal force of the (varied) cell matrices; sets the two critical-step estimates.

@@ -4,7 +4,8 @@
 // dissipation arc-length through snap-back (a long bar), with both laws; the dissipated energy
 // after separation is G H t; the energy balance holds at every point; and below the strength
 // nothing differs from elasticity. The bar runs on quad meshes and on an imported .vtu
-// (data/meshes/bar-symmetric-d0.02.vtu).
+// (data/meshes/bar-symmetric-d0.02.vtu). The faces the model reports cracked, and the cells it
+// marks open, are the crack line's once the bar has separated.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,6 +44,11 @@ struct BarRun {
   bool complete = false;
   std::string failure;
   FractureGeometry geometry;
+  // What the model reports of its cracks at the start and at the last point, and which cells
+  // have a vertex on the crack line.
+  std::vector<CrackedFace> cracked_at_start, cracked_at_end;
+  std::vector<double> states_at_start, states_at_end;
+  std::vector<char> on_line;
 };
 
 BarRun run_bar(const BarCase& c, double max_cmod_fraction = 1.2, int steps = 40) {
@@ -70,9 +76,20 @@ BarRun run_bar(const BarCase& c, double max_cmod_fraction = 1.2, int steps = 40)
   options.max_cmod = max_cmod_fraction * dc;
   options.max_stroke = kStrength * c.length / kE + max_cmod_fraction * dc;
   QuasiStaticPath path(model, options);
-  run.complete = path.run(
-      [&](const PathPoint& p, const Eigen::VectorXd&, const auto&) { run.path.push_back(p); });
+  run.cracked_at_start = model.cracked_faces(model.initial_points());
+  run.states_at_start = model.cell_interface_states(model.initial_points());
+  run.complete = path.run([&](const PathPoint& p, const Eigen::VectorXd&, const auto& points) {
+    run.path.push_back(p);
+    run.cracked_at_end = model.cracked_faces(points);
+    run.states_at_end = model.cell_interface_states(points);
+  });
   run.failure = path.failure();
+  for (int c = 0; c < mesh.mesh.num_cells(); ++c) {
+    bool touches = false;
+    for (int v : mesh.mesh.cell_vertices(c))
+      touches |= std::abs(mesh.mesh.vertex(v).x() - run.geometry.line_x) < 1e-12;
+    run.on_line.push_back(touches);
+  }
   return run;
 }
 
@@ -101,6 +118,27 @@ TEST_P(TensionBar, FollowsTheClosedFormAtEveryPoint) {
   const PathPoint& last = run.path.back();
   EXPECT_NEAR(last.energy.dissipated, kEnergy * 0.1 * kThickness,
               1e-6 * kEnergy * 0.1 * kThickness);
+}
+
+/// Past the critical opening the bar has separated along its crack line: every face the model
+/// reports as cracked lies on the line and is open, together they span the bar's height, and
+/// the cells it marks open are those beside the line. At the start nothing is cracked.
+TEST(TensionBarCracks, AfterSeparationTheCrackedFacesAreTheCrackLineOpen) {
+  const BarRun run = run_bar({MeshFamily::quad, 0.2, "linear", LoadControl::displacement});
+  ASSERT_TRUE(run.complete) << run.failure;
+  EXPECT_TRUE(run.cracked_at_start.empty());
+  for (double s : run.states_at_start) EXPECT_EQ(s, 0.0);
+  ASSERT_FALSE(run.cracked_at_end.empty());
+  double length = 0.0;
+  for (const CrackedFace& f : run.cracked_at_end) {
+    EXPECT_NEAR(f.a.x(), run.geometry.line_x, 1e-12);
+    EXPECT_NEAR(f.b.x(), run.geometry.line_x, 1e-12);
+    EXPECT_TRUE(f.open);
+    length += (f.b - f.a).norm();
+  }
+  EXPECT_NEAR(length, 0.1, 1e-12);
+  for (std::size_t c = 0; c < run.states_at_end.size(); ++c)
+    EXPECT_EQ(run.states_at_end[c], run.on_line[c] ? 2.0 : 0.0) << "cell " << c;
 }
 
 INSTANTIATE_TEST_SUITE_P(

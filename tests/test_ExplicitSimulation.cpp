@@ -6,7 +6,8 @@
 //     the energy rings in the block) and at least 95 % of it, the bounds the dynamics study's
 //     wall impact holds its rebound speed to;
 //   - the energy balance (kinetic + elastic - work of the wall) holds to 1e-10 of the input;
-//   - the wall's law is the one named: a name not registered is refused with InputError.
+//   - the wall's law is the one named: a name not registered is refused with InputError;
+//   - past the critical step the simulation reports itself unstable, and not below it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,6 +64,27 @@ TEST(ExplicitSimulation, ALibraryUserBouncesABlockOffAWallWithoutAScene) {
   EXPECT_LE(rebound, 1.0 + 1e-6);
   EXPECT_NEAR(end.momentum.y(), 0.0, 1e-9 * start.momentum.x());
   EXPECT_LT(balance, 1e-10);
+}
+
+/// At a step past the critical one the run's energy grows without bound: the simulation says so
+/// (unstable) within a few hundred steps, its energy past kEnergyBlowUp times the input, while
+/// at the stable step its kinetic plus elastic energy stays at the input over as many steps
+/// (within 1 %: the wall's penalty spring holds a little of it while the block touches).
+TEST(ExplicitSimulation, SaysWhenItsEnergyBlowsUp) {
+  const ExplicitLoading none;
+  ExplicitParameters p = thrown_block();
+  p.contact = true;  // a wall and surfaces: the growth shows either way
+  ExplicitSimulation stable(p, block_mesh(), none, 1);
+  p.safety = 1.5;
+  ExplicitSimulation blowing(p, block_mesh(), none, 1);
+  long step = 0;
+  for (; step < 2000 && !blowing.unstable(); ++step) blowing.step();
+  ASSERT_TRUE(blowing.unstable()) << "no blow-up in 2000 steps at 1.5 x the critical step";
+  EXPECT_TRUE(!std::isfinite(blowing.energy_growth()) ||
+              blowing.energy_growth() > kEnergyBlowUp);
+  for (long s = 0; s < step; ++s) stable.step();
+  EXPECT_FALSE(stable.unstable());
+  EXPECT_NEAR(stable.energy_growth(), 1.0, 1e-2);
 }
 
 TEST(ExplicitSimulation, RefusesAWallLawThatIsNotRegistered) {

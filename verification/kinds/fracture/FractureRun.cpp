@@ -31,15 +31,8 @@ void write_deformed(const fs::path& path, const CohesiveFracture& model, const E
   const PolygonMesh& mesh = model.space().mesh();
   std::vector<Point> vertices;
   std::vector<int> offsets{0}, loops;
-  VtuField displacement{"displacement", 2, {}}, state{"interface_state", 1, {}};
-  state.values.assign(mesh.num_cells(), 0.0);
-  for (int p = 0; p < static_cast<int>(points.size()); ++p) {
-    const Interface& f = model.interfaces().face(p);
-    const double s = points[p].state == PointState::open       ? 2.0
-                     : points[p].state == PointState::cohesive ? 1.0
-                                                               : 0.0;
-    for (int c : f.cell) state.values[c] = std::max(state.values[c], s);
-  }
+  VtuField displacement{"displacement", 2, {}};
+  VtuField state{"interface_state", 1, model.cell_interface_states(points)};
   for (int c = 0; c < mesh.num_cells(); ++c) {
     const auto loop = mesh.cell_vertices(c);
     for (std::size_t k = 0; k < loop.size(); ++k) {
@@ -64,21 +57,12 @@ std::string crack_faces(const CohesiveFracture& model, const std::vector<Interfa
   ConvergenceTable t;
   for (const char* c : {"x0", "y0", "x1", "y1"}) t.declare_column(c, number);
   t.declare_column("state", text);
-  const CohesiveLaw& law = model.interfaces().law();
-  for (int p = 0; p + 1 < static_cast<int>(points.size()); p += 2) {
-    const Interface& f = model.interfaces().face(p);
-    if (model.setup().notch[f.edge]) continue;
-    bool cracked = false, open = true;
-    for (int q = p; q < p + 2; ++q) {
-      cracked |= law.dissipated_energy(points[q].history.max_opening) > 0.0;
-      open &= points[q].state == PointState::open;
-    }
-    if (!cracked) continue;
+  for (const CrackedFace& f : model.cracked_faces(points)) {
     t.start_row();
     for (const auto& [column, value] :
          {std::pair{"x0", f.a.x()}, {"y0", f.a.y()}, {"x1", f.b.x()}, {"y1", f.b.y()}})
       t.add_value(column, value);
-    t.add_text("state", open ? "open" : "cohesive");
+    t.add_text("state", f.open ? "open" : "cohesive");
   }
   return csv_text(t);
 }

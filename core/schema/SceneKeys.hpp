@@ -34,7 +34,7 @@ SceneKey bounded(std::string name, std::string type, std::string fallback, std::
                  std::string doc, double lower, bool lower_open, double upper,
                  bool upper_open = false);
 
-/// Appends `more` to `keys` (a kind's table spliced from shared groups: PhysicsKeys).
+/// Appends `more` to `keys` (a kind's table spliced from shared groups).
 inline void append_keys(std::vector<SceneKey>& keys, const std::vector<SceneKey>& more) {
   keys.insert(keys.end(), more.begin(), more.end());
 }

@@ -8,14 +8,14 @@
 #include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/harness/PhysicsKeys.hpp"
+#include "verification/harness/CommonKeys.hpp"
 
 namespace vorodg {
 namespace {
 
 using nlohmann::json;
 
-/// A number of a mesh block within the bounds of its key (PhysicsKeys: mesh_keys).
+/// A number of a mesh block within the bounds of its key (CommonKeys: mesh_keys).
 double bounded_number(SceneObject& m, const std::string& name, double fallback) {
   return checked_number(m, name, mesh_key("meshes[]." + name), fallback);
 }

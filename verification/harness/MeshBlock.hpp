@@ -1,7 +1,7 @@
 #pragma once
 // A mesh block of a scene: one mesh family (or a list of mesh files) with its levels, its
 // realizations per level and its base seed. Every study kind reads its `meshes` through
-// read_mesh (keys: PhysicsKeys' mesh_keys) and runs one unit of work per (block, level,
+// read_mesh (keys: CommonKeys' mesh_keys) and runs one unit of work per (block, level,
 // realization) (EnsembleRun).
 #include <cstdint>
 #include <filesystem>

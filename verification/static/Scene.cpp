@@ -12,7 +12,7 @@
 #include "core/schema/SceneObject.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
-#include "verification/harness/PhysicsKeys.hpp"
+#include "verification/harness/CommonKeys.hpp"
 #include "verification/harness/StudyKind.hpp"
 #include "verification/solve/SettingsSchema.hpp"
 #include "verification/static/StaticSceneKeys.hpp"

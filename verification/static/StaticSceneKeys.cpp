@@ -1,6 +1,6 @@
 #include "verification/static/StaticSceneKeys.hpp"
 
-#include "verification/harness/PhysicsKeys.hpp"
+#include "verification/harness/CommonKeys.hpp"
 #include "verification/harness/StudyKind.hpp"
 #include "verification/solve/SettingsSchema.hpp"
 #include "verification/static/Scene.hpp"

@@ -2,7 +2,7 @@
 // The key tables of the static study kinds: convergence, penalty-sweep, patch-suite and trade-off
 // share one; extremes adds its sweeps. The settings of a solve (material, formulations[],
 // outputs) come from the settings schema (SettingsSchema), the mesh blocks from the keys every
-// kind shares (PhysicsKeys); the rest (the study, its problems and domain, the patch tolerance,
+// kind shares (CommonKeys); the rest (the study, its problems and domain, the patch tolerance,
 // the trade-off's knobs, the sweeps) are written here, their defaults taken from the structs
 // the reader fills. The readers (Scene.cpp, SceneSweeps.cpp, TradeoffSettings.cpp) take the
 // bounds of these keys from here; docs/scenes.md lists the same rows.

@@ -4,13 +4,15 @@
 #include <stdexcept>
 
 #include "core/element/ElementTable.hpp"
+#include "core/material/MaterialKeys.hpp"
 #include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Format.hpp"
 #include "dynamics/contact/ContactLaws.hpp"
 #include "dynamics/problems/DynamicsProblem.hpp"
-#include "fracture/SofteningLaws.hpp"
-#include "verification/harness/PhysicsKeys.hpp"
+#include "fracture/CohesiveKeys.hpp"
+#include "verification/harness/CommonKeys.hpp"
 #include "verification/model/Choices.hpp"
+#include "verification/model/ElementKeys.hpp"
 #include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
@@ -245,8 +247,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, cohesive_keys({"3e8", "100", "10", "0",
                                    "dynamics needs an initially elastic law; its springs share "
                                    "the stable step",
-                                   "fragmentation: ", softening_laws().front().name,
-                                   softening_law_list()}));
+                                   "fragmentation: "}));
   keys.push_back(bounded(
       "cohesive.closure_stiffness", "number or string", "0.1",
       "0 < k <= 1, or \"interface\" (interfaces dg)",

@@ -4,9 +4,11 @@
 // a plane model beyond 1 km): what they refuse is a value that would overflow the run.
 #include "verification/kinds/fracture/FractureKeys.hpp"
 
+#include "core/material/MaterialKeys.hpp"
+#include "fracture/CohesiveKeys.hpp"
 #include "fracture/FractureProblem.hpp"
-#include "fracture/SofteningLaws.hpp"
-#include "verification/harness/PhysicsKeys.hpp"
+#include "verification/harness/CommonKeys.hpp"
+#include "verification/model/ElementKeys.hpp"
 
 namespace vorodg {
 namespace {
@@ -80,8 +82,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, {bounded("material.thickness", "number", "1", "0 < thickness <= 1000",
                              "out of plane, m: loads in newtons and energies in joules include it",
                              0.0, true, 1e3)});
-  append_keys(keys, cohesive_keys({"3.33e6", "124", "1000", "0.75", "pre-inserted faces", "",
-                                   softening_laws().front().name, softening_law_list()}));
+  append_keys(keys, cohesive_keys({"3.33e6", "124", "1000", "0.75", "pre-inserted faces", ""}));
   append_keys(keys, cracking_keys());
   append_keys(keys, loading_keys());
   append_keys(keys, mesh_keys());

@@ -80,8 +80,7 @@ TEST(ExplicitSimulation, SaysWhenItsEnergyBlowsUp) {
   long step = 0;
   for (; step < 2000 && !blowing.unstable(); ++step) blowing.step();
   ASSERT_TRUE(blowing.unstable()) << "no blow-up in 2000 steps at 1.5 x the critical step";
-  EXPECT_TRUE(!std::isfinite(blowing.energy_growth()) ||
-              blowing.energy_growth() > kEnergyBlowUp);
+  EXPECT_TRUE(!std::isfinite(blowing.energy_growth()) || blowing.energy_growth() > kEnergyBlowUp);
   for (long s = 0; s < step; ++s) stable.step();
   EXPECT_FALSE(stable.unstable());
   EXPECT_NEAR(stable.energy_growth(), 1.0, 1e-2);

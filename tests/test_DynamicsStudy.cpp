@@ -80,6 +80,13 @@ TEST_F(DynamicsStudy, WallImpactAtNormalIncidence) {
   EXPECT_GT(m.contact_time, m.contact_time_estimate);
   EXPECT_LT(m.contact_time, 1.4 * m.contact_time_estimate);
   EXPECT_LT(m.energy_balance_error, 1e-10);
+  // The wall's impulse is the change of the block's normal momentum, M (rebound + impact) with
+  // M = rho x area (steel's 7800 kg/m^3 on 0.4 x 0.1), to round-off: nothing else acts on it.
+  const double mass = 7800.0 * 0.4 * 0.1;
+  std::printf("wall impulse %.6f N s/m, momentum change %.6f, 2 M v %.6f\n", m.wall_impulse,
+              mass * (m.rebound_velocity + m.impact_velocity), 2.0 * mass * m.impact_velocity);
+  EXPECT_NEAR(m.wall_impulse, mass * (m.rebound_velocity + m.impact_velocity),
+              1e-9 * mass * m.impact_velocity);
 }
 
 TEST_F(DynamicsStudy, TwoBlocksKeepTheirTotalMomentum) {

@@ -24,6 +24,7 @@ DynamicsProbe::DynamicsProbe(const ExplicitParameters& physics, const DynamicsPr
     m_.rebound_estimate = m_.impact_velocity;
     m_.contact_time_estimate = 2.0 * extent(physics.bodies[0].domain, n) / physics.bar_speed();
     m_.peak_wall_force = 0.0;
+    m_.wall_impulse = 0.0;
     m_.peak_wall_force_estimate = physics.density * physics.bar_speed() * m_.impact_velocity *
                                   extent(physics.bodies[0].domain, Point(-n.y(), n.x()));
   }
@@ -39,8 +40,13 @@ void DynamicsProbe::observe_contact() {
   m_.max_penetration_over_h = m_.max_penetration / bodies_.h_avg;
   m_.tunnelled_contacts += a.new_tunnels;
   m_.late_contacts += a.new_late;
-  if (physics_.wall)
+  if (physics_.wall) {
     m_.peak_wall_force = std::max(m_.peak_wall_force, contact->plane_force().norm());
+    const double f = contact->plane_force().dot(physics_.wall->normal);
+    if (observed_) m_.wall_impulse += 0.5 * run_.dt() * (last_wall_force_ + f);
+    last_wall_force_ = f;
+    observed_ = true;
+  }
   in_contact_ = a.contacts + b.contacts > 0;
   if (!in_contact_) return;
   if (std::isnan(m_.contact_start)) m_.contact_start = run_.time();

@@ -38,6 +38,11 @@ struct DynamicsMeasures {
   // the largest net force of the wall on the bodies (per unit thickness), beside the 1D bar's
   // rho c_bar v_n times the body's width across the normal
   double peak_wall_force = NAN, peak_wall_force_estimate = NAN;
+  // the wall's impulse on the bodies along its normal (per unit thickness, N s/m): its force
+  // summed over the steps as the integrator applies it (the trapezoid rule of velocity Verlet),
+  // so that with nothing else acting it is the change of the bodies' normal momentum; the 1D
+  // elastic bar's is 2 M v_n, a plastic impact's M v_n
+  double wall_impulse = NAN;
   // column-impact: the first time a vertex of the column's rear (upper) half touches the plane
   double rear_strike_time = NAN;
   // three-point-bend: the largest load (N: the load point's reaction times the thickness), the
@@ -110,6 +115,8 @@ class DynamicsProbe {
   CorotationalFrames frames_;              // for the cells' small-strain rotation
   std::unique_ptr<ProblemProbe> problem_;  // the problem's own measures (may be none)
   bool in_contact_ = false;
+  double last_wall_force_ = 0.0;  // along the normal, at the last step observed
+  bool observed_ = false;         // a step has been observed (the impulse's first end)
 };
 
 }  // namespace vorodg

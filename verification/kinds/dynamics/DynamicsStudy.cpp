@@ -58,6 +58,7 @@ const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_f
       {"contact_time_estimate", &M::contact_time_estimate},
       {"peak_wall_force", &M::peak_wall_force},
       {"peak_wall_force_estimate", &M::peak_wall_force_estimate},
+      {"wall_impulse", &M::wall_impulse},
       {"rear_strike_time", &M::rear_strike_time},
       {"peak_load", &M::peak_load},
       {"peak_load_displacement", &M::peak_load_displacement},

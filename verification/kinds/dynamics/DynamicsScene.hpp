@@ -1,12 +1,11 @@
 #pragma once
-// The scene of a `dynamics` study (keys in docs/scenes.md): one problem (a class of problems/: a
-// wave bar, a free body, a block thrown at a rigid wall, two blocks thrown at each other, the
-// report's falling column and struck beam), one material, contact, the time stepping, over mesh
-// families with levels and realizations. A `fragmentation` study is the same with cracks
-// (docs/fragmentation.md): the cohesive law and the insertion criterion, and the strip-expansion
-// problem.
-// `variants` (objects merged over the top-level keys, each with a `label`) runs several such
-// studies side by side, each into its own subfolder.
+// The scene of a `dynamics` study (keys in docs/scenes.md): one problem (a class of
+// dynamics/problems/: a wave bar, a free body, a block thrown at a rigid wall, two blocks thrown at
+// each other, the report's falling column and struck beam), one material, contact, the time
+// stepping, over mesh families with levels and realizations. A `fragmentation` study is the same
+// with cracks (docs/fragmentation.md): the cohesive law and the insertion criterion, and the
+// strip-expansion problem. `variants` (objects merged over the top-level keys, each with a `label`)
+// runs several such studies side by side, each into its own subfolder.
 //
 // Every key's name, type, default, range and doc are in one table (dynamics_scene_keys, in
 // DynamicsKeys.cpp); the reader takes defaults and ranges from it, refuses what is out of range
@@ -30,7 +29,7 @@ namespace vorodg {
 struct DynamicsScene : ExplicitParameters {
   std::filesystem::path path;
   std::string name, description, label;  // label: the variant's (empty at the top level)
-  /// What is thrown, struck or stretched, with its own keys read (problems/).
+  /// What is thrown, struck or stretched, with its own keys read (dynamics/problems/).
   std::shared_ptr<const DynamicsProblem> problem;
   int output_every = 0, history_every = 0;
   bool vtu = true;

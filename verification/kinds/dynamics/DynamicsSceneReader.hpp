@@ -1,8 +1,9 @@
 #pragma once
 // The reader behind parse_dynamics_scene (internal to verification/kinds/dynamics): the scene's
-// keys with defaults and ranges from the key table (DynamicsKeys) through the harness's
+// keys with defaults and ranges from the key table (DynamicsKeys) through core's
 // SceneKeyReader, every value used noted for the echo. Each problem reads its own keys through it
-// (problems/); the fragmentation keys are read in FragmentationKeys.cpp.
+// (dynamics/problems/, through the SceneKeyReader it is); the fragmentation keys are read in
+// FragmentationKeys.cpp.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>

@@ -84,6 +84,27 @@ void CentralDifference::interface_forces(const Eigen::VectorXd& v, Eigen::Vector
     cohesive_->evaluate(u_, f);
 }
 
+void CentralDifference::constrain_contact(const Eigen::VectorXd& w, double beta, double inertia,
+                                          const Eigen::VectorXd& f_ext,
+                                          const Eigen::VectorXd& f_bulk,
+                                          Eigen::VectorXd& f_contact) {
+  if (!contact_ || !contact_->kinematic()) return;
+  const double c = options_.damping;
+  auto predict = [&](int node) {
+    ContactForces::Prediction next;
+    const double m = mass_node_[node];
+    for (int d = 0; d < 2; ++d) {
+      const int i = 2 * node + d;
+      next.held = next.held || prescribed_[i] >= 0;
+      double applied = f_ext[i] + f_contact[i] - f_int_[i];
+      if (bulk_) applied += f_bulk[i];
+      next.velocity[d] = w[i] + beta * dt_ * (applied - c * m * w[i]) / (m * inertia);
+    }
+    return next;
+  };
+  contact_->constrain(predict, beta, inertia, f_contact);
+}
+
 void CentralDifference::add_velocity_boundary(VelocityBoundary bc) {
   if (initialized_) throw InputError("prescribed velocity: added after initialize()");
   if (bc.direction != 0 && bc.direction != 1)
@@ -183,6 +204,7 @@ void CentralDifference::restart_from(double elastic, bool cells_unchanged) {
   if (contact_) contact_->restart();  // the state may have jumped: a new work segment
   interface_forces(v_, f_contact_, cells_unchanged);
   bulk_forces(v_, f_bulk_);
+  constrain_contact(v_, 0.5, 1.0, f_ext_, f_bulk_, f_contact_);
   const double c = options_.damping;
   a_.resize(dofs_.num_dofs());
   for (int i = 0; i < dofs_.num_dofs(); ++i) {
@@ -231,6 +253,8 @@ const StepRecord& CentralDifference::step() {
   external_forces(t_next, f_ext_next_);
   interface_forces(v_half_, f_contact_next_);
   bulk_forces(v_half_, f_bulk_next_);
+  constrain_contact(v_half_, 1.0, 1.0 + 0.5 * options_.damping * dt_, f_ext_next_, f_bulk_next_,
+                    f_contact_next_);
   boundary_values(t_next + 0.5 * dt_, vbar_next_half_);
   // Second half step, fused with the bookkeeping of the work done over the step.
   const double c = options_.damping;

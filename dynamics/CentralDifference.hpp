@@ -21,6 +21,13 @@
 // acceleration like applied forces but are kept apart, so that their work (booked by
 // ContactWork as the trapezoid over the step) goes to StepRecord::contact_work.
 //
+// Kinematic contact (ContactForces::kinematic: the exact plane and cell-pair laws): once every
+// other force of the step is known, each node's next half-step velocity is predicted, the laws'
+// impulses keep the next positions admissible, and they come back as contact forces of this
+// step (f = (1 + c dt/2) J / dt; at a restart, where v_{1/2} = v_0 + dt/2 a_0, f = 2 J / dt).
+// They are in f_contact like the penalty laws' forces, so accelerations, momenta and the work
+// account take them in without a special case.
+//
 // Interfaces coupled from the start (set_interface_coupling, optional): InterfaceCoupling's
 // interior-penalty forces join the internal force, and their energy 1/2 u.K_F u the elastic
 // energy, so the balance closes to round-off with them (they are linear in u). An interface
@@ -163,6 +170,13 @@ class CentralDifference {
   void restart(bool cells_unchanged = false);
   /// The rest of restart once the internal force and the elastic energy are known.
   void restart_from(double elastic, bool cells_unchanged);
+  /// The kinematic contact laws' forces into f_contact, given the other forces of the same
+  /// evaluation: each free node moves next at w + beta dt a (a from those forces), and
+  /// `inertia` is what a force is divided by beyond the mass (1 + c dt/2 in a step, 1 at a
+  /// restart).
+  void constrain_contact(const Eigen::VectorXd& w, double beta, double inertia,
+                         const Eigen::VectorXd& f_ext, const Eigen::VectorXd& f_bulk,
+                         Eigen::VectorXd& f_contact);
   /// Bulk viscosity forces at velocities v into f (zero without it).
   void bulk_forces(const Eigen::VectorXd& v, Eigen::VectorXd& f);
   /// The record's state from per-step sums: work increments (external, reaction, damping), then

@@ -11,30 +11,33 @@
 namespace vorodg {
 
 ContactForces::ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces,
-                             const ContactFriction& friction)
+                             const ContactFriction& friction, const std::string& surface_law)
     : mesh_(mesh), law_(law), surfaces_(surfaces), surface_(mesh) {
   if (surfaces)
     add_law(
-        make_contact_law("cell-pairs", {.penalty = law,
-                                        .friction = friction,
-                                        .grid_spacing = mesh.h_avg() > 0.0 ? mesh.h_avg() : 1.0}));
+        make_contact_law(surface_law, {.penalty = law,
+                                       .friction = friction,
+                                       .grid_spacing = mesh.h_avg() > 0.0 ? mesh.h_avg() : 1.0}));
   reference_.reserve(mesh.offsets().back());
   for (int v : mesh.cell_vertex_list()) reference_.push_back(mesh.vertex(v));
   const std::size_t pairs = reference_.size();
   for (auto* buffer : {&position_, &velocity_, &force_, &plane_pair_force_})
     buffer->assign(pairs, Point::Zero());
+  impulse_force_.assign(pairs, Point::Zero());
+  friction_force_.assign(pairs, Point::Zero());
   if (law.needs_velocity()) velocity_force_.assign(pairs, Point::Zero());
 }
 
 void ContactForces::add_law(std::unique_ptr<ContactLaw> law) {
   obstacles_ = obstacles_ || law->external();
+  kinematic_ = kinematic_ || law->kinematic();
   laws_.push_back(std::move(law));
 }
 
 void ContactForces::add_plane(const Point& point, const Point& normal,
                               const ContactFriction& friction) {
   add_law(make_contact_law(
-      "rigid-plane", {.penalty = law_, .friction = friction, .point = point, .normal = normal}));
+      "penalty-plane", {.penalty = law_, .friction = friction, .point = point, .normal = normal}));
 }
 
 void ContactForces::bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses) {
@@ -45,6 +48,13 @@ void ContactForces::bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_ma
   mass_.resize(reference_.size());
   for (int i = 0; i < dofs.num_nodes(); ++i) bind_node(dofs, node_masses, i);
   num_dofs_ = dofs.num_dofs();
+  size_nodes(dofs.num_nodes());
+}
+
+void ContactForces::size_nodes(int nodes) {
+  for (auto* buffer : {&node_velocity_, &normal_impulse_, &friction_impulse_})
+    buffer->resize(nodes, Point::Zero());
+  inverse_mass_.resize(nodes, 0.0);
 }
 
 void ContactForces::rebind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses,
@@ -54,6 +64,7 @@ void ContactForces::rebind(const SplitDofMap& dofs, const Eigen::VectorXd& node_
                      " node masses: expected one per node, " + std::to_string(dofs.num_nodes()));
   for (int i : nodes) bind_node(dofs, node_masses, i);
   num_dofs_ = dofs.num_dofs();
+  size_nodes(dofs.num_nodes());
 }
 
 void ContactForces::bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses, int i) {
@@ -64,10 +75,7 @@ void ContactForces::bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& no
 }
 
 void ContactForces::restart() {
-  booked_ += work_.work();
-  work_ = ContactWork{};
-  velocity_booked_ += velocity_work_.work();
-  velocity_work_ = ContactWork{};
+  for (SegmentedWork* w : {&work_, &velocity_work_, &impulse_work_, &friction_work_}) w->restart();
   repeat_ = true;
 }
 
@@ -117,6 +125,7 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
   evaluated_ = true;
   clear_forces();
   const PairState state{position_, velocity_, mass_, node_, dt, repeat_};
+  dt_ = dt;
   repeat_ = false;
   // The obstacles into their own buffer first: their net force is the wall's reaction, reported.
   surface_report_ = ContactReport{};
@@ -136,6 +145,60 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
   for (int p : support_) {
     f[2 * node_[p]] += force_[p].x();
     f[2 * node_[p] + 1] += force_[p].y();
+  }
+}
+
+void ContactForces::constrain(const Predictor& predict, double beta, double inertia,
+                              Eigen::VectorXd& f) {
+  if (!kinematic_) return;
+  if (!evaluated_) throw InputError("contact: constrain() before evaluate()");
+  const auto& o = mesh_.offsets();
+  for (int c : surface_.cells())
+    for (int p = o[c]; p < o[c + 1]; ++p) {
+      const int n = node_[p];
+      const Prediction next = predict(n);
+      node_velocity_[n] = next.velocity;
+      inverse_mass_[n] = next.held ? 0.0 : 1.0 / mass_[p];
+    }
+  for (int p : impulse_support_) impulse_force_[p] = friction_force_[p] = Point::Zero();
+  impulse_support_.clear();
+  KinematicState state{position_,         node_, node_velocity_, inverse_mass_, normal_impulse_,
+                       friction_impulse_, dt_};
+  for (const auto& law : laws_) {
+    if (!law->kinematic()) continue;
+    const ContactReport r = law->constrain(surface_, state);
+    (law->external() ? plane_report_ : surface_report_) += r;
+    collect_impulses(*law, inertia / (beta * dt_), f);
+  }
+  std::sort(impulse_support_.begin(), impulse_support_.end());
+  impulse_support_.erase(std::unique(impulse_support_.begin(), impulse_support_.end()),
+                         impulse_support_.end());
+  impulse_work_.add(impulse_force_, impulse_support_, velocity_, dt_);
+  friction_work_.add(friction_force_, impulse_support_, velocity_, dt_);
+  // The pairs with a force are now both kinds': ascending and once each.
+  const std::size_t pushed = support_.size();
+  support_.insert(support_.end(), impulse_support_.begin(), impulse_support_.end());
+  std::inplace_merge(support_.begin(), support_.begin() + pushed, support_.end());
+  support_.erase(std::unique(support_.begin(), support_.end()), support_.end());
+}
+
+void ContactForces::collect_impulses(const ContactLaw& law, double to_force, Eigen::VectorXd& f) {
+  for (int p : law.touched()) {
+    const int n = node_[p];
+    if (normal_impulse_[n] == Point::Zero() && friction_impulse_[n] == Point::Zero()) continue;
+    const Point normal = to_force * normal_impulse_[n], friction = to_force * friction_impulse_[n];
+    normal_impulse_[n] = friction_impulse_[n] = Point::Zero();  // each node's once
+    if (impulse_force_[p] == Point::Zero() && friction_force_[p] == Point::Zero())
+      impulse_support_.push_back(p);
+    impulse_force_[p] += normal;
+    friction_force_[p] += friction;
+    const Point total = normal + friction;
+    force_[p] += total;
+    f[2 * n] += total.x();
+    f[2 * n + 1] += total.y();
+    if (!law.external()) continue;
+    plane_pair_force_[p] += total;
+    plane_force_ += total;
   }
 }
 

@@ -12,6 +12,12 @@
 // the half-step kinetic energy. So StepRecord's balance closes with contact to the integrator's
 // round-off, whatever the penalty law does.
 //
+// Kinematic laws (ContactLaw::kinematic: ExactPlane, ExactSurfaceContact) add nothing at that
+// evaluation; the integrator calls constrain() once every other force of the step is known, with
+// each node's predicted next half-step velocity, and their impulses come back as forces of the
+// step (KinematicState). Their work is booked the same way, in two accounts: the normal impulses'
+// (which only ever take energy: a plastic impact) and the friction impulses'.
+//
 // Friction (ContactFriction) follows the contact's tangential motion from one evaluation to the
 // next; an evaluation repeated at the same positions (after restart) sees none.
 //
@@ -19,8 +25,10 @@
 // momentum; an obstacle's forces are external (it takes the reaction: ContactLaw::external) and
 // are reported apart, as the "plane" report and net force on the mesh.
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/dofs/SplitDofMap.hpp"
@@ -37,14 +45,16 @@ namespace vorodg {
 class ContactForces {
  public:
   /// `mesh` must outlive this object. `surfaces`: contact between the surface cells of the mesh
-  /// (the law "cell-pairs"; off: obstacles only), with Coulomb friction `friction`. The grid of
-  /// the surface search starts at the mesh's h_avg.
+  /// by the registered law `surface_law` (ContactLaws; off: obstacles only), with Coulomb
+  /// friction `friction`; `law` is the penalty law of the penalty laws. The grid of the surface
+  /// search starts at the mesh's h_avg.
   ContactForces(const PolygonMesh& mesh, const PenaltyContact& law, bool surfaces = true,
-                const ContactFriction& friction = ContactFriction{});
+                const ContactFriction& friction = ContactFriction{},
+                const std::string& surface_law = "penalty-cell-pairs");
 
   /// One more contact law, evaluated after those added before it.
   void add_law(std::unique_ptr<ContactLaw> law);
-  /// The law "rigid-plane": a fixed rigid half-plane with the same penalty law and its own
+  /// The law "penalty-plane": a fixed rigid half-plane with the same penalty law and its own
   /// friction; `normal` points into free space.
   void add_plane(const Point& point, const Point& normal,
                  const ContactFriction& friction = ContactFriction{});
@@ -69,13 +79,33 @@ class ContactForces {
   /// dt, and books their work. Throws InputError before bind().
   void evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v, double dt, Eigen::VectorXd& f);
 
+  /// Whether a kinematic law is among the laws: then the integrator must call constrain().
+  bool kinematic() const { return kinematic_; }
+  /// What the integrator predicts for node i without the kinematic laws: its next half-step
+  /// velocity, and whether the loads hold it (a prescribed velocity: it takes no impulse).
+  struct Prediction {
+    Point velocity = Point::Zero();
+    bool held = false;
+  };
+  using Predictor = std::function<Prediction(int node)>;
+  /// The kinematic laws, after evaluate() at the same displacements, once every other force of
+  /// the step is known: each node moves next by dt v' with v' = predict(node).velocity =
+  /// w + beta dt a. Adds to f (node DOFs) the forces inertia J / (beta dt) of the laws' impulses J
+  /// (inertia: 1 + c dt / 2 with mass damping c, 1 at a restart), adds them to the pair forces and
+  /// the reports, and books their work. Nothing without a kinematic law.
+  void constrain(const Predictor& predict, double beta, double inertia, Eigen::VectorXd& f);
+
   /// The work of the contact forces on the mesh so far (ContactWork, over every segment).
-  double work() const { return booked_ + work_.work(); }
-  /// Of that work, what friction's slip has dissipated so far (surfaces and planes; >= 0).
-  double friction_dissipated() const { return friction_dissipated_; }
-  /// Of that work, what the velocity penalty (damping or plastic) has taken so far: minus the
-  /// trapezoid work of its part of the forces (0 without one).
-  double velocity_penalty_dissipated() const { return -(velocity_booked_ + velocity_work_.work()); }
+  double work() const { return work_.work() + impulse_work_.work() + friction_work_.work(); }
+  /// Of that work, what friction has dissipated so far (surfaces and planes; >= 0): the penalty
+  /// laws' slip work, and the work of the kinematic laws' friction impulses.
+  double friction_dissipated() const { return friction_dissipated_ - friction_work_.work(); }
+  /// Of that work, what was taken at approach so far: by a velocity penalty (damping or plastic;
+  /// minus the trapezoid work of its part of the forces) and by the kinematic laws' normal
+  /// impulses (minus their work). 0 with neither.
+  double velocity_penalty_dissipated() const {
+    return -(velocity_work_.work() + impulse_work_.work());
+  }
   /// Of the last evaluation: between surface cells, and against the obstacles (planes).
   const ContactReport& surface_report() const { return surface_report_; }
   const ContactReport& plane_report() const { return plane_report_; }
@@ -108,6 +138,8 @@ class ContactForces {
   void collect_support();
   /// Node i's number and mass on each of its pairs.
   void bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses, int i);
+  /// The kinematic laws' per-node buffers for `nodes` nodes.
+  void size_nodes(int nodes);
 
   const PolygonMesh& mesh_;
   PenaltyContact law_;
@@ -115,12 +147,23 @@ class ContactForces {
   SurfaceCells surface_;
   std::vector<std::unique_ptr<ContactLaw>> laws_;  // in evaluation order
   bool obstacles_ = false;                         // whether one of them is external
-  ContactWork work_;
-  double booked_ = 0.0;  // work of the segments before the current one
-  double friction_dissipated_ = 0.0;
-  ContactWork velocity_work_;          // the velocity penalty's part alone
-  double velocity_booked_ = 0.0;       // its work in the segments before the current one
+  SegmentedWork work_;                             // the force laws' forces
+  double friction_dissipated_ = 0.0;               // the force laws' slip work
+  SegmentedWork velocity_work_;                    // the velocity penalty's part alone
   std::vector<Point> velocity_force_;  // per pair: that part of force_ (empty without one)
+  // Kinematic laws: per node, the predicted velocity, 1 / m (0: held) and the impulses of a
+  // constrain(); per pair, the forces they became (normal and friction) and the pairs carrying
+  // them; the work of each.
+  bool kinematic_ = false;
+  std::vector<Point> node_velocity_, normal_impulse_, friction_impulse_;
+  std::vector<double> inverse_mass_;
+  std::vector<Point> impulse_force_, friction_force_;
+  std::vector<int> impulse_support_;
+  SegmentedWork impulse_work_, friction_work_;
+  double dt_ = 0.0;  // of the last evaluation
+  /// Turns the impulses at the nodes of `law`'s touched pairs into forces (to_force J) on one
+  /// pair each, into f, the pair forces and, for an obstacle, the plane's forces.
+  void collect_impulses(const ContactLaw& law, double to_force, Eigen::VectorXd& f);
   bool repeat_ = false;  // the next evaluation is at the positions of the last one (restart)
 
   std::vector<Point> reference_;  // X per pair

@@ -15,6 +15,7 @@
 #include "core/geometry/Rectangle.hpp"
 #include "core/material/IsotropicElasticity.hpp"
 #include "dynamics/BulkViscosity.hpp"
+#include "dynamics/contact/ContactLaws.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
 #include "fracture/CohesiveLaw.hpp"
 #include "fracture/MohrCoulomb.hpp"
@@ -37,9 +38,9 @@ struct DynamicsBody {
 /// A fixed rigid plane the bodies meet.
 struct DynamicsWall {
   Point point = Point::Zero();
-  Point normal = Point(-1.0, 0.0);  // into free space; normalized by the reader
-  double friction = 0.0;            // Coulomb's mu between the plane and the bodies
-  std::string law = "rigid-plane";  // how it acts: a registered obstacle law (ContactLaws)
+  Point normal = Point(-1.0, 0.0);              // into free space; normalized by the reader
+  double friction = 0.0;                        // Coulomb's mu between the plane and the bodies
+  std::string law = default_contact_law(true);  // how it acts: an obstacle law (ContactLaws)
 };
 
 struct ExplicitParameters {
@@ -59,9 +60,10 @@ struct ExplicitParameters {
   Eigen::Vector2d gravity = Eigen::Vector2d::Zero();  // body force per unit mass, m/s^2
   // contact
   std::optional<DynamicsWall> wall;
-  bool contact = true;  // surface-to-surface contact
-  PenaltyParameters penalty;
-  double contact_friction = 0.0;  // Coulomb's mu between surface cells
+  bool contact = true;                                   // surface-to-surface contact
+  std::string contact_law = default_contact_law(false);  // its law (ContactLaws)
+  PenaltyParameters penalty;                             // of the penalty laws (and of none else)
+  double contact_friction = 0.0;                         // Coulomb's mu between surface cells
   /// > 0: the displacement penalty follows from it instead of alpha: the bodies resting under
   /// gravity on the wall sink by at most this fraction of h_avg (ExplicitModel).
   double quiescent_penetration = 0.0;

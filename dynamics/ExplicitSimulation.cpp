@@ -124,11 +124,14 @@ InternalForce ExplicitSimulation::make_force(const SplitDofMap& dofs, const Crac
   // Bulk viscosity's linear term damps the highest mode by xi = b1, which lowers the critical
   // step by sqrt(1 + b1^2) - b1; its quadratic term is checked step by step against what is
   // left (BulkViscosity::set_step_ratio). The plastic contact penalty lowers it by 1 / sqrt(2)
-  // (PenaltyContact::step_factor).
+  // (PenaltyContact::step_factor), where a penalty law is in use.
+  std::vector<std::string> laws;
+  if (parameters.contact) laws.push_back(parameters.contact_law);
+  if (parameters.wall) laws.push_back(parameters.wall->law);
   const double factor = (parameters.bulk_viscosity.linear > 0.0
                              ? BulkViscosity::step_factor(parameters.bulk_viscosity.linear)
                              : 1.0) *
-                        PenaltyContact(parameters.penalty).step_factor();
+                        contact_step_factor(laws, PenaltyContact(parameters.penalty));
   dt *= factor;
   bulk_step_ratio = parameters.safety * factor;
   steps = parameters.steps > 0 ? parameters.steps
@@ -156,7 +159,8 @@ void ExplicitSimulation::make_integrator(InternalForce force, const SplitDofMap&
   }
   contact_stiffness = penalty.stiffness > 0.0 ? penalty.stiffness : NAN;
   contact.emplace(mesh(), PenaltyContact(penalty), parameters.contact,
-                  ContactFriction(parameters.contact_friction, "contact.friction"));
+                  ContactFriction(parameters.contact_friction, "contact.friction"),
+                  parameters.contact_law);
   if (parameters.wall)
     contact->add_law(
         make_contact_law(parameters.wall->law,

@@ -1,11 +1,11 @@
 // A contact law added from outside the library, in this file alone, with one registration line:
 // a rigid plane that pushes each vertex behind it with a linear spring k d, k = alpha m / dt^2,
-// and nothing else (no damping, no friction): what the shipped "rigid-plane" does at its
+// and nothing else (no damping, no friction): what the shipped "penalty-plane" does at its
 // defaults, written again without PenaltyContact. A scene chooses it by `wall.law`, and it must
 // run end to end as the shipped law does:
 //   1. the registry knows it after the shipped laws, as an obstacle, and the dynamics scene reader
 //      takes it as a wall's law (and refuses an unknown name with one line naming the key);
-//   2. a block thrown at the wall with it rebounds as with "rigid-plane" at the same alpha: the
+//   2. a block thrown at the wall with it rebounds as with "penalty-plane" at the same alpha: the
 //      rebound speed, the contact time and the peak wall force agree to 1e-12 relative, and the
 //      energy balance closes to 1e-10 of the input energy.
 #include <gtest/gtest.h>
@@ -120,7 +120,7 @@ TEST_F(ContactLawSeam, AToyLawRunsAWallImpactAsTheShippedPlaneDoes) {
   const DynamicsRecord toy = run("spring-plane");
   EXPECT_EQ(SpringPlane::evaluations, toy.steps + 1);  // once per force evaluation
   const long toy_evaluations = SpringPlane::evaluations;
-  const DynamicsRecord shipped = run("rigid-plane");
+  const DynamicsRecord shipped = run("penalty-plane");
   EXPECT_EQ(SpringPlane::evaluations, toy_evaluations);  // the shipped run did not call it
   ASSERT_TRUE(toy.complete) << toy.failure;
   ASSERT_TRUE(shipped.complete) << shipped.failure;

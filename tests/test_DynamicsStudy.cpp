@@ -72,13 +72,15 @@ TEST_F(DynamicsStudy, WallImpactAtNormalIncidence) {
       m.energy_balance_error);
   ASSERT_TRUE(r.complete) << r.failure;
   EXPECT_TRUE(m.contact_ended);
-  EXPECT_LT(m.max_penetration_over_h, 0.01);
+  // The exact plane (the default): no vertex behind it beyond round-off, the contact as long as
+  // the bar's round trip within 2 %, and a rebound that the mesh's dispersion keeps below the
+  // impact speed (0.921 here at h = L / 40; it tends to 1 as h does: test_ExactPlane).
+  EXPECT_LT(m.max_penetration_over_h, 1e-12);
   EXPECT_DOUBLE_EQ(m.impact_velocity, 1.0);
   EXPECT_DOUBLE_EQ(m.rebound_estimate, 1.0);
-  EXPECT_GT(m.rebound_velocity, 0.95);
+  EXPECT_GT(m.rebound_velocity, 0.9);
   EXPECT_LE(m.rebound_velocity, 1.0 + 1e-6);
-  EXPECT_GT(m.contact_time, m.contact_time_estimate);
-  EXPECT_LT(m.contact_time, 1.4 * m.contact_time_estimate);
+  EXPECT_NEAR(m.contact_time / m.contact_time_estimate, 1.0, 0.02);
   EXPECT_LT(m.energy_balance_error, 1e-10);
   // The wall's impulse is the change of the block's normal momentum, M (rebound + impact) with
   // M = rho x area (steel's 7800 kg/m^3 on 0.4 x 0.1), to round-off: nothing else acts on it.

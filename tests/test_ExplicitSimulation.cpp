@@ -26,7 +26,7 @@ ExplicitParameters thrown_block() {
   ExplicitParameters p;
   p.bodies = {DynamicsBody{kBlock, Eigen::Vector2d(1.0, 0.0), 0.0}};
   p.E = 200e9, p.nu = 0.3, p.density = 7800.0;
-  p.wall = DynamicsWall{Point(kBlock.x1(), 0.0), Point(-1.0, 0.0), 0.0, "rigid-plane"};
+  p.wall = DynamicsWall{Point(kBlock.x1(), 0.0), Point(-1.0, 0.0), 0.0, "penalty-plane"};
   p.contact = false;  // the wall only
   p.safety = 0.9;
   p.end = 4.0 * kBlock.width() / p.bar_speed();

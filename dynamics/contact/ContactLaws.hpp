@@ -26,6 +26,7 @@ struct ContactLawEntry {
   std::string doc;        // one line
   bool obstacle = false;  // an obstacle outside the mesh (ContactLaw::external)
   std::function<std::unique_ptr<ContactLaw>(const ContactLawSettings&)> make;
+  bool penalty = false;  // reads the penalty law (ContactLawSettings::penalty), its step factor
 };
 
 /// Every contact law known, in registration order: the shipped ones first.
@@ -33,6 +34,14 @@ const std::vector<ContactLawEntry>& contact_laws();
 /// Adds one (a name already known is refused with InputError). Returns true, so that a file can
 /// register at static initialization: `const bool registered = register_contact_law(...)`.
 bool register_contact_law(ContactLawEntry entry);
+/// The entry named `name`; throws InputError for an unknown name.
+const ContactLawEntry& contact_law(const std::string& name);
+/// The default law of a wall (obstacle) or between surface cells: the first registered of its
+/// kind.
+std::string default_contact_law(bool obstacle);
+/// What the named laws leave of the critical step: `penalty`'s step factor if one of them reads
+/// the penalty law (PenaltyContact::step_factor), else 1.
+double contact_step_factor(const std::vector<std::string>& names, const PenaltyContact& penalty);
 /// The law named `name`, made from `settings`; throws InputError for an unknown name.
 std::unique_ptr<ContactLaw> make_contact_law(const std::string& name,
                                              const ContactLawSettings& settings);

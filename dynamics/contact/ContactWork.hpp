@@ -39,4 +39,24 @@ class ContactWork {
   bool started_ = false;
 };
 
+/// A ContactWork over several segments: the state may jump between them (a start, a remap), so
+/// each segment starts its own trapezoid, and the work of the finished ones is kept.
+class SegmentedWork {
+ public:
+  void add(std::span<const Point> f, std::span<const int> support, std::span<const Point> velocity,
+           double dt) {
+    current_.add(f, support, velocity, dt);
+  }
+  /// The next add starts a new segment (it only records).
+  void restart() {
+    booked_ += current_.work();
+    current_ = ContactWork{};
+  }
+  double work() const { return booked_ + current_.work(); }
+
+ private:
+  ContactWork current_;
+  double booked_ = 0.0;
+};
+
 }  // namespace vorodg

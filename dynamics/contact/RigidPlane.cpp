@@ -12,14 +12,7 @@ namespace vorodg {
 
 RigidPlane::RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law,
                        const ContactFriction& friction)
-    : point_(point), normal_(normal), law_(law), friction_(friction) {
-  const double length = normal.norm();
-  if (!point.allFinite() || !std::isfinite(length) || length == 0.0)
-    throw InputError("rigid plane: expected a finite point and a nonzero finite normal, found (" +
-                     std::to_string(point.x()) + ", " + std::to_string(point.y()) + ") and (" +
-                     std::to_string(normal.x()) + ", " + std::to_string(normal.y()) + ")");
-  normal_ /= length;
-}
+    : plane_(point, normal, "rigid plane"), law_(law), friction_(friction) {}
 
 ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairState& state,
                                      std::span<Point> force, std::span<Point> velocity_force) {
@@ -46,11 +39,11 @@ ContactReport RigidPlane::add_forces(const SurfaceCells& surface, const PairStat
       if (depth <= 0.0 || !taken.insert(state.node_of(p)).second) continue;
       const double mass =
           state.mass.empty() ? 0.0 : PenaltyContact::reduced_mass(state.mass[p], kRigid);
-      const double rate = state.velocity.empty() ? 0.0 : -state.velocity[p].dot(normal_);
+      const double rate = state.velocity.empty() ? 0.0 : -state.velocity[p].dot(plane_.normal);
       const auto r = law_.respond(depth, rate, mass, state.dt);
-      force[p] += r.force * normal_;
+      force[p] += r.force * plane_.normal;
       touched_.push_back(p);
-      if (!velocity_force.empty()) velocity_force[p] += r.velocity_force * normal_;
+      if (!velocity_force.empty()) velocity_force[p] += r.velocity_force * plane_.normal;
       if (friction_.active()) add_friction(p, r, state, force, report);
       ++report.contacts;
       report.potential += r.potential;
@@ -67,7 +60,7 @@ void RigidPlane::add_friction(int p, const PenaltyContact::Response& normal, con
   const auto known = shear_.find(p);
   double shear = known == shear_.end() ? 0.0 : known->second;
   const Point velocity = state.velocity.empty() ? Point::Zero() : state.velocity[p];
-  force[p] += friction_.force(normal_, velocity, normal, state, shear, report, "rigid plane");
+  force[p] += friction_.force(plane_.normal, velocity, normal, state, shear, report, "rigid plane");
   shear_next_.emplace(p, shear);
 }
 

@@ -14,6 +14,7 @@
 #include "dynamics/contact/ContactFriction.hpp"
 #include "dynamics/contact/ContactLaw.hpp"
 #include "dynamics/contact/ContactReport.hpp"
+#include "dynamics/contact/HalfPlane.hpp"
 #include "dynamics/contact/PairState.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
 #include "dynamics/contact/SurfaceCells.hpp"
@@ -27,11 +28,11 @@ class RigidPlane final : public ContactLaw {
   RigidPlane(const Point& point, const Point& normal, const PenaltyContact& law,
              const ContactFriction& friction = ContactFriction{});
 
-  const Point& point() const { return point_; }
-  const Point& normal() const { return normal_; }
+  const Point& point() const { return plane_.point; }
+  const Point& normal() const { return plane_.normal; }
   const ContactFriction& friction() const { return friction_; }
   /// Signed distance from the plane, negative inside the solid.
-  double gap(const Point& x) const { return (x - point_).dot(normal_); }
+  double gap(const Point& x) const { return plane_.gap(x); }
 
   /// Adds the plane's forces on the vertices of surface cells to `force` (one entry per pair;
   /// each node counted once, on its first pair in surface order), their velocity penalty's part
@@ -48,8 +49,7 @@ class RigidPlane final : public ContactLaw {
   void add_friction(int p, const PenaltyContact::Response& normal, const PairState& state,
                     std::span<Point> force, ContactReport& report);
 
-  Point point_;
-  Point normal_;
+  HalfPlane plane_;
   PenaltyContact law_;
   ContactFriction friction_;
   // The shear of each contacting pair at the last evaluation and at this one.

@@ -15,46 +15,11 @@ std::uint64_t key_of(int who, int cell) {
   return (static_cast<std::uint64_t>(who) << 32) | static_cast<std::uint32_t>(cell);
 }
 
-std::span<const Point> loop_of(const PolygonMesh& mesh, std::span<const Point> position, int c) {
-  return position.subspan(mesh.offsets()[c], mesh.cell_size(c));
-}
-
-/// The cell's current bounding box. A non-finite vertex would slip through the box's min/max
-/// unnoticed, so it is refused here, naming the cell.
-Box box_of(std::span<const Point> loop, int cell) {
-  Box box;
-  for (const Point& p : loop) {
-    if (!p.allFinite())
-      throw NumericalError("surface contact: cell " + std::to_string(cell) +
-                           " has a non-finite vertex position");
-    box.extend(p);
-  }
-  return box;
-}
-
 }  // namespace
 
 SurfaceContact::SurfaceContact(const PenaltyContact& law, double grid_spacing,
                                const ContactFriction& friction)
-    : law_(law), friction_(friction), candidates_(grid_spacing) {}
-
-const std::vector<IndexPair>& SurfaceContact::find_pairs(const SurfaceCells& surface,
-                                                         std::span<const Point> position) {
-  const PolygonMesh& mesh = surface.mesh();
-  if (static_cast<int>(position.size()) != mesh.offsets().back())
-    throw InputError("surface contact: " + std::to_string(position.size()) +
-                     " positions: expected one per (cell, vertex) pair, " +
-                     std::to_string(mesh.offsets().back()));
-  const auto cells = surface.cells();
-  boxes_.resize(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    boxes_[i] = box_of(loop_of(mesh, position, cells[i]), cells[i]);
-  surface_pairs_ = &candidates_.overlapping(surface, position, boxes_);
-  cell_pairs_.clear();
-  for (const IndexPair& ij : *surface_pairs_)
-    cell_pairs_.push_back({cells[ij.first], cells[ij.second]});
-  return cell_pairs_;
-}
+    : law_(law), friction_(friction), search_(grid_spacing) {}
 
 ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const PairState& state,
                                          std::span<Point> force, std::span<Point> velocity_force) {
@@ -64,14 +29,14 @@ ContactReport SurfaceContact::add_forces(const SurfaceCells& surface, const Pair
     throw InputError("surface contact: " + std::to_string(force.size()) +
                      " force entries: expected one per (cell, vertex) pair, " +
                      std::to_string(state.position.size()));
-  find_pairs(surface, state.position);
+  search_.find(surface, state.position);
   taken_.clear();
   touched_.clear();
   ContactReport report;
-  report.candidates = static_cast<int>(surface_pairs_->size());
+  report.candidates = static_cast<int>(search_.surface_pairs().size());
   inside_next_.clear();
   tunnelled_next_.clear();
-  for (const IndexPair& ij : *surface_pairs_) {
+  for (const IndexPair& ij : search_.surface_pairs()) {
     test_pass(surface, ij.first, ij.second, state, force, velocity_force, report);
     test_pass(surface, ij.second, ij.first, state, force, velocity_force, report);
   }
@@ -90,7 +55,7 @@ std::optional<SurfaceContact::Acting> SurfaceContact::acting_depth(std::uint64_t
     if (const auto known = inside_.find(key); known != inside_.end()) {
       offset = std::min(known->second.offset, depth);  // the least depth seen
       shear = known->second.shear;
-    } else if (depth <= kTunnelDepth * std::sqrt(mesh.cell_area(b))) {
+    } else if (depth <= SurfaceSearch::kTunnelDepth * std::sqrt(mesh.cell_area(b))) {
       offset = std::max(depth - reach, 0.0);
       report.new_late += offset > 0.0;
     } else {
@@ -114,11 +79,11 @@ void SurfaceContact::test_pass(const SurfaceCells& surface, int i, int j, const 
   const PolygonMesh& mesh = surface.mesh();
   const int a = surface.cells()[i], b = surface.cells()[j];
   const int base_a = mesh.offsets()[a], base_b = mesh.offsets()[b], nb = mesh.cell_size(b);
-  const auto loop_a = loop_of(mesh, state.position, a);
-  const auto loop_b = loop_of(mesh, state.position, b);
+  const auto loop_a = SurfaceSearch::loop(mesh, state.position, a);
+  const auto loop_b = SurfaceSearch::loop(mesh, state.position, b);
   const auto exits =
       surface.has_exposed_edge(b) ? surface.exposed_edges(b) : std::span<const char>{};
-  const Box& box_b = boxes_[j];
+  const Box& box_b = search_.box(j);
   for (std::size_t k = 0; k < loop_a.size(); ++k) {
     if (!box_b.contains(loop_a[k])) continue;  // cheap test first: most candidates never touch
     const auto pen = PolygonPenetration::of_point(loop_a[k], loop_b, exits);

@@ -19,11 +19,12 @@
 // from nothing (measured: a tenth of a cell's size is 10^3 times the input energy of a falling
 // column; a twentieth, 6 % of it). Two cases:
 //  - Late contacts: first found deeper than kReachSlack times the step's approach, yet within
-//    kTunnelDepth of the cell's size. The law acts on the depth beyond the one it was found at
-//    (the offset), so the contact stops it going deeper and stores nothing it was not given.
-//    The offset shrinks as the vertex backs out (it is the least depth seen), and the contact
-//    is forgotten once the vertex is out. The report counts them (`late`, `new_late`).
-//  - Tunnelled vertices: first found deeper than kTunnelDepth of the cell's size. Such a vertex
+//    SurfaceSearch::kTunnelDepth of the cell's size. The law acts on the depth beyond the one it
+//    was found at (the offset), so the contact stops it going deeper and stores nothing it was not
+//    given. The offset shrinks as the vertex backs out (it is the least depth seen), and the
+//    contact is forgotten once the vertex is out. The report counts them (`late`, `new_late`).
+//  - Tunnelled vertices: first found deeper than SurfaceSearch::kTunnelDepth of the cell's size.
+//  Such a vertex
 //    is deep in the body, where the nearest exit says little about how it got there, so it gets
 //    no force for as long as it stays inside (`tunnelled`, `new_tunnels`).
 // Without velocities in the state every first finding within kTunnelDepth is taken as it is.
@@ -44,6 +45,7 @@
 #include "dynamics/contact/PairState.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
 #include "dynamics/contact/SurfaceCells.hpp"
+#include "dynamics/contact/SurfaceSearch.hpp"
 
 namespace vorodg {
 
@@ -68,15 +70,17 @@ class SurfaceContact final : public ContactLaw {
   /// whose current boxes overlap and that are not neighbours, each once, in a fixed order (by
   /// place in the surface order, first then second). These are what add_forces tests.
   const std::vector<IndexPair>& find_pairs(const SurfaceCells& surface,
-                                           std::span<const Point> position);
-  const std::vector<IndexPair>& cell_pairs() const { return cell_pairs_; }
+                                           std::span<const Point> position) {
+    return search_.find(surface, position);
+  }
+  const std::vector<IndexPair>& cell_pairs() const { return search_.cell_pairs(); }
   /// The pairs the last add_forces gave a force (each contact's vertex and edge ends, in the
   /// order it pushed them; with repeats).
   std::span<const int> touched() const override { return touched_; }
 
   const PenaltyContact& law() const { return law_; }
   const ContactFriction& friction() const { return friction_; }
-  const ContactCandidates& candidates() const { return candidates_; }
+  const ContactCandidates& candidates() const { return search_.candidates(); }
 
  private:
   /// Pushes the vertices of surface cell i out of surface cell j (indices in surface order).
@@ -97,20 +101,14 @@ class SurfaceContact final : public ContactLaw {
                     const PenaltyContact::Response& normal, double previous_shear,
                     const PairState& state, std::span<Point> force, ContactReport& report);
 
-  /// A first depth beyond this fraction of the target's size (the root of its reference area)
-  /// is a tunnelled vertex.
-  static constexpr double kTunnelDepth = 0.1;
   /// A first depth beyond this multiple of the step's approach (|v_n| dt) is a late contact.
   /// 2 leaves room for the target edge turning and bending within the step.
   static constexpr double kReachSlack = 2.0;
 
   PenaltyContact law_;
   ContactFriction friction_;
-  ContactCandidates candidates_;
-  std::vector<Box> boxes_;                                 // per surface cell, in surface order
-  const std::vector<IndexPair>* surface_pairs_ = nullptr;  // the same, in surface order
-  std::vector<IndexPair> cell_pairs_;                      // mesh cell ids
-  std::unordered_set<std::uint64_t> taken_;                // (node, target cell) keys of this step
+  SurfaceSearch search_;
+  std::unordered_set<std::uint64_t> taken_;  // (node, target cell) keys of this step
   std::vector<int> touched_;
   // (pair, target cell) keys of the penetrations found at the last evaluation and at this one:
   // those that got a force, with their offsets and friction shears, and those left alone as

@@ -137,11 +137,12 @@ std::vector<SceneKey> impact_keys() {
   };
 }
 
-/// The registered contact laws that are obstacles (a wall can be any of them).
-std::vector<ContactLawEntry> obstacle_laws() {
+/// The registered contact laws that are obstacles (a wall can be any of them), or not (between
+/// surface cells).
+std::vector<ContactLawEntry> laws_of_kind(bool obstacle) {
   std::vector<ContactLawEntry> out;
   for (const ContactLawEntry& e : contact_laws())
-    if (e.obstacle) out.push_back(e);
+    if (e.obstacle == obstacle) out.push_back(e);
   return out;
 }
 
@@ -160,8 +161,9 @@ std::vector<SceneKey> contact_keys() {
               "obliquity; else [-1, 0]",
               "not [0, 0], each |component| <= 1e6",
               "the plane's normal, pointing into free space (normalized)", -1e6, false, 1e6),
-      key("wall.law", "string", obstacle_laws().front().name, name_list(obstacle_laws()),
-          "how the plane acts on the bodies (docs/contact.md, \"Contact laws\")"),
+      key("wall.law", "string", default_contact_law(true), name_list(laws_of_kind(true)),
+          "how the plane acts on the bodies: exact (an impulse per vertex, no parameter) or the "
+          "report's penalty (contact.* below) (docs/contact.md, \"Contact laws\")"),
       bounded("wall.friction", "number",
               contact_default([](const ContactDefaults& d) { return exact_text(d.wall_friction); }),
               "0 <= mu <= 10",
@@ -170,6 +172,10 @@ std::vector<SceneKey> contact_keys() {
               0.0, false, 10.0),
       key("contact.enabled", "bool", "true", "true or false",
           "contact between the surface cells of every body (the wall acts whatever this says)"),
+      key("contact.law", "string", default_contact_law(false), name_list(laws_of_kind(false)),
+          "how surface cells act on each other: exact (impulses, no parameter) or the report's "
+          "penalty (alpha, damping_ratio, plastic, quiescent_penetration: they act on the "
+          "penalty laws only) (docs/contact.md, \"Contact laws\")"),
       bounded("contact.alpha", "number", "0.1", "0 < alpha <= 1",
               "penalty stiffness k = alpha m / dt^2 (docs/contact.md)", 0.0, true, 1.0, false),
       bounded("contact.damping_ratio", "number", "0", "0 <= zeta <= 1",

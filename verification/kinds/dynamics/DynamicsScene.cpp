@@ -28,11 +28,12 @@ std::string problem_words() {
   return words;
 }
 
-/// " rigid-plane ... ": the contact laws a wall can be, for word().
-std::string obstacle_law_words() {
+/// " exact-plane penalty-plane ... ": the contact laws a wall (obstacle) or the surface cells
+/// can have, for word().
+std::string contact_law_words(bool obstacle) {
   std::string words = " ";
   for (const ContactLawEntry& e : contact_laws())
-    if (e.obstacle) words += e.name + " ";
+    if (e.obstacle == obstacle) words += e.name + " ";
   return words;
 }
 
@@ -123,7 +124,7 @@ void DynamicsSceneReader::read_wall() {
   w.normal = point(o, "wall.normal", fallback.normal);
   if (w.normal.norm() == 0.0) o.fail_value("normal", "expected not [0, 0]");
   w.normal.normalize();
-  w.law = word(o, "wall.law", obstacle_law_words());
+  w.law = word(o, "wall.law", contact_law_words(true));
   w.friction = number(o, "wall.friction", problem_->default_contact().wall_friction);
   o.finish();
   const double tolerance = 1e-12 * body.domain.scale();
@@ -145,6 +146,7 @@ void DynamicsSceneReader::read_wall() {
 void DynamicsSceneReader::read_contact() {
   SceneObject c = object("contact");
   s_.contact = flag(c, "contact.enabled");
+  s_.contact_law = word(c, "contact.law", contact_law_words(false));
   s_.penalty.alpha = number(c, "contact.alpha");
   s_.penalty.damping_ratio = number(c, "contact.damping_ratio");
   const ContactDefaults defaults = problem_->default_contact();

@@ -1,0 +1,50 @@
+#include "dynamics/contact/ExactPlane.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/util/Errors.hpp"
+
+namespace vorodg {
+
+ExactPlane::ExactPlane(const Point& point, const Point& normal, const ContactFriction& friction)
+    : plane_(point, normal, "exact plane"), friction_(friction) {}
+
+ContactReport ExactPlane::constrain(const SurfaceCells& surface, KinematicState& state) {
+  const PolygonMesh& mesh = surface.mesh();
+  check_state(mesh, state, "exact plane");
+  seen_.resize(state.velocity.size(), -1);
+  ++evaluation_;
+  touched_.clear();
+  ContactReport report;
+  const Point tangent(-plane_.normal.y(), plane_.normal.x());
+  for (int c : surface.cells()) {
+    ++report.candidates;
+    for (int p = mesh.offsets()[c]; p < mesh.offsets()[c + 1]; ++p) {
+      const int i = state.node[p];
+      if (seen_[i] == evaluation_) continue;
+      seen_[i] = evaluation_;
+      const double ahead = gap(state.predicted(p));
+      if (!std::isfinite(ahead))
+        throw NumericalError("exact plane: cell " + std::to_string(c) +
+                             " has a non-finite vertex position or velocity");
+      if (ahead >= 0.0 || state.inverse_mass[i] == 0.0) continue;
+      const double m = 1.0 / state.inverse_mass[i];
+      // Normal: land on the plane, the approach velocity gone.
+      const Point jn = m * (-ahead / state.dt) * plane_.normal;
+      // Friction: stop the sliding the node would do, within mu |J_n|.
+      const double stick = -m * (state.velocity[i] + jn / m).dot(tangent);
+      const double limit = friction_.mu() * jn.norm();
+      const double jt = std::clamp(stick, -limit, limit);
+      report.sliding += std::abs(stick) > limit && friction_.active();
+      state.apply(i, jn, jt * tangent);
+      touched_.push_back(p);
+      ++report.contacts;
+      report.max_depth = std::max(report.max_depth, -gap(state.position[p]));
+    }
+  }
+  return report;
+}
+
+}  // namespace vorodg

@@ -1,6 +1,7 @@
 #include "dynamics/problems/DynamicsProbe.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vorodg {
 
@@ -25,6 +26,10 @@ DynamicsProbe::DynamicsProbe(const ExplicitParameters& physics, const DynamicsPr
     m_.contact_time_estimate = 2.0 * extent(physics.bodies[0].domain, n) / physics.bar_speed();
     m_.peak_wall_force = 0.0;
     m_.wall_impulse = 0.0;
+    m_.penalty_ratio = bodies.h_avg / (2.0 * physics.dilatational_speed() * run.dt());
+    m_.peak_wall_force_window = 0.0;
+    const double transit = bodies.h_avg / physics.dilatational_speed();
+    wall_window_.assign(std::max<long>(1, std::lround(transit / run.dt())), 0.0);
     m_.peak_wall_force_estimate = physics.density * physics.bar_speed() * m_.impact_velocity *
                                   extent(physics.bodies[0].domain, Point(-n.y(), n.x()));
   }
@@ -44,6 +49,11 @@ void DynamicsProbe::observe_contact() {
     m_.peak_wall_force = std::max(m_.peak_wall_force, contact->plane_force().norm());
     const double f = contact->plane_force().dot(physics_.wall->normal);
     if (observed_) m_.wall_impulse += 0.5 * run_.dt() * (last_wall_force_ + f);
+    window_sum_ += f - wall_window_[window_next_];
+    wall_window_[window_next_] = f;
+    window_next_ = (window_next_ + 1) % wall_window_.size();
+    m_.peak_wall_force_window =
+        std::max(m_.peak_wall_force_window, window_sum_ / static_cast<double>(wall_window_.size()));
     last_wall_force_ = f;
     observed_ = true;
   }

@@ -38,11 +38,20 @@ struct DynamicsMeasures {
   // the largest net force of the wall on the bodies (per unit thickness), beside the 1D bar's
   // rho c_bar v_n times the body's width across the normal
   double peak_wall_force = NAN, peak_wall_force_estimate = NAN;
+  // the largest of the wall's normal force averaged over a cell's transit time h_avg / c (c
+  // dilatational): what converges with the step where the peak itself does not (an exact
+  // plane stops a vertex within one step, with a force m v / dt)
+  double peak_wall_force_window = NAN;
   // the wall's impulse on the bodies along its normal (per unit thickness, N s/m): its force
   // summed over the steps as the integrator applies it (the trapezoid rule of velocity Verlet),
   // so that with nothing else acting it is the change of the bodies' normal momentum; the 1D
   // elastic bar's is 2 M v_n, a plastic impact's M v_n
   double wall_impulse = NAN;
+  // the report's plastic velocity penalty k_v = m / dt at this step and mesh: R = h / (2 c dt)
+  // (c dilatational, h = h_avg), the 1D ratio of a surface node's mass to the impedance the step
+  // gives it; that penalty passes R / (1 + R) of an impact's stress rho c v (docs/contact.md).
+  // Recorded for every run with a wall, whatever law it uses.
+  double penalty_ratio = NAN;
   // column-impact: the first time a vertex of the column's rear (upper) half touches the plane
   double rear_strike_time = NAN;
   // three-point-bend: the largest load (N: the load point's reaction times the thickness), the
@@ -116,7 +125,11 @@ class DynamicsProbe {
   std::unique_ptr<ProblemProbe> problem_;  // the problem's own measures (may be none)
   bool in_contact_ = false;
   double last_wall_force_ = 0.0;  // along the normal, at the last step observed
-  bool observed_ = false;         // a step has been observed (the impulse's first end)
+  // The wall's normal force over the last steps of a cell transit time, and their sum
+  std::vector<double> wall_window_;
+  std::size_t window_next_ = 0;
+  double window_sum_ = 0.0;
+  bool observed_ = false;  // a step has been observed (the impulse's first end)
 };
 
 }  // namespace vorodg

@@ -226,6 +226,13 @@ std::vector<SceneKey> time_keys() {
               1e9),
       bounded("time.history_every", "integer", "1", "1 <= history_every <= 1e9",
               "steps between rows of the history", 1.0, false, 1e9),
+      key("time.refinement", "list of numbers", "none",
+          "two or more fractions of the step, descending, in (0, 1]",
+          "a time-refinement study: every run at each fraction of its step (safety x fraction), "
+          "into DIR/dt-<fraction>/ (DIR/<variant>/dt-<fraction>/ with variants); "
+          "DIR/time-refinement.md and .csv give each measure's values, their differences, the "
+          "observed order and the extrapolated value, and the Kolmogorov-Smirnov distance of "
+          "the fragment masses between successive steps (docs/dynamics.md, \"Time refinement\")"),
   };
 }
 

@@ -198,6 +198,7 @@ void DynamicsSceneReader::read_time() {
                  "(the cell bound holds for every crack pattern)");
   s_.output_every = integer(t, "time.output_every");
   s_.history_every = integer(t, "time.history_every");
+  read_refinement(t);
   t.finish();
   SceneObject o = object("outputs");
   s_.vtu = flag(o, "outputs.vtu");
@@ -212,6 +213,21 @@ void DynamicsSceneReader::read_time() {
   }
   note("outputs.snapshots", listed.empty() ? "none" : "[" + listed + "]");
   o.finish();
+}
+
+void DynamicsSceneReader::read_refinement(SceneObject& t) {
+  s_.refinement = t.numbers("refinement", {});
+  std::string listed;
+  for (std::size_t i = 0; i < s_.refinement.size(); ++i) {
+    const double f = s_.refinement[i];
+    if (!(f > 0.0 && f <= 1.0) || (i > 0 && !(f < s_.refinement[i - 1])))
+      t.fail_value("refinement", "expected descending fractions in (0, 1], found " + fmt(f) +
+                                     " at [" + std::to_string(i) + "]");
+    listed += (listed.empty() ? "" : ", ") + exact_text(f);
+  }
+  if (s_.refinement.size() == 1)
+    t.fail_value("refinement", "expected two or more fractions of the step, found one");
+  note("time.refinement", listed.empty() ? "none" : "[" + listed + "]");
 }
 
 DynamicsScene DynamicsSceneReader::read() {
@@ -251,8 +267,9 @@ const std::string& DynamicsScene::setting(const std::string& key) const {
   throw std::out_of_range("dynamics scene: no setting " + key);
 }
 
-DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source, bool force) {
-  const json root = parse_scene_json(text, source);
+namespace {
+
+DynamicsScene parse_parts(const json& root, const std::string& source, bool force) {
   if (root.contains("perturb")) return perturbed_scene(root, source, force);
   if (!root.contains("variants")) return DynamicsSceneReader(root, source, force).read();
   json base;
@@ -263,6 +280,17 @@ DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& s
     top.variants.back().name = top.name;
   }
   return top;
+}
+
+}  // namespace
+
+DynamicsScene parse_dynamics_scene(const std::string& text, const std::string& source, bool force) {
+  DynamicsScene top = parse_parts(parse_scene_json(text, source), source, force);
+  return top.refinement.empty() &&
+                 std::none_of(top.variants.begin(), top.variants.end(),
+                              [](const DynamicsScene& v) { return !v.refinement.empty(); })
+             ? top
+             : refined_scene(std::move(top), source);
 }
 
 DynamicsScene read_dynamics_scene(const std::filesystem::path& path, bool force) {

@@ -38,6 +38,11 @@ struct DynamicsScene : ExplicitParameters {
   /// Every key and the value used, in the table's order (the echo and summary.json).
   std::vector<std::pair<std::string, std::string>> settings;
   std::vector<DynamicsScene> variants;
+  /// time.refinement: the fractions of the step each part runs at (empty: none), and the
+  /// fraction this part runs at (its safety already holds it).
+  std::vector<double> refinement;
+  double step_fraction = 1.0;
+  std::string refinement_base;  // a refined part: the label of the part it refines
   /// perturb (top level only): the key its variants change and each variant's value (JSON).
   std::string perturb_key;
   std::vector<std::string> perturb_values;

@@ -16,6 +16,10 @@ namespace vorodg {
 
 /// A scene with `perturb` as variants perturb-<i> (PerturbedScene.cpp).
 DynamicsScene perturbed_scene(const nlohmann::json& root, const std::string& source, bool force);
+/// `time.refinement` (TimeRefinement.cpp): each part of `top` (itself, or each variant) that has
+/// one becomes one part per fraction, its safety times the fraction, labelled dt-<fraction>
+/// (<label>/dt-<fraction> for a variant). Throws InputError beside `perturb`.
+DynamicsScene refined_scene(DynamicsScene top, const std::string& source);
 
 /// Reads one scene's keys: defaults and ranges from the key table, every value used noted.
 class DynamicsSceneReader : public SceneKeyReader {
@@ -36,6 +40,8 @@ class DynamicsSceneReader : public SceneKeyReader {
   void read_wall();
   void read_contact();
   void read_time();
+  /// `time.refinement`, checked: two or more descending fractions in (0, 1].
+  void read_refinement(SceneObject& t);
   /// fragmentation: the cohesive law and the criterion (FragmentationKeys.cpp).
   void read_fracture();
 

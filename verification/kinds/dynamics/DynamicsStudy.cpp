@@ -23,9 +23,11 @@
 #include "verification/harness/StudyParts.hpp"
 #include "verification/kinds/dynamics/DynamicsHistory.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
+#include "verification/kinds/dynamics/DynamicsMeasureFields.hpp"
 #include "verification/kinds/dynamics/DynamicsRun.hpp"
 #include "verification/kinds/dynamics/FragmentLevels.hpp"
 #include "verification/kinds/dynamics/PerturbationReport.hpp"
+#include "verification/kinds/dynamics/TimeRefinementReport.hpp"
 #include "verification/report/ConvergenceTable.hpp"
 
 namespace fs = std::filesystem;
@@ -33,64 +35,6 @@ using nlohmann::json;
 
 namespace vorodg {
 namespace {
-
-/// The measured figures by name, in the order results.csv lists them.
-const std::vector<std::pair<const char*, double DynamicsMeasures::*>>& measure_fields() {
-  using M = DynamicsMeasures;
-  static const std::vector<std::pair<const char*, double M::*>> fields = {
-      {"energy_balance_error", &M::energy_balance_error},
-      {"max_energy_balance_error", &M::max_energy_balance_error},
-      {"momentum_drift", &M::momentum_drift},
-      {"angular_momentum_drift", &M::angular_momentum_drift},
-      {"arrival_time", &M::arrival_time},
-      {"arrival_theory", &M::arrival_theory},
-      {"wave_speed", &M::wave_speed},
-      {"wave_speed_theory", &M::wave_speed_theory},
-      {"wave_speed_error", &M::wave_speed_error},
-      {"max_penetration", &M::max_penetration},
-      {"max_penetration_over_h", &M::max_penetration_over_h},
-      {"tunnelled_contacts", &M::tunnelled_contacts},
-      {"late_contacts", &M::late_contacts},
-      {"impact_velocity", &M::impact_velocity},
-      {"rebound_velocity", &M::rebound_velocity},
-      {"rebound_estimate", &M::rebound_estimate},
-      {"contact_time", &M::contact_time},
-      {"contact_time_estimate", &M::contact_time_estimate},
-      {"peak_wall_force", &M::peak_wall_force},
-      {"peak_wall_force_estimate", &M::peak_wall_force_estimate},
-      {"wall_impulse", &M::wall_impulse},
-      {"rear_strike_time", &M::rear_strike_time},
-      {"peak_load", &M::peak_load},
-      {"peak_load_displacement", &M::peak_load_displacement},
-      {"peak_load_cmod", &M::peak_load_cmod},
-      {"kinetic_over_work_at_peak", &M::kinetic_over_work_at_peak},
-      {"kinetic_over_work_end", &M::kinetic_over_work_end},
-      {"contact_friction_dissipated", &M::contact_friction_dissipated},
-      {"face_friction_dissipated", &M::face_friction_dissipated},
-      {"contact_velocity_dissipated", &M::contact_velocity_dissipated},
-      {"bulk_viscosity_dissipated", &M::bulk_viscosity_dissipated},
-      {"fragments", &M::fragments},
-      {"max_fragment_mass_fraction", &M::max_fragment_mass_fraction},
-      {"single_cell_mass_fraction", &M::single_cell_mass_fraction},
-      {"main_body_rotation", &M::main_body_rotation},
-      {"dissipated_energy", &M::dissipated_energy},
-      {"cracked_edges", &M::cracked_edges},
-      {"broken_edges", &M::broken_edges},
-      {"broken_near_impact", &M::broken_near_impact},
-      {"broken_mid_length", &M::broken_mid_length},
-      {"broken_elsewhere", &M::broken_elsewhere},
-      {"released_edges", &M::released_edges},
-      {"activated_interfaces", &M::activated_interfaces},
-      {"activation_work", &M::activation_work},
-      {"check_seconds", &M::check_seconds},
-      {"rebuild_seconds", &M::rebuild_seconds},
-      {"coupling_seconds", &M::coupling_seconds},
-      {"law_balance_error", &M::law_balance_error},
-      {"law_balance_breach_time", &M::law_balance_breach_time},
-      {"max_rotation", &M::max_rotation},
-      {"large_rotation_time", &M::large_rotation_time}};
-  return fields;
-}
 
 /// Every field of a dynamics record, with the scene's settings that results.csv lists beside
 /// them (problem, estimate, safety: not part of the record's JSON).
@@ -107,7 +51,7 @@ std::vector<RecordField<DynamicsRecord>> dynamics_fields(const DynamicsScene& sc
                      csv_column<R>("safety", scene.safety), field("steps", &R::steps),
                      field("end_time", &R::end_time, fine),
                      field("contact_stiffness", &R::contact_stiffness, {true, 10, true}, true)});
-  for (const auto& [name, member] : measure_fields())  // absent: not measured
+  for (const auto& [name, member] : dynamics_measure_fields())  // absent: not measured
     f.push_back({name, [m = member](const R& r) { return number_json(r.measures.*m); },
                  [m = member](R& r, const json& j) { r.measures.*m = read_number(j); },
                  CsvFormat{true, 10, true}, true, true, true});
@@ -237,7 +181,7 @@ void write_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord
                   {"runs", result.records.size()},
                   {"incomplete", result.incomplete},
                   {"records", runs}});
-  for (const auto& [name, field] : measure_fields())
+  for (const auto& [name, field] : dynamics_measure_fields())
     if (const double w = worst(result.records, field);
         std::isfinite(w) && !std::string_view(name).ends_with("seconds"))
       summary["worst"][name] = w;
@@ -269,14 +213,17 @@ StudyRecords<DynamicsRecord> run_dynamics_study(const DynamicsScene& scene, cons
 
 int run_dynamics_scene(const StudyCall& call) {
   const DynamicsScene scene = read_dynamics_scene(call.scene, call.force);
+  std::vector<RefinedPart> parts;  // what each part ran, for the time-refinement report
   return run_study_parts<DynamicsScene>(
       scene, call, "dynamics", "dynamics_plots.py",
       [&](const DynamicsScene& part, const std::filesystem::path& out) {
-        const StudyRecords<DynamicsRecord> r =
-            run_dynamics_study(part, out, call.threads, call.progress);
-        return PartCounts{r.records.size(), r.incomplete};
+        StudyRecords<DynamicsRecord> r = run_dynamics_study(part, out, call.threads, call.progress);
+        const PartCounts counts{r.records.size(), r.incomplete};
+        if (!part.refinement.empty()) parts.push_back({&part, std::move(r.records), out});
+        return counts;
       },
       [&](int incomplete) {
+        write_time_refinement_report(scene, parts, call.out);
         if (!scene.perturb_key.empty() && incomplete == 0)
           write_perturbation_report(scene, call.out);
         if (scene.fragmentation && scene.variants.size() >= 2 && !call.no_plots)

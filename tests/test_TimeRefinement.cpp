@@ -5,11 +5,13 @@
 //     the observed order 2 and the limit 2 (to 1e-6: Extrapolation's golden-section search); a
 //     trend that grows as 1 / f (monotone, differences growing) gets neither; non-finite values
 //     are left out;
-//   - the reader turns time.refinement into one part per fraction with the safety scaled and
-//     nothing else changed (labels dt-<f>, <variant>/dt-<f> with variants), and refuses a single
+//   - the reader turns time.refinement into one part per fraction with the safety scaled, the
+//     history and frames every 1 / f as many steps (at the same times) and nothing else changed
+//     (labels dt-<f>, <variant>/dt-<f> with variants), and refuses a single
 //     fraction, an ascending list, a fraction past 1 and refinement beside perturb;
-//   - `vorodg run` on a wall impact with three fractions writes each part's results and the
-//     report, whose wall impulse agrees across the steps within 0.1 % (the exact plane).
+//   - `vorodg run` on a wall impact with three fractions writes each part's results, the report
+//     and its picture, and the wall impulse agrees across the steps within 0.1 % (the exact
+//     plane).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -83,6 +85,9 @@ TEST(TimeRefinement, EachFractionIsAPartWithItsSafetyScaled) {
     EXPECT_EQ(s.variants[i].meshes.size(), s.meshes.size());
   }
   EXPECT_EQ(s.variants[1].label, "dt-0.5");
+  EXPECT_EQ(s.variants[2].output_every, 4 * s.output_every);  // frames at the same times
+  EXPECT_EQ(s.variants[2].history_every, 4 * s.history_every);
+  EXPECT_EQ(s.variants[2].setting("time.output_every"), std::to_string(4 * s.output_every));
   EXPECT_DOUBLE_EQ(s.variants[2].step_fraction, 0.25);
 
   const DynamicsScene v = parse_dynamics_scene(wall(R"("time": {"refinement": [1, 0.5]},
@@ -107,14 +112,15 @@ TEST(TimeRefinement, RunWritesEveryStepAndTheReport) {
   fs::create_directories(dir);
   const fs::path scene = dir / "steps.json", out = dir / "out";
   std::ofstream(scene) << wall(R"("time": {"refinement": [1, 0.5, 0.25]})");
-  const RunResult r = run_program(
-      VORODG_EXE, {"run", scene.string(), "-o", out.string(), "--quiet", "--no-plots"}, dir);
+  const RunResult r =
+      run_program(VORODG_EXE, {"run", scene.string(), "-o", out.string(), "--quiet"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* part : {"dt-1", "dt-0.5", "dt-0.25"})
     EXPECT_TRUE(fs::exists(out / part / "results.csv")) << part;
   const std::string md = slurp(out / "time-refinement.md"),
                     csv = slurp(out / "time-refinement.csv");
   EXPECT_NE(md.find("| wall_impulse |"), std::string::npos) << md;
+  EXPECT_TRUE(fs::exists(out / "plots" / "time_refinement.png")) << r.err;
   // The wall's impulse per step, from the CSV's rows "steps",0,0,"wall_impulse",<f>,<runs>,<mean>
   std::vector<double> impulse;
   std::istringstream lines(csv);

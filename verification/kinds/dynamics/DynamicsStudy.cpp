@@ -224,6 +224,7 @@ int run_dynamics_scene(const StudyCall& call) {
       },
       [&](int incomplete) {
         write_time_refinement_report(scene, parts, call.out);
+        if (!parts.empty() && !call.no_plots) draw_plots("time_refinement_plot.py", call.out);
         if (!scene.perturb_key.empty() && incomplete == 0)
           write_perturbation_report(scene, call.out);
         if (scene.fragmentation && scene.variants.size() >= 2 && !call.no_plots)

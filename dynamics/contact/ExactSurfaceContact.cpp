@@ -53,15 +53,16 @@ void ExactSurfaceContact::find_contacts(const SurfaceCells& surface, int i, int 
     const std::uint64_t key =
         (static_cast<std::uint64_t>(state.node[p]) << 32) | static_cast<std::uint32_t>(b);
     if (!taken_.insert(key).second) continue;  // this node is already kept out of b
-    // A vertex inside b now: stop it going deeper, never push it out (see the header).
-    const auto now = PolygonPenetration::of_point(
-        state.position[p], SurfaceSearch::loop(mesh, state.position, b), exits);
-    const double inside = now ? now->depth : 0.0;
-    report.max_depth = std::max(report.max_depth, inside);
-    report.late += inside > 0.0;
     Contact c;
     c.p = p, c.e0 = base_b + pen->edge, c.e1 = base_b + (pen->edge + 1) % nb;
-    c.t = pen->t, c.normal = pen->normal, c.inside = inside;
+    c.t = pen->t, c.normal = pen->normal;
+    // A vertex behind this edge now: stop it going deeper, never push it out (see the header).
+    // Measured along the same normal and edge point as the predicted depth, so that the two
+    // differ by the step's approach alone (another edge's depth would not).
+    const Point q = (1.0 - c.t) * state.position[c.e0] + c.t * state.position[c.e1];
+    c.inside = std::max(c.normal.dot(q - state.position[p]), 0.0);
+    report.max_depth = std::max(report.max_depth, c.inside);
+    report.late += c.inside > 0.0;
     const double s = 1.0 - c.t;
     c.w = state.inverse_mass[state.node[c.p]] + s * s * state.inverse_mass[state.node[c.e0]] +
           c.t * c.t * state.inverse_mass[state.node[c.e1]];

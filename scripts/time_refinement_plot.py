@@ -17,7 +17,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plotting_common import (  # noqa: E402
-    InputError, light_grid, number, outdir_arguments, plt, read_table, save_atomically)
+    InputError, columns, light_grid, outdir_arguments, plt, read_table, save_atomically)
 
 HEADLINES = [("fragments", "fragments", 1.0), ("max_fragment_mass_fraction", "largest fragment [%]", 100.0),
              ("single_cell_mass_fraction", "mass in single cells [%]", 100.0),
@@ -30,9 +30,11 @@ HEADLINES = [("fragments", "fragments", 1.0), ("max_fragment_mass_fraction", "la
 def series(table):
     """{measure: {(group, mesh, level): [(fraction, mean, error)]}} from the CSV's rows."""
     out = {}
+    # Columns without a value in any row (std_error with one realization) are not written.
+    fraction, mean, error = columns(table, "fraction", "mean", "std_error")
     for i, measure in enumerate(table["measure"]):
         key = (table["group"][i], table["mesh"][i], table["level"][i])
-        point = (number(table["fraction"][i]), number(table["mean"][i]), number(table["std_error"][i]))
+        point = (fraction[i], mean[i], error[i])
         out.setdefault(measure, {}).setdefault(key, []).append(point)
     return out
 

@@ -16,7 +16,8 @@
 // evaluation; the integrator calls constrain() once every other force of the step is known, with
 // each node's predicted next half-step velocity, and their impulses come back as forces of the
 // step (KinematicState). Their work is booked the same way, in two accounts: the normal impulses'
-// (which only ever take energy: a plastic impact) and the friction impulses'.
+// (a plastic impact takes energy, up to the trapezoid's O(dt) share of the other forces' work)
+// and the friction impulses'.
 //
 // Friction (ContactFriction) follows the contact's tangential motion from one evaluation to the
 // next; an evaluation repeated at the same positions (after restart) sees none.

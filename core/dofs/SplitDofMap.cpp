@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/UnionFind.hpp"
 
@@ -169,6 +170,18 @@ bool SplitDofMap::joins(const PolygonMesh& mesh, int e) const {
         node(edge.cell1, local_index(mesh, edge.cell1, v)))
       return false;
   return true;
+}
+
+void SplitDofMap::archive(StateArchive& a) {
+  a.vector("dofs.offsets", offsets_);
+  a.vector("dofs.node", node_);
+  a.vector("dofs.vertex_offsets", vertex_offsets_);
+  a.vector("dofs.vertex_pairs", vertex_pairs_);
+  a.vector("dofs.vertex_nodes", vertex_nodes_);
+  a.vector("dofs.vertex_node_count", vertex_node_count_);
+  a.vector("dofs.node_start", node_start_);
+  a.vector("dofs.node_count", node_count_);
+  a.value("dofs.num_nodes", num_nodes_);
 }
 
 }  // namespace vorodg

@@ -24,6 +24,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class SplitDofMap {
  public:
   /// `connected[e]` (one entry per mesh edge; boundary entries are ignored) joins the two cells'
@@ -63,6 +65,9 @@ class SplitDofMap {
   }
   /// Whether interior edge e joins its cells: both end vertices share their nodes.
   bool joins(const PolygonMesh& mesh, int e) const;
+
+  /// Saves or loads the whole map (a checkpoint: a rebuilt map could number its nodes otherwise).
+  void archive(StateArchive& a);
 
  private:
   /// Rewrites vertex v's slots from node_: its nodes ascending, each node's pairs increasing.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -63,6 +64,13 @@ std::string PvdCollection::text() const {
            escaped(e.file) + "\"/>\n";
   out += "  </Collection>\n</VTKFile>\n";
   return out;
+}
+
+void PvdCollection::archive(StateArchive& a) {
+  a.each("pvd.entries", entries_, [](StateArchive& item, Entry& e) {
+    item.value("pvd.value", e.value);
+    item.text("pvd.file", e.file);
+  });
 }
 
 }  // namespace vorodg

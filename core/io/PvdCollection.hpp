@@ -8,6 +8,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class PvdCollection {
  public:
   struct Entry {
@@ -27,6 +29,9 @@ class PvdCollection {
   const std::filesystem::path& path() const { return path_; }
   /// The XML of the collection as it stands. Deterministic.
   std::string text() const;
+
+  /// Saves or loads the entries (a checkpoint; the file is rewritten at the next add).
+  void archive(StateArchive& a);
 
  private:
   std::filesystem::path path_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -286,18 +287,19 @@ bool QuasiStaticPath::end_at_failed_step(const State& state, int step) {
   return false;
 }
 
-bool QuasiStaticPath::run(const Observer& observe) {
-  State state;
-  state.x = Eigen::VectorXd::Zero(model_.num_free_dofs());
-  state.points = model_.initial_points();
-  state.force = Eigen::VectorXd::Zero(model_.num_dofs());
-  last_ = point_of(state, 0, PathPoint{});
-  observe(last_, full(state), state.points);
-
-  if (!calibrate(state)) return false;
-
+bool QuasiStaticPath::run(const Observer& observe, const StepHook& after_step) {
+  State& state = state_;
+  if (!started_) {
+    state.x = Eigen::VectorXd::Zero(model_.num_free_dofs());
+    state.points = model_.initial_points();
+    state.force = Eigen::VectorXd::Zero(model_.num_dofs());
+    last_ = point_of(state, 0, PathPoint{});
+    observe(last_, full(state), state.points);
+    if (!calibrate(state)) return false;
+    started_ = true;
+  }
   const int limit = 20 * (options_.steps + options_.tail_steps) + 1000;
-  for (int step = 1; !finished(state); ++step) {
+  for (int step = step_ + 1; !finished(state); ++step) {
     if (step > limit) {
       failure_ = "the path did not reach its end in " + std::to_string(limit) + " steps";
       return false;
@@ -320,8 +322,31 @@ bool QuasiStaticPath::run(const Observer& observe) {
     if (options_.control == LoadControl::arc_length)  // about five iterations, never past ds_0
       arc_ = std::min(arc_ * std::clamp(std::sqrt(5.0 / std::max(iterations, 1)), 0.5, 2.0),
                       arc_start_);
+    step_ = step;
+    if (after_step) after_step(step);
   }
   return true;
+}
+
+void QuasiStaticPath::archive(StateArchive& a) {
+  a.vector("path.x", state_.x);
+  a.value("path.lambda", state_.lambda);
+  a.vector("path.points", state_.points);
+  a.vector("path.force", state_.force);
+  a.value("path.arrival_load", state_.arrival_load);
+  a.value("path.step", step_);
+  a.value("path.started", started_);
+  a.value("path.jumped", jumped_);
+  a.value("path.peak_load", peak_load_);
+  a.text("path.stop_reason", stop_reason_);
+  a.value("path.last", last_);
+  a.value("path.switched", switched_);
+  a.value("path.indefinite", indefinite_);
+  a.value("path.factorizations", factorizations_);
+  a.value("path.force_scale", force_scale_);
+  a.value("path.elastic_step", elastic_step_);
+  a.value("path.arc", arc_);
+  a.value("path.arc_start", arc_start_);
 }
 
 }  // namespace vorodg

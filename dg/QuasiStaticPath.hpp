@@ -31,6 +31,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 enum class LoadControl { displacement, cmod, arc_length };
 /// Parses displacement, cmod, arc-length; throws InputError otherwise.
 LoadControl parse_load_control(const std::string& name);
@@ -74,11 +76,20 @@ class QuasiStaticPath {
                                       const std::vector<InterfacePoint>& points)>;
   /// Follows the path, reporting every converged point (step 0 is the unloaded state). Returns
   /// false if a step failed after every cut; failure() says why.
-  bool run(const Observer& observe);
+  /// Called after every converged step with its number (after the observer): where a run
+  /// checkpoints, or stops by throwing.
+  using StepHook = std::function<void(int step)>;
+  bool run(const Observer& observe, const StepHook& after_step = {});
+  /// Saves or loads the path after its last converged step (a checkpoint). Loaded into a path
+  /// built on the same model and options, run() continues with the next step, without observing
+  /// the start again; the solver analyses its first tangent afresh (the same analysis).
+  void archive(StateArchive& a);
   const std::string& failure() const { return failure_; }
   /// Why a complete path ended before its end point (empty if it reached it).
   const std::string& stop_reason() const { return stop_reason_; }
   int factorizations() const { return factorizations_; }
+  /// The last converged point.
+  const PathPoint& last() const { return last_; }
 
  private:
   struct State {
@@ -170,6 +181,9 @@ class QuasiStaticPath {
   /// its peak ends the test (the beam's final snap, or remnants no step can follow), not a
   /// failure (docs/fracture.md).
   static constexpr double kFinalSnapLoad = 1e-2;
+  State state_;           // after the last converged step
+  int step_ = 0;          // that step
+  bool started_ = false;  // the start observed and the path calibrated
   bool jumped_ = false;
   double peak_load_ = 0.0;
   std::string stop_reason_;

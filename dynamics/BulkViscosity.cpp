@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 
@@ -143,6 +144,14 @@ void BulkViscosity::check() {
         ", the most that dt = " + fmt(step_ratio_, 4) +
         " x the critical step allows (dt <= 2 / omega (sqrt(1 + xi^2) - xi)); lower "
         "bulk_viscosity.quadratic or time.safety");
+}
+
+void BulkViscosity::archive(StateArchive& a) {
+  a.vector("bulk.pair_force", pair_force_);
+  a.vector("bulk.rate", rate_);
+  a.vector("bulk.xi", xi_);
+  a.vector("bulk.cofactor", cofactor_);
+  a.value("bulk.max_xi", max_xi_);
 }
 
 }  // namespace vorodg

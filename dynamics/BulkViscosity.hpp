@@ -41,6 +41,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 struct BulkViscosityParameters {
   double linear = 0.0;     // b1
   double quadratic = 0.0;  // b2
@@ -84,6 +86,9 @@ class BulkViscosity {
   /// From the last compute: cell c's volumetric strain rate, and the largest xi of any cell.
   double cell_rate(int c) const { return rate_[c]; }
   double max_damping_ratio() const { return max_xi_; }
+
+  /// Saves or loads what a step leaves for the next (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   /// Cell c's volumetric rate and cofactor of F (the identity without `u`), kept.

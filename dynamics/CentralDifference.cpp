@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Stopwatch.hpp"
 
@@ -371,6 +372,29 @@ void CentralDifference::disconnect(const std::vector<char>& connected, std::span
   if (cohesive_) cohesive_->rebind(dofs_, split.vertices);
   restart_from(record_.elastic, true);  // the cells, and so their energies, are unchanged
   record_.remap_energy += record_.kinetic_leapfrog + record_.elastic - before;
+}
+
+void CentralDifference::archive(StateArchive& a) {
+  if (!initialized_) throw InputError("central difference: archive() before initialize()");
+  dofs_.archive(a);
+  if (a.loading()) bind();
+  for (auto [name, x] : {std::pair{"u", &u_},
+                         {"v", &v_},
+                         {"a", &a_},
+                         {"f_int", &f_int_},
+                         {"f_ext", &f_ext_},
+                         {"f_ext_next", &f_ext_next_},
+                         {"reaction", &reaction_},
+                         {"f_contact", &f_contact_},
+                         {"f_contact_next", &f_contact_next_},
+                         {"f_bulk", &f_bulk_},
+                         {"f_bulk_next", &f_bulk_next_},
+                         {"v_half", &v_half_}})
+    a.vector(std::string("run.") + name, *x);
+  a.vector("run.vbar_half", vbar_half_);
+  a.vector("run.vbar_next_half", vbar_next_half_);
+  a.value("run.record", record_);
+  force_.archive(a);
 }
 
 }  // namespace vorodg

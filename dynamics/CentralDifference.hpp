@@ -67,6 +67,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 struct DynamicsOptions {
   double damping = 0.0;  // mass-proportional damping c (1/s): force -c M v
   int threads = 1;
@@ -154,6 +156,12 @@ class CentralDifference {
   Point node_position(int i) const { return {x0_[2 * i], x0_[2 * i + 1]}; }
   /// The boundary (index in add order) prescribing a node DOF, or -1 if the DOF is free.
   int prescribed_boundary(int dof) const { return prescribed_[dof]; }
+
+  /// Saves or loads the state the next step reads: the DOF map (loading rebinds the attached
+  /// laws to it), the displacements, velocities and accelerations, the forces carried from one
+  /// step to the next and the record with its energy accounts. The attached laws archive their
+  /// own state (ExplicitSimulation::archive).
+  void archive(StateArchive& a);
 
  private:
   void bind();

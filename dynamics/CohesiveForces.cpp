@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
 #include "fracture/FacePoint.hpp"
@@ -81,15 +82,19 @@ void CohesiveForces::set_friction(double mu) {
   friction_ = mu;
 }
 
+CohesiveParameters CohesiveForces::edge_parameters(int e) const {
+  CohesiveParameters p = law_.parameters();
+  p.strength *= edge_strength_[e];
+  return p;
+}
+
 void CohesiveForces::add_edge(int e) {
   Face f = make_face(mesh_, e);
   if (slot_[e] >= 0)
     throw InputError("cohesive forces: edge " + std::to_string(e) + " is already cracked");
   if (!edge_strength_.empty()) {
-    CohesiveParameters p = law_.parameters();
-    p.strength *= edge_strength_[e];
     try {
-      face_laws_.emplace_back(p);
+      face_laws_.emplace_back(edge_parameters(e));
     } catch (const InputError& error) {
       throw InputError("cohesive forces: edge " + std::to_string(e) + " with strength x " +
                        std::to_string(edge_strength_[e]) + ": " + error.what());
@@ -331,6 +336,19 @@ int CohesiveForces::num_broken() const {
   int count = 0;
   for (int e : edges_) count += broken(e);
   return count;
+}
+
+void CohesiveForces::archive(StateArchive& a) {
+  a.vector("cohesive.faces", faces_);
+  a.vector("cohesive.edges", edges_);
+  a.vector("cohesive.slot", slot_);
+  a.vector("cohesive.released", released_);
+  if (a.loading() && !edge_strength_.empty()) {  // each face's law follows from its edge
+    face_laws_.clear();
+    for (const Face& f : faces_) face_laws_.emplace_back(edge_parameters(f.edge));
+  }
+  a.value("cohesive.work", work_);
+  a.value("cohesive.continuation_energy", continuation_energy_);
 }
 
 }  // namespace vorodg

@@ -57,6 +57,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 /// The crack faces' penalty k <g_n>_- against overclosure. By default a fraction of K0 on every
 /// face: at K0 itself a closing face is a spring whose contact lasts about one step at the stable
 /// step, and the switching of such a spring on and off feeds energy in (measured: half the
@@ -195,6 +197,9 @@ class CohesiveForces {
   /// The released edges, in the order they let go.
   const std::vector<int>& released_edges() const { return released_; }
 
+  /// Saves or loads every face with its points' histories, and the accounts (a checkpoint).
+  void archive(StateArchive& a);
+
  private:
   struct QuadraturePoint {
     CohesiveLaw::State history;
@@ -248,6 +253,8 @@ class CohesiveForces {
   }
   /// The nodes of face f's ends on both sides.
   void bind_face(const SplitDofMap& dofs, Face& f) const;
+  /// The law's parameters with edge e's strength (a varying strength).
+  CohesiveParameters edge_parameters(int e) const;
 
   const PolygonMesh& mesh_;
   const CohesiveLaw& law_;

@@ -1,5 +1,6 @@
 #include "dynamics/ContactForces.hpp"
 
+#include "core/io/StateArchive.hpp"
 #include "dynamics/contact/ContactLaws.hpp"
 #include "dynamics/contact/PolygonPenetration.hpp"
 
@@ -217,6 +218,33 @@ bool ContactForces::overlapping(int a, int b) const {
   for (const Point& p : pb)
     if (PolygonPenetration::inside(p, pa)) return true;
   return false;
+}
+
+void ContactForces::archive(StateArchive& a) {
+  surface_.archive(a);
+  for (const std::unique_ptr<ContactLaw>& law : laws_) law->archive(a);
+  for (SegmentedWork* w : {&work_, &velocity_work_, &impulse_work_, &friction_work_}) w->archive(a);
+  a.value("contact.friction_dissipated", friction_dissipated_);
+  a.vector("contact.velocity_force", velocity_force_);
+  for (auto [name, x] : {std::pair{"node_velocity", &node_velocity_},
+                         {"normal_impulse", &normal_impulse_},
+                         {"friction_impulse", &friction_impulse_},
+                         {"impulse_force", &impulse_force_},
+                         {"friction_force", &friction_force_},
+                         {"position", &position_},
+                         {"velocity", &velocity_},
+                         {"force", &force_},
+                         {"plane_pair_force", &plane_pair_force_}})
+    a.vector(std::string("contact.") + name, *x);
+  a.vector("contact.inverse_mass", inverse_mass_);
+  a.vector("contact.impulse_support", impulse_support_);
+  a.vector("contact.support", support_);
+  a.value("contact.dt", dt_);
+  a.value("contact.repeat", repeat_);
+  a.value("contact.evaluated", evaluated_);
+  a.value("contact.surface_report", surface_report_);
+  a.value("contact.plane_report", plane_report_);
+  a.value("contact.plane_force", plane_force_);
 }
 
 }  // namespace vorodg

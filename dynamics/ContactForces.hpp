@@ -43,6 +43,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class ContactForces {
  public:
   /// `mesh` must outlive this object. `surfaces`: contact between the surface cells of the mesh
@@ -129,6 +131,10 @@ class ContactForces {
   /// the last evaluation: what surface contact would push apart (PolygonPenetration's test).
   /// False before the first evaluation. Throws InputError unless both are surface cells.
   bool overlapping(int a, int b) const;
+
+  /// Saves or loads the surface, every law's state, the last evaluation and the work accounts
+  /// (a checkpoint; the integrator rebinds the pairs to its map first).
+  void archive(StateArchive& a);
 
  private:
   void gather_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Stopwatch.hpp"
 
 namespace vorodg {
@@ -104,6 +105,13 @@ CrackState DynamicFracture::broken_state() const {
   std::vector<char> broken(mesh_.num_edges(), 0);
   for (int e : cohesive_.edges()) broken[e] = cohesive_.broken(e);
   return CrackState(mesh_, broken);
+}
+
+void DynamicFracture::archive(StateArchive& a) {
+  a.vector("fracture.cracked", cracked_);
+  a.vector("fracture.connected", connected_);
+  a.value("fracture.split_yet", split_yet_);
+  a.vector("fracture.events", events_);
 }
 
 }  // namespace vorodg

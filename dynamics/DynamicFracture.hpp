@@ -36,6 +36,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class DynamicFracture {
  public:
   /// Sets `cohesive` on `run`. Every argument must outlive this object. With `contact` (the
@@ -74,6 +76,10 @@ class DynamicFracture {
     double integrator = 0.0, check = 0.0, rebuild = 0.0;
   };
   const Times& times() const { return times_; }
+
+  /// Saves or loads which edges cracked, in which order, and the map's edge set (a checkpoint;
+  /// the run's map itself is the integrator's).
+  void archive(StateArchive& a);
 
  private:
   /// Releases the faces that may let go (see Release above).

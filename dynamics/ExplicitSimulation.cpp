@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Random.hpp"
@@ -199,6 +200,18 @@ bool ExplicitSimulation::unstable() const {
   const StepRecord& r = run->record();
   const double energy = r.kinetic + r.elastic;
   return !std::isfinite(energy) || energy > kEnergyBlowUp * r.input_energy();
+}
+
+void ExplicitSimulation::archive(StateArchive& a) {
+  double step = dt;
+  a.value("simulation.dt", step);
+  if (step != dt)
+    throw CheckpointError("state: step " + fmt(step) + " s, expected " + fmt(dt) + " s");
+  run->archive(a);
+  if (contact) contact->archive(a);
+  if (cracks) cracks->archive(a);
+  if (coupling) coupling->archive(a);
+  if (bulk) bulk->archive(a);
 }
 
 }  // namespace vorodg

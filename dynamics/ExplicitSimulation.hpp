@@ -27,6 +27,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 /// A run is unstable once its kinetic plus elastic energy exceeds this many times the energy put
 /// in: a stable run stays within round-off of its input.
 constexpr double kEnergyBlowUp = 1e6;
@@ -70,6 +72,12 @@ class ExplicitSimulation {
   double energy_growth() const;
   /// True once that energy is not finite or past kEnergyBlowUp times the input.
   bool unstable() const;
+
+  /// Saves or loads the state of the run after its last step: the integrator's (with its map),
+  /// then contact's, the cracks', the interfaces' and bulk viscosity's. Loading needs a
+  /// simulation built from the same scene, mesh and seed; it throws CheckpointError if the step
+  /// differs (another scene) or the payload does not fit.
+  void archive(StateArchive& a);
 
  private:
   /// The internal force of the (varied) cell matrices; sets the two critical-step estimates.

@@ -4,6 +4,7 @@
 #include <memory>
 #include <utility>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "dynamics/CorotationalFrames.hpp"
@@ -163,6 +164,16 @@ std::vector<VtuField> Fragmentation::cell_fields(const LumpedMass& mass) const {
     cracked.values.push_back(n);
   }
   return {fragment, cracked};
+}
+
+void Fragmentation::archive(StateArchive& a) {
+  a.value("fragmentation.start", start_);
+  a.value("fragmentation.worst_balance", worst_balance_);
+  a.value("fragmentation.input_energy", input_energy_);
+  a.value("fragmentation.breach_time", breach_time_);
+  cohesive_->archive(a);
+  if (fracture_) fracture_->archive(a);
+  if (activation_) activation_->archive(a);
 }
 
 }  // namespace vorodg

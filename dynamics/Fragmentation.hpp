@@ -20,6 +20,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 /// The energy balance with the law's energies a run must keep, of the input energy.
 constexpr double kLawBalanceLimit = 0.01;
 
@@ -84,6 +86,9 @@ class Fragmentation {
   double worst_balance() const { return worst_balance_; }
   double breach_time() const { return breach_time_; }
   double input_energy() const { return input_energy_; }
+
+  /// Saves or loads the cracks, the faces and the law balance's account (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   const PolygonMesh& mesh_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 #include "fracture/FaceInsertion.hpp"
 
@@ -93,6 +94,11 @@ void InterfaceActivation::activate(const std::vector<Failure>& failures, const E
     activation_work_ += cohesive.continuation_energy() - before - coupled;
     ++activated_;
   }
+}
+
+void InterfaceActivation::archive(StateArchive& a) {
+  a.value("activation.work", activation_work_);
+  a.value("activation.activated", activated_);
 }
 
 }  // namespace vorodg

@@ -28,6 +28,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class InterfaceActivation {
  public:
   /// `eligible[e]` per mesh edge: the edges that may crack (must be interfaces of `coupling`;
@@ -57,6 +59,9 @@ class InterfaceActivation {
   double activation_work() const { return activation_work_; }
   /// Interfaces activated so far.
   int activated() const { return activated_; }
+
+  /// Saves or loads its accounts (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   const PolygonMesh& mesh_;

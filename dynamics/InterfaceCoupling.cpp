@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
 
@@ -163,6 +164,11 @@ double InterfaceCoupling::eigenvalue_bound(const Eigen::VectorXd& node_masses) c
             std::abs(blocks_[i](a, b)) / std::sqrt(node_masses[d[a] / 2] * node_masses[d[b] / 2]);
   }
   return row.size() ? row.maxCoeff() : 0.0;
+}
+
+void InterfaceCoupling::archive(StateArchive& a) {
+  a.vector("coupling.active", active_);
+  a.vector("coupling.last_flux", last_flux_);
 }
 
 }  // namespace vorodg

@@ -28,6 +28,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class InterfaceCoupling {
  public:
   /// The interfaces of `dofs` (the interior edges it splits) on the table's mesh, with the
@@ -71,6 +73,9 @@ class InterfaceCoupling {
   /// Added to the cells' bound it bounds the whole system's, since lambda_max(A + B) <=
   /// lambda_max(A) + lambda_max(B).
   double eigenvalue_bound(const Eigen::VectorXd& node_masses) const;
+
+  /// Saves or loads which interfaces still couple and their last fluxes (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   std::unique_ptr<DgSpace> space_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -176,6 +177,12 @@ void InternalForce::gather_node(const SplitDofMap& dofs, int i, double* f) const
   }
   f[2 * i] = fx;
   f[2 * i + 1] = fy;
+}
+
+void InternalForce::archive(StateArchive& a) {
+  a.vector("force.pair_force", pair_force_);
+  a.vector("force.cell_energy", cell_energy_);
+  a.vector("force.local", local_);
 }
 
 }  // namespace vorodg

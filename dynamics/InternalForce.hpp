@@ -31,6 +31,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class InternalForce {
  public:
   using CellMatrices = ElasticityIntegrator::CellMatrices;
@@ -71,6 +73,9 @@ class InternalForce {
   /// pair, the pair layout); empty for small rotations. The insertion check's cell stresses read
   /// them instead of turning every cell again (CrackInsertion::cell_stresses).
   std::span<const double> local_displacements() const { return local_; }
+
+  /// Saves or loads the last compute's cell forces and energies (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   void cell_forces(const int* pair_node, const double* u, int threads);

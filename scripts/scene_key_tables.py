@@ -10,6 +10,7 @@ import sys
 
 # The section heading of each kind's table in docs/scenes.md.
 SECTIONS = {
+    "fracture": "## Fracture studies",
     "dynamics": "## Dynamics and fragmentation studies",
 }
 

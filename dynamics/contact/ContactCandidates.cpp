@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -56,6 +57,16 @@ const std::vector<IndexPair>& ContactCandidates::overlapping(const SurfaceCells&
   for (const IndexPair& ij : candidates_)
     if (boxes[ij.first].intersects(boxes[ij.second])) overlapping_.push_back(ij);
   return overlapping_;
+}
+
+void ContactCandidates::archive(StateArchive& a) {
+  a.value("candidates.revision", revision_);
+  a.vector("candidates.snapshot", snapshot_);
+  archive_boxes(a, "candidates.inflated", inflated_);
+  a.vector("candidates.pairs", candidates_);
+  a.vector("candidates.overlapping", overlapping_);
+  a.value("candidates.rebuilds", rebuilds_);
+  a.value("candidates.calls", calls_);
 }
 
 }  // namespace vorodg

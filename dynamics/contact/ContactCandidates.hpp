@@ -23,6 +23,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class ContactCandidates {
  public:
   /// min_spacing > 0: the grid's smallest spacing. Throws InputError.
@@ -43,6 +45,10 @@ class ContactCandidates {
 
   /// The skin, as a fraction of the grid's smallest spacing.
   static constexpr double kSkin = 0.1;
+
+  /// Saves or loads the list with the positions it was built at (a checkpoint: a list rebuilt
+  /// at another moment could hold other pairs, in another order).
+  void archive(StateArchive& a);
 
  private:
   bool stale(const SurfaceCells& surface, std::span<const Point> position) const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -186,6 +187,15 @@ void ContactGrid::collect_folded() {
         }
       }
   }
+}
+
+void archive_boxes(StateArchive& a, std::string_view name, std::vector<Box>& boxes) {
+  std::vector<Eigen::Vector2d> corners;
+  for (const Box& b : boxes) corners.push_back(b.min()), corners.push_back(b.max());
+  a.vector(name, corners);
+  if (!a.loading()) return;
+  boxes.resize(corners.size() / 2);
+  for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = Box(corners[2 * i], corners[2 * i + 1]);
 }
 
 }  // namespace vorodg

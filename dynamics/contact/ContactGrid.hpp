@@ -23,11 +23,17 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace vorodg {
 
+class StateArchive;
+
 using Box = Eigen::AlignedBox2d;
+
+/// Saves or loads boxes as their corners (AlignedBox is not plain bytes by the type traits).
+void archive_boxes(StateArchive& a, std::string_view name, std::vector<Box>& boxes);
 
 /// Two boxes, by their index in the list given to ContactGrid::find, first < second.
 struct IndexPair {

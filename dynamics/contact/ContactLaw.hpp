@@ -25,6 +25,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class ContactLaw {
  public:
   virtual ~ContactLaw() = default;
@@ -48,6 +50,8 @@ class ContactLaw {
   virtual ContactReport constrain(const SurfaceCells& /*surface*/, KinematicState& /*state*/) {
     return {};
   }
+  /// Saves or loads what one evaluation leaves for the next (a checkpoint); nothing by default.
+  virtual void archive(StateArchive& /*a*/) {}
 };
 
 /// A law enforced exactly by impulses (ExactPlane, ExactSurfaceContact): it adds no force of the
@@ -61,6 +65,7 @@ class KinematicContactLaw : public ContactLaw {
     return {};
   }
   std::span<const int> touched() const final { return touched_; }
+  void archive(StateArchive& a) override;
 
  protected:
   /// Throws InputError naming `what` unless the state has a position and a node per (cell,

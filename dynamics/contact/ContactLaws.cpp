@@ -1,5 +1,6 @@
 #include "dynamics/contact/ContactLaws.hpp"
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/NamedRegistry.hpp"
 #include "dynamics/contact/ExactPlane.hpp"
@@ -81,6 +82,10 @@ double contact_step_factor(const std::vector<std::string>& names, const PenaltyC
 std::unique_ptr<ContactLaw> make_contact_law(const std::string& name,
                                              const ContactLawSettings& settings) {
   return registry().at(name).make(settings);
+}
+
+void KinematicContactLaw::archive(StateArchive& a) {
+  a.vector("law.touched", touched_);
 }
 
 }  // namespace vorodg

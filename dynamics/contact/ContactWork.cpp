@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -25,6 +26,20 @@ void ContactWork::add(std::span<const Point> f, std::span<const int> support,
   last_.clear();
   for (int p : support) last_.emplace_back(p, f[p]);
   started_ = true;
+}
+
+void ContactWork::archive(StateArchive& a) {
+  a.each("work.last", last_, [](StateArchive& item, std::pair<int, Point>& force) {
+    item.value("work.pair", force.first);
+    item.value("work.force", force.second);
+  });
+  a.value("work.total", work_);
+  a.value("work.started", started_);
+}
+
+void SegmentedWork::archive(StateArchive& a) {
+  current_.archive(a);
+  a.value("work.booked", booked_);
 }
 
 }  // namespace vorodg

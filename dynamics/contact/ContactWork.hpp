@@ -22,6 +22,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class ContactWork {
  public:
   /// Books the step that ends with the contact forces f at the pairs `support` (f is zero at
@@ -32,6 +34,9 @@ class ContactWork {
            double dt);
   /// The work done so far (negative while contact stores or dissipates energy).
   double work() const { return work_; }
+
+  /// Saves or loads the account (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   std::vector<std::pair<int, Point>> last_;  // the forces at the end of the last step
@@ -53,6 +58,8 @@ class SegmentedWork {
     current_ = ContactWork{};
   }
   double work() const { return booked_ + current_.work(); }
+
+  void archive(StateArchive& a);
 
  private:
   ContactWork current_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -45,6 +46,12 @@ ContactReport ExactPlane::constrain(const SurfaceCells& surface, KinematicState&
     }
   }
   return report;
+}
+
+void ExactPlane::archive(StateArchive& a) {
+  KinematicContactLaw::archive(a);
+  a.vector("exact_plane.seen", seen_);
+  a.value("exact_plane.evaluation", evaluation_);
 }
 
 }  // namespace vorodg

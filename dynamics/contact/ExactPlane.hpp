@@ -19,6 +19,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class ExactPlane final : public KinematicContactLaw {
  public:
   /// `normal` points out of the plane's solid side, into free space; it is normalized. Throws
@@ -32,6 +34,8 @@ class ExactPlane final : public KinematicContactLaw {
 
   bool external() const override { return true; }
   ContactReport constrain(const SurfaceCells& surface, KinematicState& state) override;
+
+  void archive(StateArchive& a) override;
 
  private:
   HalfPlane plane_;

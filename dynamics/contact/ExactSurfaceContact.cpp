@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -122,6 +123,13 @@ double ExactSurfaceContact::relax(Contact& c, KinematicState& state) const {
   push(slide, tangent, false);
   // Sticking: how far the predicted sliding it removed would have carried the pair.
   return std::max(open, std::abs(slide) * c.w * state.dt);
+}
+
+void ExactSurfaceContact::archive(StateArchive& a) {
+  KinematicContactLaw::archive(a);
+  search_.archive(a);
+  a.vector("exact_cells.contacts", contacts_);
+  a.value("exact_cells.sweeps", sweeps_);
 }
 
 }  // namespace vorodg

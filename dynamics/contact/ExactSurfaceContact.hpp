@@ -47,6 +47,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class ExactSurfaceContact final : public KinematicContactLaw {
  public:
   /// grid_spacing > 0: the search grid's smallest spacing (the mesh's h_avg).
@@ -63,6 +65,8 @@ class ExactSurfaceContact final : public KinematicContactLaw {
   /// spacing, or after kMaxSweeps.
   static constexpr double kTolerance = 1e-9;
   static constexpr int kMaxSweeps = 100;
+
+  void archive(StateArchive& a) override;
 
  private:
   /// One vertex-to-edge contact at the predicted positions, with its accumulated impulses.

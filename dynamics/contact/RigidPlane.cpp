@@ -6,6 +6,7 @@
 #include <string>
 #include <unordered_set>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -62,6 +63,11 @@ void RigidPlane::add_friction(int p, const PenaltyContact::Response& normal, con
   const Point velocity = state.velocity.empty() ? Point::Zero() : state.velocity[p];
   force[p] += friction_.force(plane_.normal, velocity, normal, state, shear, report, "rigid plane");
   shear_next_.emplace(p, shear);
+}
+
+void RigidPlane::archive(StateArchive& a) {
+  a.map("penalty_plane.shear", shear_);
+  a.vector("penalty_plane.touched", touched_);
 }
 
 }  // namespace vorodg

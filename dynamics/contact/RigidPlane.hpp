@@ -21,6 +21,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class RigidPlane final : public ContactLaw {
  public:
   /// `normal` points out of the plane's solid side, into the free space; it is normalized.
@@ -43,6 +45,8 @@ class RigidPlane final : public ContactLaw {
   std::span<const int> touched() const override { return touched_; }
   /// The plane takes the reaction.
   bool external() const override { return true; }
+
+  void archive(StateArchive& a) override;
 
  private:
   /// Friction on pair p, pushed by `normal` of stiffness k: adds the shear along the plane.

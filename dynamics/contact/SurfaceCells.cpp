@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -92,6 +93,14 @@ bool SurfaceCells::neighbours(int a, int b) const {
     if (shared) return num_released_ == 0 || !released_between(a, b);
   }
   return false;
+}
+
+void SurfaceCells::archive(StateArchive& a) {
+  a.vector("surface.member", member_);
+  a.vector("surface.cells", cells_);
+  a.vector("surface.exposed", exposed_);
+  a.vector("surface.released", released_);
+  a.value("surface.num_released", num_released_);
 }
 
 }  // namespace vorodg

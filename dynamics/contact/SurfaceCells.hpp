@@ -19,6 +19,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class SurfaceCells {
  public:
   /// The cells with a boundary edge, in increasing index; their boundary edges are exposed.
@@ -58,6 +60,9 @@ class SurfaceCells {
   /// Changes whenever the set of cells or of released edges does (both only grow): what a
   /// cached candidate list depends on.
   long revision() const { return static_cast<long>(cells_.size()) + num_released_; }
+
+  /// Saves or loads which cells and edges are surface and which faces were released.
+  void archive(StateArchive& a);
 
  private:
   void check_cell(int cell) const;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -122,6 +123,13 @@ void SurfaceContact::add_friction(std::uint64_t key, const Penetration& pen, int
                       state, shear, report, "surface contact");
   PenaltyContact::distribute(f, pen.t, p, e0, e1, force);
   inside_next_[key].shear = shear;
+}
+
+void SurfaceContact::archive(StateArchive& a) {
+  search_.archive(a);
+  a.vector("penalty_cells.touched", touched_);
+  a.map("penalty_cells.inside", inside_);
+  a.set("penalty_cells.tunnelled", tunnelled_);
 }
 
 }  // namespace vorodg

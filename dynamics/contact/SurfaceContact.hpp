@@ -49,6 +49,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class SurfaceContact final : public ContactLaw {
  public:
   /// grid_spacing > 0 is the grid's smallest spacing: the mesh's h_avg is the natural choice
@@ -81,6 +83,8 @@ class SurfaceContact final : public ContactLaw {
   const PenaltyContact& law() const { return law_; }
   const ContactFriction& friction() const { return friction_; }
   const ContactCandidates& candidates() const { return search_.candidates(); }
+
+  void archive(StateArchive& a) override;
 
  private:
   /// Pushes the vertices of surface cell i out of surface cell j (indices in surface order).

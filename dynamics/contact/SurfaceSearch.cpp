@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "core/io/StateArchive.hpp"
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
@@ -38,6 +39,12 @@ const std::vector<IndexPair>& SurfaceSearch::find(const SurfaceCells& surface,
   for (const IndexPair& ij : *surface_pairs_)
     cell_pairs_.push_back({cells[ij.first], cells[ij.second]});
   return cell_pairs_;
+}
+
+void SurfaceSearch::archive(StateArchive& a) {
+  candidates_.archive(a);
+  archive_boxes(a, "search.boxes", boxes_);
+  a.vector("search.cell_pairs", cell_pairs_);
 }
 
 }  // namespace vorodg

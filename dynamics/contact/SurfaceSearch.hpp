@@ -12,6 +12,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class SurfaceSearch {
  public:
   /// grid_spacing > 0: the grid's smallest spacing (the mesh's h_avg is the natural choice).
@@ -37,6 +39,9 @@ class SurfaceSearch {
   /// A first depth beyond this fraction of the target's size (the root of its reference area) is
   /// a vertex that tunnelled in: the nearest exit says little about how it got there.
   static constexpr double kTunnelDepth = 0.1;
+
+  /// Saves or loads the candidate list and the last evaluation's boxes and pairs (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   ContactCandidates candidates_;

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/io/StateArchive.hpp"
 #include "core/util/Format.hpp"
 #include "dynamics/problems/DynamicsProbe.hpp"
 
@@ -106,6 +107,13 @@ void BendCurve::write(const fs::path& out, const std::string& run) const {
   fs::create_directories(out / "curves");
   write_file_atomically(out / "curves" / (run + ".csv"),
                         rows_.str() + (last_row_ == run_.step_count() ? "" : row()));
+}
+
+void BendCurve::archive(StateArchive& a) {
+  std::string rows = rows_.str();
+  a.text("bend_curve.rows", rows);
+  if (a.loading()) rows_.str(rows), rows_.seekp(0, std::ios::end);
+  a.value("bend_curve.last_row", last_row_);
 }
 
 }  // namespace vorodg

@@ -49,6 +49,8 @@ class BendCurve : public ProblemProbe {
   /// The crack mouth opening, m: u_x of the mouth's right-hand node minus its left-hand one's.
   double cmod() const;
 
+  void archive(StateArchive& a) override;
+
  private:
   /// The curve's row at the current step.
   std::string row() const;

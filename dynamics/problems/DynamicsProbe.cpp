@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/io/StateArchive.hpp"
+
 namespace vorodg {
 
 DynamicsProbe::DynamicsProbe(const ExplicitParameters& physics, const DynamicsProblem& problem,
@@ -110,6 +112,18 @@ const DynamicsMeasures& DynamicsProbe::finish() {
   }
   m_.bulk_viscosity_dissipated = run_.record().bulk_viscosity_dissipation;
   return m_;
+}
+
+void DynamicsProbe::archive(StateArchive& a) {
+  a.value("probe.measures", m_);
+  a.value("probe.start", start_);
+  a.value("probe.in_contact", in_contact_);
+  a.value("probe.last_wall_force", last_wall_force_);
+  a.vector("probe.wall_window", wall_window_);
+  a.value("probe.window_next", window_next_);
+  a.value("probe.window_sum", window_sum_);
+  a.value("probe.observed", observed_);
+  if (problem_) problem_->archive(a);
 }
 
 }  // namespace vorodg

@@ -17,6 +17,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 struct DynamicsMeasures {
   double energy_balance_error = 0.0;      // at the end, of the input energy
   double max_energy_balance_error = 0.0;  // over every step
@@ -110,6 +112,9 @@ class DynamicsProbe {
   /// After the run: the problem's own per-run files under `out` (ProblemProbe::write).
   void write(const std::filesystem::path& out, const std::string& run) const;
   const DynamicsMeasures& measures() const { return m_; }
+
+  /// Saves or loads the measures so far and what the next observation reads (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   void observe_contact();

@@ -25,6 +25,7 @@
 namespace vorodg {
 
 struct BodiesMesh;
+class StateArchive;
 struct DynamicsMeasures;
 class SceneKeyReader;
 class PolygonMesh;
@@ -41,6 +42,8 @@ class ProblemProbe {
   virtual void watch_cracks(const CohesiveForces&) {}
   /// After the run (complete or stopped): the problem's own per-run files under `out`.
   virtual void write(const std::filesystem::path& /*out*/, const std::string& /*run*/) const {}
+  /// Saves or loads what it carries from step to step (a checkpoint); nothing by default.
+  virtual void archive(StateArchive& /*a*/) {}
 };
 
 /// A column of report.md: its header and the text of a run's cell.

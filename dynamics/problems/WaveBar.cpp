@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/io/StateArchive.hpp"
 #include "core/mesh/PolygonMesh.hpp"
 #include "core/schema/SceneKeyReader.hpp"
 #include "core/util/Format.hpp"
@@ -52,6 +53,7 @@ class ArrivalProbe : public ProblemProbe {
     }
     previous_ = now;
   }
+  void archive(StateArchive& a) override { a.value("arrival.previous", previous_); }
 
  private:
   double far_end_velocity() const {

@@ -84,6 +84,10 @@ int run_application(int argc, char** argv) {
   } catch (const NumericalError& e) {
     std::cerr << "vorodg: numerical breakdown: " << e.what() << "\n";
     return stop_job(kExitNumericalError);
+  } catch (const Interrupted& e) {
+    std::cerr << "vorodg: stopped: " << e.what()
+              << "; every unfinished run is checkpointed: run the same command to resume\n";
+    return stop_job(kExitInterrupted);
   } catch (const std::bad_alloc&) {
     std::cerr << "vorodg: error: out of memory\n";
     return stop_job(kExitNumericalError);

@@ -7,6 +7,7 @@
 
 #include "core/io/AtomicFile.hpp"
 #include "core/util/Errors.hpp"
+#include "core/util/StopRequest.hpp"
 #include "verification/api/SceneStudy.hpp"
 #include "verification/cli/CliSupport.hpp"
 #include "verification/harness/Ensemble.hpp"
@@ -66,6 +67,8 @@ int run_run_command(const RunCommandOptions& o, const CLI::App& command) {
   if (o.out.empty()) throw InputError("run: expected an output folder (-o DIR)");
   if (o.threads < 1) throw InputError("--threads " + std::to_string(o.threads) + ": expected >= 1");
   echo_options("vorodg run", command);
+  // SIGTERM / SIGINT: every run in flight checkpoints and the study ends with kExitInterrupted.
+  install_stop_handlers();
   return run_scene_study(o);
 }
 

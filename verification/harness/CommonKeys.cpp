@@ -56,4 +56,17 @@ SceneKey variants_key() {
              "each merged over the top-level keys; each runs into DIR/<label>/");
 }
 
+std::vector<SceneKey> checkpoint_keys() {
+  return {
+      bounded("checkpoint.wall_seconds", "number", "60", "0 <= wall_seconds <= 1e9",
+              "wall seconds between a run's checkpoints (checkpoints/<run>.ckpt, the one before "
+              "kept as .prev; removed when the run finishes); a rerun into the same folder "
+              "continues each unfinished run from its last one; 0: none by time "
+              "(docs/checkpoints.md)",
+              0.0, false, 1e9),
+      bounded("checkpoint.steps", "integer", "0", "0 <= steps <= 1e9",
+              "also a checkpoint every this many steps; 0: by wall time only", 0.0, false, 1e9),
+  };
+}
+
 }  // namespace vorodg

@@ -19,5 +19,8 @@ std::vector<SceneKey> mesh_keys();
 const SceneKey& mesh_key(const std::string& name);
 /// variants[]: studies side by side, each merged over the top-level keys.
 SceneKey variants_key();
+/// checkpoint.wall_seconds and checkpoint.steps: how often a long run checkpoints
+/// (RunCheckpoints).
+std::vector<SceneKey> checkpoint_keys();
 
 }  // namespace vorodg

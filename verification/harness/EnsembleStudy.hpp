@@ -33,6 +33,8 @@ StudyRecords<Record> run_study_records(
     Record r;
     try {
       r = run_one(id);
+    } catch (const Interrupted&) {  // stopped on request and checkpointed: no record, it resumes
+      throw;
     } catch (const std::exception& e) {  // recorded and reported, not fatal to the study
       r = Record{};
       r.run = id;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <mutex>
 #include <numeric>
 #include <thread>
 
 #include "core/util/Errors.hpp"
+#include "core/util/StopRequest.hpp"
 #include "verification/harness/Ensemble.hpp"
 #include "verification/harness/TaskPoolMpi.hpp"
 
@@ -40,18 +42,33 @@ void run_tasks(const std::vector<Task>& all, int threads,
   const std::vector<std::size_t> order = task_order(tasks);
   std::atomic<std::size_t> next{0};
   std::mutex lock;
+  // The first exception out of a task (a run stopped on request, bad input met late) ends the
+  // pool: the other workers finish (or checkpoint) what they hold and take nothing new; it is
+  // rethrown once all have joined.
+  std::exception_ptr failure;
   auto worker = [&] {
-    for (std::size_t k; (k = next++) < order.size();) {
+    for (std::size_t k; !stop_requested() && (k = next++) < order.size();) {
       const Task& task = tasks[order[k]];
-      const TaskOutput output = execute(task);
-      std::lock_guard<std::mutex> guard(lock);
-      record(task, output);
+      try {
+        const TaskOutput output = execute(task);
+        std::lock_guard<std::mutex> guard(lock);
+        record(task, output);
+      } catch (...) {
+        std::lock_guard<std::mutex> guard(lock);
+        if (!failure) failure = std::current_exception();
+        next = order.size();
+      }
     }
   };
   const int workers = std::clamp(static_cast<int>(tasks.size()), 1, std::max(threads, 1));
   std::vector<std::thread> pool;
   for (int t = 0; t < workers; ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  if (stop_requested() && next < order.size())
+    throw Interrupted("stopped by signal " + std::to_string(stop_signal()) + " before " +
+                      std::to_string(order.size() - std::min(next.load(), order.size())) +
+                      " tasks started");
 }
 
 }  // namespace vorodg

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <iostream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -94,7 +95,14 @@ std::vector<std::thread> start_workers(int threads, LocalQueue& queue,
   std::vector<std::thread> pool;
   for (int t = 0; t < std::max(threads, 1); ++t)
     pool.emplace_back([&] {
-      while (auto task = queue.take()) queue.push_output(task->first, execute(task->second));
+      try {
+        while (auto task = queue.take()) queue.push_output(task->first, execute(task->second));
+      } catch (const Interrupted& e) {
+        // Its checkpoint is written; the ranks cannot finish the protocol, so the job ends
+        // here, with the code that says "resumable".
+        std::cerr << "vorodg: stopped: " << e.what() << "\n";
+        MPI_Abort(MPI_COMM_WORLD, kExitInterrupted);
+      }
     });
   return pool;
 }

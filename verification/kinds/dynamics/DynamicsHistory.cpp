@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/io/AtomicFile.hpp"
+#include "core/io/StateArchive.hpp"
 #include "core/util/Format.hpp"
 
 namespace vorodg {
@@ -37,6 +38,10 @@ void DynamicsHistory::add(const StepRecord& r, const ContactForces* contact) {
 
 void DynamicsHistory::flush() const {
   write_file_atomically(file_, text_);
+}
+
+void DynamicsHistory::archive(StateArchive& a) {
+  a.text("history.rows", text_);
 }
 
 }  // namespace vorodg

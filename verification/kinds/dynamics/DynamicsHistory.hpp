@@ -15,6 +15,8 @@
 
 namespace vorodg {
 
+class StateArchive;
+
 class DynamicsHistory {
  public:
   /// Nothing is written before the first flush.
@@ -27,6 +29,9 @@ class DynamicsHistory {
   /// Rewrites the file with every row so far (atomically).
   void flush() const;
   const std::filesystem::path& file() const { return file_; }
+
+  /// Saves or loads the rows so far (a checkpoint).
+  void archive(StateArchive& a);
 
  private:
   std::filesystem::path file_;

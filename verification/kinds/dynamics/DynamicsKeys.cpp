@@ -294,6 +294,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, time_keys());
   append_keys(keys, mesh_keys());
   append_keys(keys, output_keys());
+  append_keys(keys, checkpoint_keys());
   return keys;
 }
 

@@ -6,7 +6,9 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/io/AtomicFile.hpp"
+#include "core/io/Checkpoint.hpp"
 #include "core/io/PvdCollection.hpp"
+#include "core/io/StateArchive.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
@@ -16,6 +18,7 @@
 #include "dynamics/ContactForces.hpp"
 #include "dynamics/ExplicitSimulation.hpp"
 #include "dynamics/LumpedMass.hpp"
+#include "verification/harness/RunCheckpoints.hpp"
 #include "verification/kinds/dynamics/DynamicsHistory.hpp"
 #include "verification/kinds/dynamics/FragmentRecord.hpp"
 #include "verification/solve/SettingsSchema.hpp"
@@ -108,6 +111,16 @@ class RunOutputs {
     }
   }
 
+  /// Saves or loads the rows, the series' entries and the snapshots taken (a checkpoint).
+  void archive(StateArchive& a) {
+    history_.archive(a);
+    series_.archive(a);
+    a.value("outputs.next_snapshot", next_);
+    std::string taken = snapshots_.str();
+    a.text("outputs.snapshots", taken);
+    if (a.loading()) snapshots_.str(taken), snapshots_.seekp(0, std::ios::end);
+  }
+
   /// The history's last rows and the snapshots' list.
   void finish() {
     history_.flush();
@@ -136,17 +149,45 @@ class RunOutputs {
   std::ostringstream snapshots_;
 };
 
-/// Steps the model to its end, observing and writing as the scene asks. Throws NumericalError
-/// once the run is unstable (ExplicitSimulation::unstable).
-void time_loop(ExplicitSimulation& model, const DynamicsScene& scene, RunOutputs& outputs,
-               DynamicsProbe& probe) {
+/// One run's simulation with what observes and writes it: built whole, and again whole when a
+/// checkpoint is refused half-way through its load.
+struct RunParts {
+  RunParts(const DynamicsScene& scene, const EnsembleRunId& id, const fs::path& out)
+      : model(dynamics_simulation(scene, id)),
+        outputs(model, scene, out, id.id()),
+        probe(scene, *scene.problem, model.bodies, *model.run, scene.output_every) {
+    if (model.cracks) probe.watch_cracks(model.cracks->cohesive());
+  }
+  /// Everything the next step reads or the end of the run reports.
+  void archive(StateArchive& a) {
+    model.archive(a);
+    probe.archive(a);
+    outputs.archive(a);
+  }
+
+  ExplicitSimulation model;
+  RunOutputs outputs;
+  DynamicsProbe probe;
+};
+
+/// Steps the model from step `first` to its end, observing and writing as the scene asks, with
+/// a checkpoint when one is due or a stop is asked for. Throws NumericalError once the run is
+/// unstable (ExplicitSimulation::unstable), Interrupted after a stop's checkpoint.
+void time_loop(RunParts& parts, const DynamicsScene& scene, RunCheckpoints& checkpoints,
+               long first) {
+  ExplicitSimulation& model = parts.model;
+  RunOutputs& outputs = parts.outputs;
+  DynamicsProbe& probe = parts.probe;
   CentralDifference& run = *model.run;
-  probe.observe();
-  if (model.cracks) model.cracks->check_balance(run.record());
-  outputs.record(run.record());
-  outputs.frame();
-  outputs.snapshots();
-  for (long s = 1; s <= model.steps; ++s) {
+  if (first == 0) {
+    probe.observe();
+    if (model.cracks) model.cracks->check_balance(run.record());
+    outputs.record(run.record());
+    outputs.frame();
+    outputs.snapshots();
+  }
+  const auto save = [&](StateArchive& a) { parts.archive(a); };
+  for (long s = first + 1; s <= model.steps; ++s) {
     model.step();
     const StepRecord& step = run.record();
     probe.observe();
@@ -167,6 +208,9 @@ void time_loop(ExplicitSimulation& model, const DynamicsScene& scene, RunOutputs
                            " s): the energy grew to " + fmt(model.energy_growth(), 3) +
                            " times the input (dt = " + fmt(scene.safety) + " x the " +
                            step_estimate_name(scene.estimate) + " estimate)");
+    if (last) break;
+    stop_if_requested(checkpoints, s, step.time, save);
+    if (checkpoints.due(s)) checkpoints.write(s, step.time, save);
   }
 }
 
@@ -186,37 +230,47 @@ DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,
                             const fs::path& out,
                             const std::function<void(const ExplicitSimulation&)>& at_end) {
   const Stopwatch clock;
-  ExplicitSimulation model = dynamics_simulation(scene, id);
+  auto parts = std::make_unique<RunParts>(scene, id, out);
+  // A part of a study differs from its siblings by its label and its step fraction.
+  const std::string part = scene.label + "@" + exact_text(scene.step_fraction);
+  RunCheckpoints checkpoints(
+      out, checkpoint_owner(scene.settings, part, parts->model.mesh(), id.id()), scene.checkpoint);
+  // What the record describes is the run as built, at t = 0 (a resumed map has split).
   DynamicsRecord r;
   r.run = id;
-  r.cells = model.mesh().num_cells();
-  r.h_avg = model.bodies.h_avg;
-  r.dt_lanczos = model.dt_lanczos, r.dt_cells = model.dt_cells;
-  r.lanczos_iterations = model.lanczos_iterations;
-  r.dt = model.dt;
-  r.steps = model.steps;
-  r.contact_stiffness = model.contact_stiffness;
-  r.dofs = model.run->dofs().num_dofs();
-  RunOutputs outputs(model, scene, out, id.id());
-  DynamicsProbe probe(scene, *scene.problem, model.bodies, *model.run, scene.output_every);
-  if (model.cracks) probe.watch_cracks(model.cracks->cohesive());
+  const ExplicitSimulation& built = parts->model;
+  r.cells = built.mesh().num_cells();
+  r.h_avg = built.bodies.h_avg;
+  r.dt_lanczos = built.dt_lanczos, r.dt_cells = built.dt_cells;
+  r.lanczos_iterations = built.lanczos_iterations;
+  r.dt = built.dt;
+  r.steps = built.steps;
+  r.contact_stiffness = built.contact_stiffness;
+  r.dofs = built.run->dofs().num_dofs();
+  const std::optional<long> resumed =
+      checkpoints.resume([&](StateArchive& a) { parts->archive(a); },
+                         [&] { parts = std::make_unique<RunParts>(scene, id, out); });
+  ExplicitSimulation& model = parts->model;
   const double setup = clock.seconds();
   try {
-    time_loop(model, scene, outputs, probe);
+    time_loop(*parts, scene, checkpoints, resumed.value_or(0));
     r.complete = true;
   } catch (const NumericalError& e) {  // unstable, or a breakdown: what was written stays
     r.failure = e.what();
   }
-  outputs.finish();
+  parts->outputs.finish();
   r.steps = model.run->step_count();  // those done: fewer if the run stopped
   r.end_time = model.run->time();
-  r.measures = probe.finish();
-  probe.write(out, id.id());
+  r.measures = parts->probe.finish();
+  parts->probe.write(out, id.id());
   if (model.cracks) record_fragments(*model.cracks, scene, model.mass, out, id.id(), r.measures);
   if (model.coupling) r.measures.coupling_seconds = model.run->coupling_seconds();
+  r.checkpoints = checkpoints.written();
+  r.checkpoint_seconds = checkpoints.seconds();
   r.seconds = clock.seconds();
   r.loop_seconds = r.seconds - setup;
   if (at_end) at_end(model);
+  checkpoints.finished();
   return r;
 }
 

@@ -30,7 +30,9 @@ struct DynamicsRecord {
   bool complete = false;
   std::string failure;
   double seconds = 0.0;
-  double loop_seconds = 0.0;  // of which the time loop
+  double loop_seconds = 0.0;        // of which the time loop
+  int checkpoints = 0;              // written by this process (a resumed run: since it resumed)
+  double checkpoint_seconds = 0.0;  // of which writing them
 };
 
 /// Builds the bodies' mesh of the first realization of every level, so that a mesh spec the

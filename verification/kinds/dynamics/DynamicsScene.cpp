@@ -213,6 +213,7 @@ void DynamicsSceneReader::read_time() {
   }
   note("outputs.snapshots", listed.empty() ? "none" : "[" + listed + "]");
   o.finish();
+  s_.checkpoint = read_checkpoint_policy(*this);
 }
 
 void DynamicsSceneReader::read_refinement(SceneObject& t) {

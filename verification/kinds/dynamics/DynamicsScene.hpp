@@ -21,6 +21,7 @@
 #include "dynamics/ExplicitParameters.hpp"
 #include "dynamics/problems/DynamicsProblem.hpp"
 #include "verification/harness/MeshBlock.hpp"
+#include "verification/harness/RunCheckpoints.hpp"
 
 namespace vorodg {
 
@@ -33,6 +34,8 @@ struct DynamicsScene : ExplicitParameters {
   std::shared_ptr<const DynamicsProblem> problem;
   int output_every = 0, history_every = 0;
   bool vtu = true;
+  /// How often a run checkpoints. Not part of what a checkpoint must match: a rerun may change it.
+  CheckpointPolicy checkpoint;
   std::vector<double> snapshots;  // times of extra frames (ascending), s
   std::vector<SceneMesh> meshes;
   /// Every key and the value used, in the table's order (the echo and summary.json).

@@ -87,6 +87,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, loading_keys());
   append_keys(keys, mesh_keys());
   append_keys(keys, study_keys());
+  append_keys(keys, checkpoint_keys());
   return keys;
 }
 

@@ -8,6 +8,7 @@
 #include "core/element/ElementTable.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "core/io/PvdCollection.hpp"
+#include "core/io/StateArchive.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshValidator.hpp"
 #include "core/util/Errors.hpp"
@@ -123,6 +124,21 @@ class PathRecorder {
     if (p.step % kCurveWriteEvery == 0) write_file_atomically(curve_file_, curve_.str());
   }
 
+  /// Saves or loads the curve, the series, the last point's states and the record's running
+  /// figures (a checkpoint).
+  void archive(StateArchive& a) {
+    std::string rows = curve_.str();
+    a.text("recorder.curve", rows);
+    if (a.loading()) curve_.str(rows), curve_.seekp(0, std::ios::end);
+    series_.archive(a);
+    a.vector("recorder.last_points", last_points_);
+    for (double* x : {&r_.peak_load, &r_.displacement_at_peak, &r_.dissipated_energy,
+                      &r_.crack_length, &r_.energy_balance_error, &r_.closed_form_error})
+      a.value("recorder.figure", *x);
+    a.value("recorder.newton_iterations", r_.newton_iterations);
+    a.value("recorder.points", r_.points);
+  }
+
   /// The whole curve, and the faces past the strength at the last point.
   void finish() {
     write_file_atomically(curve_file_, curve_.str());
@@ -191,15 +207,43 @@ FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run
   model.setup_system();
   r.dofs = model.num_dofs();
 
-  PathRecorder recorder(scene, model, material, out, run.id(), r);
   const double setup_seconds = clock.seconds();
-  QuasiStaticPath path(model, scene.loading);
+  // The path and its recorder are all that changes along the path (the model is rebuilt
+  // identically from the scene); built again whole if a checkpoint is refused half-way through
+  // its load.
+  struct PathParts {
+    PathRecorder recorder;
+    QuasiStaticPath path;
+  };
+  const FractureRecord blank = r;
+  auto build = [&] {
+    r = blank;
+    return std::unique_ptr<PathParts>(
+        new PathParts{PathRecorder(scene, model, material, out, run.id(), r),
+                      QuasiStaticPath(model, scene.loading)});
+  };
+  std::unique_ptr<PathParts> parts = build();
+  const auto save = [&](StateArchive& a) {
+    parts->path.archive(a);
+    parts->recorder.archive(a);
+  };
+  RunCheckpoints checkpoints(out, checkpoint_owner(scene.settings, "", mesh, run.id()),
+                             scene.checkpoint);
+  checkpoints.set_clock("stroke", "m");
+  checkpoints.resume(save, [&] { parts = build(); });
+  QuasiStaticPath& path = parts->path;
+  PathRecorder& recorder = parts->recorder;
   r.complete = path.run(
       [&](const PathPoint& p, const Eigen::VectorXd& u, const std::vector<InterfacePoint>& points) {
         recorder(p, u, points);
         if (observe) observe(model, p, points);
+      },
+      [&](int step) {  // the checkpoint's clock is the stroke
+        stop_if_requested(checkpoints, step, path.last().stroke, save);
+        if (checkpoints.due(step)) checkpoints.write(step, path.last().stroke, save);
       });
   recorder.finish();
+  checkpoints.finished();
   r.failure = path.failure();
   r.ended = path.stop_reason();
   r.factorizations = path.factorizations();

@@ -43,6 +43,7 @@ class FractureSceneReader : public SceneKeyReader {
     SceneObject outputs = object("outputs");
     s_.vtu_every = integer(outputs, "outputs.vtu_every");
     outputs.finish();
+    s_.checkpoint = read_checkpoint_policy(*this);
     top_.finish();
     s_.settings = settings();
     return s_;

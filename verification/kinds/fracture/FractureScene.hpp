@@ -16,6 +16,7 @@
 #include "fracture/FractureProblem.hpp"
 #include "fracture/MohrCoulomb.hpp"
 #include "verification/harness/MeshBlock.hpp"
+#include "verification/harness/RunCheckpoints.hpp"
 
 namespace vorodg {
 
@@ -35,6 +36,8 @@ struct FractureScene {
   PathOptions loading;
   std::vector<SceneMesh> meshes;
   int vtu_every = 10;  // a .vtu of the deformed mesh every this many steps (0: none)
+  /// How often a path checkpoints (not part of what a checkpoint must match).
+  CheckpointPolicy checkpoint;
   /// Every key and the value used, in the key table's order (the echo).
   std::vector<std::pair<std::string, std::string>> settings;
   std::vector<FractureScene> variants;

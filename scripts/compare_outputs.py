@@ -8,7 +8,7 @@ Files are compared byte for byte, with three exceptions that carry wall-clock ti
 run happened, and so differ between any two runs of the same program:
   - pictures (.png) are only checked to exist;
   - run.json (the scene's absolute path) and timings.json (wall-clock seconds per stage)
-    are skipped;
+    are skipped, and so are a shard's own results files (results.shard-K-of-N.jsonl);
   - timing and memory values are masked: JSON keys and CSV columns named "*seconds*" or
     "*memory*", and in report.md a number followed by " s".
 Prints one line per difference and exits 1 if there is any, 0 otherwise.
@@ -89,10 +89,13 @@ def comparable(path, data):
 
 
 def files(root):
+    """Every file under root but a shard's own results (results.shard-K-of-N.jsonl: how the study
+    was split, not what it found; merge gathers them into results.jsonl)."""
     out = set()
     for d, _, names in os.walk(root):
         for n in names:
-            out.add(os.path.relpath(os.path.join(d, n), root))
+            if not (n.startswith("results.shard-") and n.endswith(".jsonl")):
+                out.add(os.path.relpath(os.path.join(d, n), root))
     return out
 
 

@@ -9,7 +9,8 @@
 //   - the scene reader: every key of the table is in docs/dynamics.md, --force lets safety >= 1
 //     through, the defaults are echoed;
 //   - `vorodg run` end to end: the history columns exactly as named, one row per step, the
-//     reports, the .pvd series, the energy plot, and a rerun that resumes without running again.
+//     reports, the .pvd series (its frames listed relative to it with -o relative to the working
+//     folder), the energy plot, and a rerun that resumes without running again.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -158,8 +159,11 @@ TEST_F(DynamicsStudy, RunWritesHistoryReportsSeriesAndPlots) {
   std::ofstream(scene) << R"({"study": "dynamics", "problem": "wall-impact",
     "description": "end to end", "time": {"output_every": 50},
     "meshes": [{"family": "quad", "sizes": [0.02]}]})";
-  const RunResult r =
-      run_program(kExe, {"run", scene.string(), "-o", out.string(), "--quiet"}, scratch_);
+  // -o relative to the working folder: the series must still list its frames relative to itself.
+  const fs::path here = fs::current_path();
+  fs::current_path(scratch_);
+  const RunResult r = run_program(kExe, {"run", scene.string(), "-o", "out", "--quiet"}, scratch_);
+  fs::current_path(here);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("#   contact.alpha = 0.1"), std::string::npos) << r.out;
   const std::string history = slurp(out / "history" / "quad-L0-R0.csv");
@@ -179,6 +183,8 @@ TEST_F(DynamicsStudy, RunWritesHistoryReportsSeriesAndPlots) {
   EXPECT_TRUE(fs::exists(out / "report.md"));
   EXPECT_TRUE(fs::exists(out / "vtu" / "quad-L0-R0.pvd"));
   EXPECT_TRUE(fs::exists(out / "vtu" / "quad-L0-R0" / "step_0.vtu"));
+  EXPECT_NE(slurp(out / "vtu" / "quad-L0-R0.pvd").find(R"(file="quad-L0-R0/step_0.vtu")"),
+            std::string::npos);
   EXPECT_TRUE(fs::exists(out / "plots" / "quad-L0-R0_energy.png")) << r.err;
   // A rerun finds the run done and only rewrites the reports.
   const RunResult again = run_program(

@@ -23,7 +23,7 @@ mkdir -p "${work}"
 work=$(realpath "${work}")
 cd "${work}"
 
-"${vorodg}" run "${scene}" -o single --threads 1 --quiet --no-plots > single.log 2>&1
+"${vorodg}" run "${scene}" -o "${work}/single" --threads 1 --quiet > single.log 2>&1
 
 job=$(sbatch --parsable --array=0-$((shards - 1)) "${root}/scripts/slurm-array" "${scene}" \
       "${work}/array" "${vorodg}")
@@ -48,7 +48,7 @@ cat "${log}"
 grep -q "interrupted and checkpointed: requeued" "${log}" || { echo "task 1 was not stopped by the TERM"; exit 1; }
 grep -q "resumed at step" "${log}" || { echo "task 1 did not resume from its checkpoint"; exit 1; }
 
-"${vorodg}" merge array > merge.log 2>&1
+"${vorodg}" merge "${work}/array" > merge.log 2>&1
 cmp single/summary.json array/summary.json
 /usr/bin/python3 "${root}/scripts/compare_outputs.py" single array
 echo "slurm job array: the same results as one process, task 1 stopped, requeued and resumed"

@@ -94,7 +94,9 @@ class RunOutputs {
   /// A frame of the series.
   void frame() {
     const CentralDifference& run = *model_.run;
-    if (scene_.vtu) series_.add(run.time(), write("step_" + std::to_string(run.step_count())));
+    // Absolute, so that the series lists it relative to its own folder whatever -o was.
+    if (scene_.vtu)
+      series_.add(run.time(), fs::absolute(write("step_" + std::to_string(run.step_count()))));
   }
 
   /// A frame at the first step at or after each requested time.

@@ -118,7 +118,7 @@ class PathRecorder {
       const fs::path file = out_ / "vtu" / id_ / ("step_" + std::to_string(p.step) + ".vtu");
       fs::create_directories(file.parent_path());
       write_deformed(file, model_, u, points, magnify_);
-      series_.add(p.stroke, file);
+      series_.add(p.stroke, fs::absolute(file));  // listed relative to the .pvd, whatever -o was
     }
     last_points_ = points;
     if (p.step % kCurveWriteEvery == 0) write_file_atomically(curve_file_, curve_.str());

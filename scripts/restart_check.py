@@ -3,20 +3,20 @@
 never stopped (docs/checkpoints.md).
 
 Usage: restart_check.py VORODG SCENE WORK [--term N] [--kill N] [--seed S] [--threads T]
-                        [--set KEY=VALUE ...]
+                        [--set POINTER=VALUE ...]
 
 1. Runs SCENE once without a stop into WORK/reference and times it (T).
 2. Into WORK/stopped: N times, starts `vorodg run` and sends SIGTERM at a moment drawn uniformly
-   from (0.05, 0.95) x 2 T / (stops + 1), so that on average the stops spread over the whole
-   study (the run must exit with 75, "interrupted, resumable", or 0 if it finished first); N
-   times the same with SIGKILL, one of them sent as soon as a checkpoint is
-   being written (a temporary file beside a .ckpt exists), if the poll catches one. The moments
-   are drawn from --seed, so a check can be repeated.
+   from (0.05, 0.95) x T / (stops + 1), so that every stop meets the study still going (the run
+   must exit with 75, "interrupted, resumable", or 0 if it finished first); N times the same
+   with SIGKILL, one of them sent as soon as a checkpoint is being written (a temporary file
+   beside a .ckpt exists) if the poll catches one before its moment, at the moment otherwise.
+   The moments are drawn from --seed, so a check can be repeated.
 3. Runs it to the end, then compares the two folders with compare_outputs.py (byte for byte,
    times masked) and says which stops resumed from a checkpoint.
 
---set KEY=VALUE overrides a top-level JSON pointer of the scene (e.g. /checkpoint/steps=50)
-into WORK/scene.json. Exits 0 if the folders agree, 1 otherwise.
+--set POINTER=VALUE sets a JSON pointer of the scene to a JSON value (e.g. /checkpoint/steps=50,
+/meshes/0/sizes=[0.0254]) into WORK/scene.json. Exits 0 if the folders agree, 1 otherwise.
 """
 import argparse
 import glob
@@ -44,8 +44,9 @@ def scene_with(scene, overrides, work):
         keys = [k for k in pointer.split("/") if k]
         node = data
         for k in keys[:-1]:
-            node = node.setdefault(k, {})
-        node[keys[-1]] = json.loads(value)
+            node = node[int(k)] if isinstance(node, list) else node.setdefault(k, {})
+        last = int(keys[-1]) if isinstance(node, list) else keys[-1]
+        node[last] = json.loads(value)
     path = os.path.join(work, "scene.json")
     with open(path, "w") as f:
         json.dump(data, f, indent=1)
@@ -61,18 +62,15 @@ def writing_checkpoint(out):
 
 
 def stop_once(cmd, out, sig, delay, during_write, log):
-    """Starts the run, sends `sig` after `delay` s (or, during_write, at the first sign of a
-    checkpoint being written); returns (exit code, whether it hit a write)."""
+    """Starts the run, sends `sig` after `delay` s (during_write: at the first sign of a
+    checkpoint being written before then); returns (exit code, whether it hit a write)."""
     proc = subprocess.Popen(cmd, stdout=log, stderr=log)
     start, hit = time.monotonic(), False
     while proc.poll() is None:
-        now = time.monotonic() - start
         if during_write and writing_checkpoint(out):
             hit = True
             break
-        if now >= delay and not during_write:
-            break
-        if during_write and now >= 3 * delay + 5:
+        if time.monotonic() - start >= delay:  # aimed at a write and none caught: at the moment
             break
         time.sleep(0.0005 if during_write else 0.005)
     if proc.poll() is None:
@@ -107,8 +105,10 @@ def main():
     first_kill = plan.index(signal.SIGKILL) if a.kill else -1
     ok = True
     for i, sig in enumerate(plan):
-        # A stop every T / (stops + 1) on average, so that each one meets a run still going.
-        delay = rng.uniform(0.05, 0.95) * 2.0 * whole / (len(plan) + 1)
+        # A stop every T / (2 (stops + 1)) on average: every one meets the study still going (a
+        # resumed run starts a little later than a fresh one, and a kill loses what followed
+        # the last checkpoint), and the run after the last stop finishes about half of it.
+        delay = rng.uniform(0.05, 0.95) * whole / (len(plan) + 1)
         during_write = i == first_kill
         log.write(f"--- stop {i}: {sig.name} at {delay:.2f} s{' (during a write)' * during_write}\n")
         log.flush()

@@ -9,8 +9,9 @@ Usage: restart_check.py VORODG SCENE WORK [--term N] [--kill N] [--seed S] [--th
 2. Into WORK/stopped: N times, starts `vorodg run` and sends SIGTERM at a moment drawn uniformly
    from (0.05, 0.95) x T / (stops + 1), at least 0.3 s, so that every stop meets the study
    still going (the run must exit with 75, "interrupted, resumable", or 0 if it finished
-   first); N times the same with SIGKILL, one of them sent as soon as a checkpoint is being written (a temporary file
-   beside a .ckpt exists) if the poll catches one before its moment, at the moment otherwise.
+   first); N times the same with SIGKILL, one of them sent as soon as a checkpoint is being
+   written (a temporary file beside a .ckpt exists) if the poll catches one before its moment,
+   at the moment otherwise.
    The moments are drawn from --seed, so a check can be repeated.
 3. Runs it to the end, then compares the two folders with compare_outputs.py (byte for byte,
    times masked) and says which stops resumed from a checkpoint.

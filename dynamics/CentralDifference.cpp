@@ -91,19 +91,22 @@ void CentralDifference::constrain_contact(const Eigen::VectorXd& w, double beta,
                                           Eigen::VectorXd& f_contact) {
   if (!contact_ || !contact_->kinematic()) return;
   const double c = options_.damping;
-  auto predict = [&](int node) {
-    ContactForces::Prediction next;
+  const int nodes = dofs_.num_nodes();
+  predicted_.resize(nodes);
+  held_.resize(nodes);
+  for (int node = 0; node < nodes; ++node) {
     const double m = mass_node_[node];
+    bool held = false;
     for (int d = 0; d < 2; ++d) {
       const int i = 2 * node + d;
-      next.held = next.held || prescribed_[i] >= 0;
+      held = held || prescribed_[i] >= 0;
       double applied = f_ext[i] + f_contact[i] - f_int_[i];
       if (bulk_) applied += f_bulk[i];
-      next.velocity[d] = w[i] + beta * dt_ * (applied - c * m * w[i]) / (m * inertia);
+      predicted_[node][d] = w[i] + beta * dt_ * (applied - c * m * w[i]) / (m * inertia);
     }
-    return next;
-  };
-  contact_->constrain(predict, beta, inertia, f_contact);
+    held_[node] = held;
+  }
+  contact_->constrain({predicted_, held_}, beta, inertia, f_contact);
 }
 
 void CentralDifference::add_velocity_boundary(VelocityBoundary bc) {

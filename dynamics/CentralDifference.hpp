@@ -218,6 +218,8 @@ class CentralDifference {
   Eigen::VectorXd f_contact_, f_contact_next_;
   Eigen::VectorXd f_bulk_, f_bulk_next_;
   Eigen::VectorXd v_half_;
+  std::vector<Point> predicted_;  // per node: the next half-step velocity kinematic contact sees
+  std::vector<char> held_;        // per node: whether a prescribed velocity holds it
   std::vector<double> vbar_half_, vbar_next_half_;  // vbar(t_{n+1/2}), vbar(t_{n+3/2})
   StepRecord record_;
   OrderedSum sum_;

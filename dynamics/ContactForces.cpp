@@ -47,15 +47,16 @@ void ContactForces::bind(const SplitDofMap& dofs, const Eigen::VectorXd& node_ma
                      " node masses: expected one per node, " + std::to_string(dofs.num_nodes()));
   node_.resize(reference_.size());
   mass_.resize(reference_.size());
+  size_nodes(dofs.num_nodes());
   for (int i = 0; i < dofs.num_nodes(); ++i) bind_node(dofs, node_masses, i);
   num_dofs_ = dofs.num_dofs();
-  size_nodes(dofs.num_nodes());
 }
 
 void ContactForces::size_nodes(int nodes) {
   for (auto* buffer : {&node_velocity_, &normal_impulse_, &friction_impulse_})
     buffer->resize(nodes, Point::Zero());
   inverse_mass_.resize(nodes, 0.0);
+  node_inverse_mass_.resize(nodes, 0.0);
 }
 
 void ContactForces::rebind(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses,
@@ -63,12 +64,13 @@ void ContactForces::rebind(const SplitDofMap& dofs, const Eigen::VectorXd& node_
   if (node_masses.size() != dofs.num_nodes())
     throw InputError("contact: " + std::to_string(node_masses.size()) +
                      " node masses: expected one per node, " + std::to_string(dofs.num_nodes()));
+  size_nodes(dofs.num_nodes());
   for (int i : nodes) bind_node(dofs, node_masses, i);
   num_dofs_ = dofs.num_dofs();
-  size_nodes(dofs.num_nodes());
 }
 
 void ContactForces::bind_node(const SplitDofMap& dofs, const Eigen::VectorXd& node_masses, int i) {
+  node_inverse_mass_[i] = 1.0 / node_masses[i];
   for (int p : dofs.node_pairs(i)) {
     node_[p] = i;
     mass_[p] = node_masses[i];
@@ -149,18 +151,18 @@ void ContactForces::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
   }
 }
 
-void ContactForces::constrain(const Predictor& predict, double beta, double inertia,
+void ContactForces::constrain(const Prediction& next, double beta, double inertia,
                               Eigen::VectorXd& f) {
   if (!kinematic_) return;
   if (!evaluated_) throw InputError("contact: constrain() before evaluate()");
-  const auto& o = mesh_.offsets();
-  for (int c : surface_.cells())
-    for (int p = o[c]; p < o[c + 1]; ++p) {
-      const int n = node_[p];
-      const Prediction next = predict(n);
-      node_velocity_[n] = next.velocity;
-      inverse_mass_[n] = next.held ? 0.0 : 1.0 / mass_[p];
-    }
+  const std::size_t nodes = node_inverse_mass_.size();
+  if (next.velocity.size() != nodes || next.held.size() != nodes)
+    throw InputError("contact: a prediction of " + std::to_string(next.velocity.size()) +
+                     " velocities and " + std::to_string(next.held.size()) +
+                     " holds: expected one per node, " + std::to_string(nodes));
+  std::copy(next.velocity.begin(), next.velocity.end(), node_velocity_.begin());
+  for (std::size_t n = 0; n < nodes; ++n)
+    inverse_mass_[n] = next.held[n] ? 0.0 : node_inverse_mass_[n];
   for (int p : impulse_support_) impulse_force_[p] = friction_force_[p] = Point::Zero();
   impulse_support_.clear();
   KinematicState state{position_,         node_, node_velocity_, inverse_mass_, normal_impulse_,

@@ -16,13 +16,21 @@
 //   - the energy balance closes to round-off, the plane's work booked as contact work;
 //   - a block resting on the plane under gravity presses it with its weight and does not sink;
 //   - a block sliding on the plane decelerates at mu g (Coulomb's closed form), the friction's
-//     work booked as friction dissipation.
+//     work booked as friction dissipation;
+//   - on its own, the law passes over the pairs no node can bring to the plane within a step and
+//     still meets a non-finite velocity wherever it is.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include <limits>
+#include <vector>
+
 #include "core/meshgen/MeshFamily.hpp"
 #include "dynamics/ExplicitSimulation.hpp"
+#include "dynamics/contact/ExactPlane.hpp"
+#include "dynamics/contact/KinematicState.hpp"
+#include "dynamics/contact/SurfaceCells.hpp"
 
 namespace vorodg {
 namespace {
@@ -143,6 +151,58 @@ TEST(ExactPlane, ACoarseBarConvergesInTheStep) {
   std::printf("impulse shortfall at h = L/16: %.4f, at L/32: %.4f (ratio %.2f)\n", coarse, fine,
               coarse / fine);
   EXPECT_NEAR(coarse / fine, 2.0, 0.67);
+}
+
+/// One node per vertex, every cell a surface cell, unit masses, every node moving at `velocity`.
+struct LooseState {
+  std::vector<Point> position, velocity, normal, friction;
+  std::vector<int> node;
+  std::vector<double> inverse_mass;
+  KinematicState state(double dt) {
+    return {position, node, velocity, inverse_mass, normal, friction, dt};
+  }
+  LooseState(const PolygonMesh& mesh, const Point& v) {
+    for (int vertex : mesh.cell_vertex_list()) {
+      position.push_back(mesh.vertex(vertex));
+      node.push_back(vertex);
+    }
+    const auto nodes = static_cast<std::size_t>(mesh.num_vertices());
+    velocity.assign(nodes, v);
+    normal.assign(nodes, Point::Zero());
+    friction.assign(nodes, Point::Zero());
+    inverse_mass.assign(nodes, 1.0);
+  }
+};
+
+TEST(ExactPlane, PassesOverFarPairsAndMeetsANonFiniteVelocity) {
+  // A 4 x 2 block of quads on the plane y = 0, falling at 1 m/s: in a step of 1 ms only the
+  // bottom row (y = 0) can reach the plane; the rows at y = 0.5 and 1 are 500 times farther.
+  const PolygonMesh mesh = quad_mesh(Rectangle(0.0, 0.0, 2.0, 1.0), 0.5).mesh;
+  SurfaceCells surface(mesh);
+  for (int c = 0; c < mesh.num_cells(); ++c) surface.add(c);
+  const double dt = 1e-3;
+  LooseState loose(mesh, Point(0.0, -1.0));
+  ExactPlane plane(Point::Zero(), Point(0.0, 1.0));
+  KinematicState state = loose.state(dt);
+  const ContactReport report = plane.constrain(surface, state);
+  int bottom = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const bool on_plane = mesh.vertex(v).y() == 0.0;
+    bottom += on_plane;
+    // Stopped exactly on the plane (the impulse m dt |v| / dt), or untouched.
+    EXPECT_EQ(loose.velocity[v], on_plane ? Point::Zero() : Point(0.0, -1.0)) << "vertex " << v;
+    EXPECT_EQ(loose.normal[v], on_plane ? Point(0.0, 1.0) : Point::Zero()) << "vertex " << v;
+  }
+  EXPECT_EQ(bottom, 5);
+  EXPECT_EQ(report.contacts, bottom);
+
+  // A far node's velocity turns NaN: not passed over, refused.
+  LooseState broken(mesh, Point(0.0, -1.0));
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (mesh.vertex(v).y() == 1.0)
+      broken.velocity[v].y() = std::numeric_limits<double>::quiet_NaN();
+  KinematicState bad = broken.state(dt);
+  EXPECT_THROW(plane.constrain(surface, bad), NumericalError);
 }
 
 }  // namespace

@@ -20,9 +20,18 @@ ContactReport ExactPlane::constrain(const SurfaceCells& surface, KinematicState&
   touched_.clear();
   ContactReport report;
   const Point tangent(-plane_.normal.y(), plane_.normal.x());
+  // A pair farther from the plane than any node can move this step stays in front of it: passed
+  // over on its position alone (a sequential read), without its node's velocity (a scattered
+  // one). Twice the reach and a margin of round-off on the coordinates keep the test on the
+  // safe side of the predicted gap's own rounding. A NaN gap is never passed over.
+  const double reach = 2.0 * state.dt * state.max_speed();
   for (int c : surface.cells()) {
     ++report.candidates;
     for (int p = mesh.offsets()[c]; p < mesh.offsets()[c + 1]; ++p) {
+      const Point& x = state.position[p];
+      if (gap(x) > reach + 1e-12 * (1.0 + x.lpNorm<Eigen::Infinity>() +
+                                    plane_.point.lpNorm<Eigen::Infinity>()))
+        continue;
       const int i = state.node[p];
       if (seen_[i] == evaluation_) continue;
       seen_[i] = evaluation_;

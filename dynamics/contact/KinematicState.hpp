@@ -20,6 +20,9 @@
 // that what it leaves is exact for it; what a later law moves is resolved at the next step).
 // Per contact the impulses are equal and opposite (or taken by an obstacle), so momentum is
 // conserved to round-off.
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 
 #include "core/geometry/Rectangle.hpp"
@@ -43,6 +46,18 @@ struct KinematicState {
   double dt = 0.0;
 
   Point predicted(int pair) const { return position[pair] + dt * velocity[node[pair]]; }
+  /// The largest predicted speed |v'| over the nodes: no predicted position is farther than
+  /// dt times it from the current one, which lets a law pass over the far pairs unread.
+  /// Infinite if a velocity is not finite, so that nothing is passed over and the law meets it.
+  double max_speed() const {
+    double squared = 0.0;
+    for (const Point& v : velocity) {
+      const double s = v.squaredNorm();
+      if (!std::isfinite(s)) return std::numeric_limits<double>::infinity();
+      squared = std::max(squared, s);
+    }
+    return std::sqrt(squared);
+  }
   /// Applies the impulse j (normal part jn, friction part jt, j = jn + jt) to node i.
   void apply(int i, const Point& jn, const Point& jt) {
     const double w = inverse_mass[i];

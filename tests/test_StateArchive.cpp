@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "core/io/AtomicFile.hpp"
 #include "core/io/Checkpoint.hpp"
@@ -120,6 +121,20 @@ TEST(StateArchive, PaddedStructsRoundTripMemberByMember) {
   EXPECT_EQ(back[1].a, -3);
   EXPECT_TRUE(std::isnan(back[1].b));
   EXPECT_FALSE(back[1].c);
+}
+
+TEST(StateArchive, ATextBeingWrittenGoesOnWhereItStopped) {
+  std::ostringstream rows;
+  rows << "t,f\n0,1\n";
+  StateArchive out;
+  out.text("rows", rows);
+  std::ostringstream back;
+  back << "stale";
+  StateArchive in(out.bytes());
+  in.text("rows", back);
+  in.finish();
+  back << "1,2\n";
+  EXPECT_EQ(back.str(), "t,f\n0,1\n1,2\n");
 }
 
 TEST(StateArchive, RefusesAnotherLayoutNamingTheEntry) {

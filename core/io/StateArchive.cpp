@@ -51,8 +51,7 @@ std::size_t StateArchive::entry(std::string_view name, std::size_t bytes, std::s
   return stored;
 }
 
-void StateArchive::raw(std::string_view name, void* data, std::size_t bytes, std::size_t unit,
-                       bool) {
+void StateArchive::raw(std::string_view name, void* data, std::size_t bytes, std::size_t unit) {
   const std::size_t n = entry(name, bytes, unit);
   if (n != bytes)
     throw CheckpointError("state entry '" + std::string(name) + "': expected " +
@@ -81,6 +80,14 @@ void StateArchive::text(std::string_view name, std::string& s) {
   const std::size_t n = entry(name, s.size(), 1);
   if (loading_) s.resize(n);
   copy(s.data(), n);
+}
+
+void StateArchive::text(std::string_view name, std::ostringstream& s) {
+  std::string contents = s.str();
+  text(name, contents);
+  if (!loading_) return;
+  s.str(contents);
+  s.seekp(0, std::ios::end);
 }
 
 }  // namespace vorodg

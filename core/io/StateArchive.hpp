@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -43,7 +44,7 @@ class StateArchive {
   /// A trivially copyable value (numbers, flags, plain structs, fixed-size Eigen types).
   template <PlainBytes T>
   void value(std::string_view name, T& x) {
-    raw(name, &x, sizeof(T), sizeof(T), false);
+    raw(name, &x, sizeof(T), sizeof(T));
   }
   /// A vector of plain values (resized on load).
   template <PlainBytes T>
@@ -54,6 +55,9 @@ class StateArchive {
   }
   void vector(std::string_view name, Eigen::VectorXd& x);
   void text(std::string_view name, std::string& s);
+  /// A text being written (rows of a CSV kept in memory): its contents; a load refills it and
+  /// puts the write position at its end, so that writing goes on where it stopped.
+  void text(std::string_view name, std::ostringstream& s);
   /// A hash map, saved in key order so that one state always gives one payload. Loading
   /// refills it in that order.
   template <class K, class V>
@@ -92,7 +96,7 @@ class StateArchive {
   [[noreturn]] static void throw_mismatch(std::string_view name, const std::string& expected);
   /// Writes or checks the entry's header; returns its byte count (`unit` divides it on load).
   std::size_t entry(std::string_view name, std::size_t bytes, std::size_t unit);
-  void raw(std::string_view name, void* data, std::size_t bytes, std::size_t unit, bool);
+  void raw(std::string_view name, void* data, std::size_t bytes, std::size_t unit);
   void copy(void* data, std::size_t bytes);
 
   std::string bytes_;

@@ -110,9 +110,7 @@ void BendCurve::write(const fs::path& out, const std::string& run) const {
 }
 
 void BendCurve::archive(StateArchive& a) {
-  std::string rows = rows_.str();
-  a.text("bend_curve.rows", rows);
-  if (a.loading()) rows_.str(rows), rows_.seekp(0, std::ios::end);
+  a.text("bend_curve.rows", rows_);
   a.value("bend_curve.last_row", last_row_);
 }
 

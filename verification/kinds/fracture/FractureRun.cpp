@@ -127,9 +127,7 @@ class PathRecorder {
   /// Saves or loads the curve, the series, the last point's states and the record's running
   /// figures (a checkpoint).
   void archive(StateArchive& a) {
-    std::string rows = curve_.str();
-    a.text("recorder.curve", rows);
-    if (a.loading()) curve_.str(rows), curve_.seekp(0, std::ios::end);
+    a.text("recorder.curve", curve_);
     series_.archive(a);
     a.vector("recorder.last_points", last_points_);
     for (double* x : {&r_.peak_load, &r_.displacement_at_peak, &r_.dissipated_energy,

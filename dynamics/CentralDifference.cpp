@@ -96,15 +96,12 @@ void CentralDifference::constrain_contact(const Eigen::VectorXd& w, double beta,
   held_.resize(nodes);
   for (int node = 0; node < nodes; ++node) {
     const double m = mass_node_[node];
-    bool held = false;
-    for (int d = 0; d < 2; ++d) {
-      const int i = 2 * node + d;
-      held = held || prescribed_[i] >= 0;
+    held_[node] = prescribed_[2 * node] >= 0 || prescribed_[2 * node + 1] >= 0;
+    for (int i = 2 * node; i < 2 * node + 2; ++i) {
       double applied = f_ext[i] + f_contact[i] - f_int_[i];
       if (bulk_) applied += f_bulk[i];
-      predicted_[node][d] = w[i] + beta * dt_ * (applied - c * m * w[i]) / (m * inertia);
+      predicted_[node][i - 2 * node] = w[i] + beta * dt_ * (applied - c * m * w[i]) / (m * inertia);
     }
-    held_[node] = held;
   }
   contact_->constrain({predicted_, held_}, beta, inertia, f_contact);
 }

@@ -209,6 +209,8 @@ TEST(GaussianRandomField, OneSeedIsOneFieldAndAPolygonGetsItsMean) {
               count, sum / count);
   EXPECT_NEAR(a.mean_over(wide), sum / count, 2e-3);
   EXPECT_THROW(a.mean_over(std::vector<Point>{Point(0, 0), Point(1, 1)}), InputError);
+  EXPECT_THROW(a.mean_over(std::vector<Point>{Point(0, 0), Point(0.5, 0.5), Point(1, 1)}),
+               InputError);
 }
 
 }  // namespace

@@ -71,6 +71,7 @@ double GaussianRandomField::mean_over(std::span<const Point> polygon) const {
       area += piece;
     }
   }
+  if (!(std::abs(area) > 0.0)) throw InputError("random field: a polygon of zero area has no mean");
   return integral / area;
 }
 

@@ -33,7 +33,7 @@ class GaussianRandomField {
   /// The field's mean over a polygon (counter-clockwise vertices): the triangles of a fan from
   /// its vertex mean, split by their edges' midpoints until no piece is wider than two grid
   /// spacings, each piece with the three-point edge-midpoint rule. Throws InputError for fewer
-  /// than three vertices.
+  /// than three vertices or a zero area.
   double mean_over(std::span<const Point> polygon) const;
 
   double spacing() const { return spacing_; }

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/util/Errors.hpp"
+#include "verification/report/CheckedSample.hpp"
 
 namespace vorodg {
-namespace {
 
-double q_ks(double x) {
+double kolmogorov_survival(double x) {
   if (x < 1e-3) return 1.0;
   double sum = 0.0, sign = 1.0;
   for (int k = 1; k <= 200; ++k) {
@@ -20,16 +19,9 @@ double q_ks(double x) {
   return std::clamp(2.0 * sum, 0.0, 1.0);
 }
 
-}  // namespace
-
 KsResult ks_two_sample(std::vector<double> a, std::vector<double> b) {
-  if (a.empty() || b.empty()) throw InputError("Kolmogorov-Smirnov: a sample is empty");
-  for (const auto* s : {&a, &b})
-    for (double v : *s)
-      if (!std::isfinite(v))
-        throw InputError("Kolmogorov-Smirnov: a sample holds a non-finite value");
-  std::sort(a.begin(), a.end());
-  std::sort(b.begin(), b.end());
+  a = sorted_sample("Kolmogorov-Smirnov", std::move(a));
+  b = sorted_sample("Kolmogorov-Smirnov", std::move(b));
   const double n = static_cast<double>(a.size()), m = static_cast<double>(b.size());
   std::size_t i = 0, j = 0;
   KsResult r;
@@ -40,7 +32,7 @@ KsResult ks_two_sample(std::vector<double> a, std::vector<double> b) {
     r.distance = std::max(r.distance, std::abs(i / n - j / m));
   }
   const double ne = std::sqrt(n * m / (n + m));
-  r.p_value = q_ks((ne + 0.12 + 0.11 / ne) * r.distance);
+  r.p_value = kolmogorov_survival((ne + 0.12 + 0.11 / ne) * r.distance);
   return r;
 }
 

@@ -12,6 +12,9 @@ struct KsResult {
   double p_value = 1.0;   // the chance of a D this large if both samples came from one law
 };
 
+/// Q_KS(x) = Pr(sqrt(n_e) D > x) in the limit of large samples, the p-value's series.
+double kolmogorov_survival(double x);
+
 /// Throws InputError if either sample is empty or holds a non-finite value.
 KsResult ks_two_sample(std::vector<double> a, std::vector<double> b);
 

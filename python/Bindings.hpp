@@ -30,6 +30,9 @@ void bind_solve(py::module_& m);
 void bind_study(py::module_& m);
 /// fracture_path, fragmentation_run, fragments, hamming.
 void bind_fracture(py::module_& m);
+/// vorodg.statistics: the estimators of statistical convergence (empirical CDFs, distances,
+/// intervals, the sample-size planner).
+void bind_statistics(py::module_& m);
 
 /// A JSON value as Python objects (dict, list, float, int, str, bool, None), through Python's
 /// json module: numbers round-trip exactly (the JSON writer prints 17 significant digits).

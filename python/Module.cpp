@@ -41,4 +41,5 @@ PYBIND11_MODULE(vorodg, m) {
   bind_solve(m);
   bind_study(m);
   bind_fracture(m);
+  bind_statistics(m);
 }

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "core/util/Errors.hpp"
@@ -51,6 +52,18 @@ TEST(Distributions, QuantilesMatchScipy) {
   EXPECT_THROW(normal_quantile(1.0), InputError);
   EXPECT_THROW(student_t_quantile(0.5, 0.0), InputError);
   EXPECT_THROW(student_t_critical(0.95, 1), InputError);
+}
+
+TEST(Distributions, StudentTMatchesThePrintedTable) {
+  // Two-sided 95% values of Student's t (any statistics table; scipy.stats.t.ppf(0.975, dof)).
+  const std::pair<int, double> table[] = {
+      {1, 12.706204736432095},  {2, 4.302652729911275},    {5, 2.5705818366147395},
+      {10, 2.2281388519649385}, {30, 2.0422724563012373},  {31, 2.0395134463964077},
+      {60, 2.0002978210582616}, {120, 1.9799304050527766}, {1000, 1.9623390808264074}};
+  for (const auto& [dof, t] : table)
+    EXPECT_NEAR(student_t_quantile(0.975, static_cast<double>(dof)), t, 1e-9 * t) << dof;
+  EXPECT_THROW(student_t_quantile(0.975, 0), InputError);
+  EXPECT_THROW(student_t_quantile(1.0, 3), InputError);
 }
 
 TEST(EmpiricalCdf, StepsAndQuantilesByHand) {

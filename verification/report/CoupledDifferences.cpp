@@ -61,6 +61,8 @@ CoupledDifferences coupled_differences(const std::vector<double>& coarse,
   r.mean_absolute = non_negative(mean_interval(absolute, confidence));
   r.mean_square = non_negative(mean_interval(square, confidence));
   r.exceedance = wilson_interval(exceeding, coarse.size(), confidence);
+  r.difference_std_dev = *sample_statistics(difference).std_dev;
+  r.absolute_std_dev = *sample_statistics(absolute).std_dev;
   return r;
 }
 

@@ -20,6 +20,7 @@ struct CoupledDifferences {
   Interval mean_square;      // E|q_h - q_{h/2}|^2    (r = 2)
   Interval exceedance;       // Pr(|q_h - q_{h/2}| > epsilon)
   double epsilon = 0.0;
+  double difference_std_dev = 0.0, absolute_std_dev = 0.0;  // of D and |D|: for the planner
 };
 
 /// coarse[i] and fine[i] from realization i; at least two pairs, every value finite, epsilon >= 0.

@@ -1,16 +1,11 @@
 #include "verification/report/RateFit.hpp"
 
-#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <stdexcept>
 
-namespace vorodg {
+#include "verification/report/Distributions.hpp"
 
-double student_t_quantile(double probability, int dof) {
-  if (dof < 1 || !(probability > 0 && probability < 1))
-    throw std::invalid_argument("student_t_quantile: expected dof >= 1 and 0 < p < 1");
-  return boost::math::quantile(boost::math::students_t_distribution<double>(dof), probability);
-}
+namespace vorodg {
 
 double pair_rate(double h0, double e0, double h1, double e1) {
   return std::log(e0 / e1) / std::log(h0 / h1);
@@ -39,7 +34,7 @@ RateFit fit_rate(const std::vector<double>& h, const std::vector<double>& e) {
       ss += residual * residual;
     }
     const double se = std::sqrt(ss / (n - 2) / sxx);  // standard error of the slope
-    const double half_width = student_t_quantile(0.975, static_cast<int>(n) - 2) * se;
+    const double half_width = student_t_quantile(0.975, static_cast<double>(n - 2)) * se;
     if (std::isfinite(half_width)) fit.ci95 = half_width;
   }
   return fit;

@@ -18,10 +18,6 @@ struct RateFit {
 /// std::invalid_argument for fewer than two points or sizes that differ.
 RateFit fit_rate(const std::vector<double>& h, const std::vector<double>& e);
 
-/// The quantile of Student's t distribution with `dof` >= 1 degrees of freedom at
-/// `probability` in (0, 1): the two-sided 95% value is student_t_quantile(0.975, dof).
-double student_t_quantile(double probability, int dof);
-
 /// The rate between two consecutive levels: log(e0 / e1) / log(h0 / h1).
 double pair_rate(double h0, double e0, double h1, double e1);
 

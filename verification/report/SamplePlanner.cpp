@@ -42,12 +42,15 @@ std::size_t smallest(std::size_t first, Resolved resolved) {
 
 }  // namespace
 
+double ks_critical_distance(double effective_size, double confidence) {
+  const double root = std::sqrt(effective_size);
+  return kolmogorov_critical(1.0 - confidence) / (root + 0.12 + 0.11 / root);
+}
+
 std::size_t realizations_for_ks(double delta, double confidence) {
   check_resolution("Kolmogorov-Smirnov sample size", delta, 1.0);
-  const double lambda = kolmogorov_critical(1.0 - confidence);
-  return smallest(1, [&](std::size_t n) {
-    const double root = std::sqrt(0.5 * static_cast<double>(n));  // n_e = n n / (n + n)
-    return lambda / (root + 0.12 + 0.11 / root) <= delta;
+  return smallest(1, [&](std::size_t n) {  // n_e = n n / (n + n)
+    return ks_critical_distance(0.5 * static_cast<double>(n), confidence) <= delta;
   });
 }
 

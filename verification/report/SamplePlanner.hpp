@@ -8,6 +8,10 @@
 
 namespace vorodg {
 
+/// The two-sample KS distance the test declares at `confidence` for the effective size
+/// n_e = n m / (n + m): lambda / (sqrt(n_e) + 0.12 + 0.11 / sqrt(n_e)), Q_KS(lambda) = 1 - c.
+double ks_critical_distance(double effective_size, double confidence = 0.95);
+
 /// Per level (two levels of equal size): the two-sample Kolmogorov-Smirnov test's critical
 /// distance (asymptotic, Stephens' correction) at most delta, 0 < delta < 1.
 std::size_t realizations_for_ks(double delta, double confidence = 0.95);

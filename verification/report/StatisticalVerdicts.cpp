@@ -1,0 +1,116 @@
+// The verdicts of a statistical-convergence analysis (docs/statistics.md, "The verdicts"). Each
+// reads the finest pair of levels first: what it cannot resolve is "undecided" with the sample
+// size that would decide it; what it resolves as different is "converging" if the difference
+// fell from the pair before with an observed order, else "does not converge".
+#include <cmath>
+#include <string>
+
+#include "core/util/Format.hpp"
+#include "verification/report/RateFit.hpp"
+#include "verification/report/SamplePlanner.hpp"
+#include "verification/report/StatisticalConvergence.hpp"
+
+namespace vorodg {
+namespace {
+
+std::string range(const Interval& i) {
+  return "[" + fmt(i.low, 3) + ", " + fmt(i.high, 3) + "]";
+}
+
+/// The order at which a difference d fell from step k - 1 to step k (h of their coarse levels).
+double fell_at(const QuantityConvergence& q, std::size_t k, double d_before, double d_now) {
+  return pair_rate(q.levels[k - 1].h_avg, std::abs(d_before), q.levels[k].h_avg, std::abs(d_now));
+}
+
+/// A falling difference between the last two steps: both intervals given, the later one wholly
+/// below the earlier. `value(step)` picks the interval.
+template <class Pick>
+std::optional<double> falling(const QuantityConvergence& q, Pick value) {
+  const std::size_t k = q.steps.size() - 1;
+  if (k == 0) return std::nullopt;
+  const std::optional<Interval> before = value(q.steps[k - 1]), now = value(q.steps[k]);
+  if (!before || !now || !(now->high < before->low)) return std::nullopt;
+  return fell_at(q, k, before->estimate, now->estimate);
+}
+
+NotionVerdict in_distribution(const QuantityConvergence& q, const StatisticalOptions& o) {
+  const LevelStep& s = q.steps.back();
+  const std::string ks = "KS D = " + fmt(s.ks.distance, 3) + " (p = " + fmt(s.ks.p_value, 2) +
+                         ", detectable " + fmt(s.ks_critical, 2) + ")";
+  if (s.ks.p_value < 1.0 - o.confidence) {
+    const auto order = falling(q, [](const LevelStep& t) { return std::optional(t.wasserstein); });
+    if (order)
+      return {Verdict::converging, "the finest levels' laws still differ (" + ks +
+                                       "), but W1 fell to " + fmt(s.wasserstein.estimate, 3) +
+                                       " at observed order " + fmt(*order, 2)};
+    return {Verdict::does_not_converge,
+            "the finest levels' laws differ (" + ks + ", W1 " + range(s.wasserstein) + ")"};
+  }
+  if (s.ks_critical <= o.ks_resolution)
+    return {Verdict::converges, "the finest levels' laws agree to the resolution asked (" + ks +
+                                    " <= " + fmt(o.ks_resolution, 2) + ")"};
+  return {Verdict::undecided,
+          "no difference seen, but only a distance above " + fmt(s.ks_critical, 2) + " could be (" +
+              ks + "); " + fmt(o.ks_resolution, 2) + " asks",
+          realizations_for_ks(o.ks_resolution, o.confidence)};
+}
+
+NotionVerdict of_mean(const QuantityConvergence& q, const StatisticalOptions& o) {
+  const Interval& c = q.steps.back().mean_change;
+  const std::string change = "the mean changes by " + fmt(c.estimate, 3) + " " + range(c) +
+                             " between the finest levels (tolerance " + fmt(q.epsilon, 3) + ")";
+  if (c.low >= -q.epsilon && c.high <= q.epsilon) return {Verdict::converges, change};
+  if (c.contains(0.0))
+    return {Verdict::undecided, change,
+            realizations_for_mean(q.steps.back().change_std_dev, q.epsilon, o.confidence)};
+  const auto order = falling(q, [](const LevelStep& t) {
+    Interval a = t.mean_change;  // its size: the interval of |change| when it excludes 0
+    if (a.low < 0.0 && a.high > 0.0) return std::optional<Interval>();
+    if (a.high < 0.0) a = {-a.estimate, -a.high, -a.low};
+    return std::optional(a);
+  });
+  if (order)
+    return {Verdict::converging,
+            change + ", after a larger change, at observed order " + fmt(*order, 2)};
+  std::string trend = q.trend ? "; the mean goes as h^" + fmt(*q.trend, 2) : "";
+  return {Verdict::does_not_converge, change + trend};
+}
+
+NotionVerdict coupled_notion(const QuantityConvergence& q, const StatisticalOptions& o,
+                             bool probability) {
+  if (!o.coupled)
+    return {Verdict::not_applicable,
+            "the levels do not share their random field: no pairs to difference"};
+  const LevelStep& s = q.steps.back();
+  if (!s.coupled)
+    return {Verdict::not_applicable, "fewer than two realizations ran at both finest levels"};
+  const Interval v = probability ? s.coupled->exceedance : s.coupled->mean_absolute;
+  const double bound = probability ? o.probability : q.epsilon;
+  const std::string what =
+      (probability ? "Pr(|D| > " + fmt(q.epsilon, 3) + ") = " : std::string("E|D| = ")) +
+      fmt(v.estimate, 3) + " " + range(v) + " against " + fmt(bound, 3);
+  if (v.high <= bound) return {Verdict::converges, what};
+  if (v.low > bound) {
+    const auto order = falling(q, [&](const LevelStep& t) {
+      if (!t.coupled) return std::optional<Interval>();
+      return std::optional(probability ? t.coupled->exceedance : t.coupled->mean_absolute);
+    });
+    if (order) return {Verdict::converging, what + ", falling at observed order " + fmt(*order, 2)};
+    return {Verdict::does_not_converge, what};
+  }
+  return {Verdict::undecided, what,
+          probability
+              ? realizations_for_probability(v.estimate, bound / 2.0, o.confidence)
+              : realizations_for_mean(s.coupled->absolute_std_dev, bound / 2.0, o.confidence)};
+}
+
+}  // namespace
+
+void judge_convergence(QuantityConvergence& q, const StatisticalOptions& o) {
+  q.in_distribution = in_distribution(q, o);
+  q.of_mean = of_mean(q, o);
+  q.in_mean = coupled_notion(q, o, false);
+  q.in_probability = coupled_notion(q, o, true);
+}
+
+}  // namespace vorodg

@@ -14,6 +14,7 @@
 #include "core/element/ElementTable.hpp"
 #include "core/geometry/Rectangle.hpp"
 #include "core/material/IsotropicElasticity.hpp"
+#include "core/random/MaterialField.hpp"
 #include "dynamics/BulkViscosity.hpp"
 #include "dynamics/contact/ContactLaws.hpp"
 #include "dynamics/contact/PenaltyContact.hpp"
@@ -55,6 +56,7 @@ struct ExplicitParameters {
   bool dg_interfaces = false;              // every interior edge split and coupled from t = 0
   double variation = 0.0;                  // per-cell factors on E and strength in [1 - x, 1 + x]
   std::uint64_t variation_seed = 1;        // their stream (MaterialVariation), with the run's seed
+  MaterialField field;                     // or factors from a random field in space
   double damping = 0.0;                    // mass-proportional, 1/s
   BulkViscosityParameters bulk_viscosity;  // b1, b2 on the cells (off by default)
   Eigen::Vector2d gravity = Eigen::Vector2d::Zero();  // body force per unit mass, m/s^2

@@ -72,7 +72,8 @@ void add_boundaries(const ExplicitParameters& p, const ExplicitLoading& loading,
 }  // namespace
 
 ExplicitSimulation::ExplicitSimulation(const ExplicitParameters& s, BodiesMesh bodies_mesh,
-                                       const ExplicitLoading& problem, std::uint64_t seed)
+                                       const ExplicitLoading& problem, std::uint64_t seed,
+                                       int realization)
     : parameters(s),
       loading(problem),
       bodies(std::move(bodies_mesh)),
@@ -80,9 +81,11 @@ ExplicitSimulation::ExplicitSimulation(const ExplicitParameters& s, BodiesMesh b
       mass(table, s.density),
       integrator(table, IsotropicElasticity(s.E, s.nu, s.plane), s.mean_dilation),
       strain(integrator.all_mean_strain_operators(1)),
-      // A material varying from cell to cell (each mesh realization its own field).
-      variation(MaterialVariation::uniform(bodies.mesh.num_cells(), s.variation,
-                                           derive_seed(s.variation_seed, seed))) {
+      // A material varying from cell to cell: drawn per cell with each mesh realization, or a
+      // random field in space that realization `realization` shares across the mesh levels.
+      variation(s.field.enabled ? MaterialVariation::from_field(bodies.mesh, s.field, realization)
+                                : MaterialVariation::uniform(bodies.mesh.num_cells(), s.variation,
+                                                             derive_seed(s.variation_seed, seed))) {
   const CrackSites sites = crack_sites(s, loading, mesh());
   const SplitDofMap dofs = initial_dofs(s, mesh(), sites);
   InternalForce force = make_force(dofs, sites);

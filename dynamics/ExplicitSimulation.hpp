@@ -36,10 +36,12 @@ constexpr double kEnergyBlowUp = 1e6;
 class ExplicitSimulation {
  public:
   /// Builds everything on `bodies` (whose mesh it keeps) from `parameters` and `loading` (both
-  /// must outlive it); `seed` is the realization's (the material variation's stream derives from
-  /// it). Throws InputError for what the mesh cannot carry (a K0 too small for the law).
+  /// must outlive it); `seed` is the mesh realization's (the per-cell variation's stream derives
+  /// from it), `realization` its index, the same on every mesh level (a random material field's
+  /// stream derives from it). Throws InputError for what the mesh cannot carry (a K0 too small
+  /// for the law).
   ExplicitSimulation(const ExplicitParameters& parameters, BodiesMesh bodies,
-                     const ExplicitLoading& loading, std::uint64_t seed);
+                     const ExplicitLoading& loading, std::uint64_t seed, int realization);
   ExplicitSimulation(const ExplicitSimulation&) = delete;
   ExplicitSimulation& operator=(const ExplicitSimulation&) = delete;
 

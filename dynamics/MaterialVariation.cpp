@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/random/CirculantEmbedding.hpp"
+#include "core/random/GaussianRandomField.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Random.hpp"
 
@@ -18,6 +20,25 @@ MaterialVariation MaterialVariation::uniform(int cells, double amount, std::uint
     v.stiffness[c] = random.uniform(1.0 - amount, 1.0 + amount);
     v.strength[c] = random.uniform(1.0 - amount, 1.0 + amount);
   }
+  return v;
+}
+
+MaterialVariation MaterialVariation::from_field(const PolygonMesh& mesh, const MaterialField& field,
+                                                int realization) {
+  MaterialVariation v;
+  if (!field.enabled) return v;
+  field.marginal.check();
+  const CirculantEmbedding embedding(mesh.domain(), field.covariance, field.spacing);
+  const auto cell_means = [&](int which) {
+    const GaussianRandomField g(embedding, field.field_seed(realization, which));
+    std::vector<double> factor(mesh.num_cells());
+    for (int c = 0; c < mesh.num_cells(); ++c)
+      factor[c] = g.mean_over(mesh.cell_points(c), [&](double x) { return field.marginal(x); });
+    return factor;
+  };
+  const bool strength_only = field.marginal.kind == MarginalKind::weibull;
+  v.stiffness = strength_only ? std::vector<double>(mesh.num_cells(), 1.0) : cell_means(0);
+  v.strength = cell_means(1);
   return v;
 }
 

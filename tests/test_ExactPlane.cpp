@@ -73,7 +73,7 @@ struct BarImpact {
 BarImpact run_bar(double safety, double h) {
   const ExplicitParameters p = thrown_bar(safety);
   const ExplicitLoading none;
-  ExplicitSimulation sim(p, quad_mesh(kBar, h), none, 1);
+  ExplicitSimulation sim(p, quad_mesh(kBar, h), none, 1, 0);
   const double mass = kRho * kBar.width() * kBar.height();
   const double c = p.bar_speed(), area = kBar.height();
   std::vector<double> force;  // the plane's normal force at each step

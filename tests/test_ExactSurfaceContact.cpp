@@ -86,7 +86,7 @@ Collision collide(double safety, MeshFamily family) {
   p.estimate = StepEstimate::cells;
   p.end = 4.0 * kFirst.width() / p.bar_speed();
   const ExplicitLoading none;
-  ExplicitSimulation sim(p, two_bars(family), none, 1);
+  ExplicitSimulation sim(p, two_bars(family), none, 1, 0);
   const double mass = kRho * kFirst.width() * kFirst.height();
   const StepRecord start = sim.run->record();
   Collision out;
@@ -167,7 +167,7 @@ TEST(ExactSurfaceContact, AVertexAlreadyInsideIsStoppedNotPushedOut) {
   p.estimate = StepEstimate::cells;
   p.steps = 400;
   const ExplicitLoading none;
-  ExplicitSimulation sim(p, two_bars(MeshFamily::rcp, second), none, 1);
+  ExplicitSimulation sim(p, two_bars(MeshFamily::rcp, second), none, 1, 0);
   const StepRecord start = sim.run->record();
   double late = 0.0, highest = 0.0;
   for (long s = 0; s < sim.steps; ++s) {
@@ -207,7 +207,7 @@ TEST(ExactSurfaceContact, AVertexCrossingABondedEdgeIsNotFlungOut) {
   p.estimate = StepEstimate::cells;
   p.end = 2.0;  // the corner crosses x = 2 at t = 1 s
   const ExplicitLoading none;
-  ExplicitSimulation sim(p, join(MeshFamily::quad, {body, block}, {1.0, 0.2}), none, 1);
+  ExplicitSimulation sim(p, join(MeshFamily::quad, {body, block}, {1.0, 0.2}), none, 1, 0);
   const StepRecord start = sim.run->record();
   double highest = 0.0;
   for (long s = 0; s < sim.steps; ++s) {

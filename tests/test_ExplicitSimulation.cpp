@@ -47,7 +47,7 @@ BodiesMesh block_mesh() {
 TEST(ExplicitSimulation, ALibraryUserBouncesABlockOffAWallWithoutAScene) {
   const ExplicitParameters p = thrown_block();
   const ExplicitLoading none;
-  ExplicitSimulation sim(p, block_mesh(), none, /*seed=*/1);
+  ExplicitSimulation sim(p, block_mesh(), none, /*seed=*/1, /*realization=*/0);
   const StepRecord start = sim.run->record();
   ASSERT_GT(sim.steps, 10);
   for (long s = 0; s < sim.steps; ++s) sim.step();
@@ -74,9 +74,9 @@ TEST(ExplicitSimulation, SaysWhenItsEnergyBlowsUp) {
   const ExplicitLoading none;
   ExplicitParameters p = thrown_block();
   p.contact = true;  // a wall and surfaces: the growth shows either way
-  ExplicitSimulation stable(p, block_mesh(), none, 1);
+  ExplicitSimulation stable(p, block_mesh(), none, 1, 0);
   p.safety = 1.5;
-  ExplicitSimulation blowing(p, block_mesh(), none, 1);
+  ExplicitSimulation blowing(p, block_mesh(), none, 1, 0);
   long step = 0;
   for (; step < 2000 && !blowing.unstable(); ++step) blowing.step();
   ASSERT_TRUE(blowing.unstable()) << "no blow-up in 2000 steps at 1.5 x the critical step";
@@ -90,7 +90,7 @@ TEST(ExplicitSimulation, RefusesAWallLawThatIsNotRegistered) {
   ExplicitParameters p = thrown_block();
   p.wall->law = "no-such-law";
   const ExplicitLoading none;
-  EXPECT_THROW(ExplicitSimulation(p, block_mesh(), none, 1), InputError);
+  EXPECT_THROW(ExplicitSimulation(p, block_mesh(), none, 1, 0), InputError);
 }
 
 }  // namespace

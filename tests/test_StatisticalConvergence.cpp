@@ -12,6 +12,8 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
+#include "verification/harness/RecordFields.hpp"
+#include "verification/harness/StatisticalReport.hpp"
 #include "verification/report/SamplePlanner.hpp"
 #include "verification/report/StatisticalConvergence.hpp"
 #include "verification/report/StatisticalConvergenceReport.hpp"
@@ -137,7 +139,8 @@ TEST(StatisticalConvergenceReport, WritesEveryQuantityAndNumbersThatReadBack) {
           levels(30, [](double h, double x, double, std::size_t) { return 1.0 / (h * h) + x; }),
           o)};
   const std::string md = statistical_convergence_md(qs, o);
-  for (const char* part : {"## peak", "## count", "In distribution", "In probability", "E|D|^2"})
+  for (const char* part :
+       {"## peak", "## count", "In distribution", "In probability", "E\\|D\\|^2 [interval]"})
     EXPECT_NE(md.find(part), std::string::npos) << part;
   const std::string csv = statistical_convergence_csv(qs);
   std::istringstream lines(csv);
@@ -148,6 +151,43 @@ TEST(StatisticalConvergenceReport, WritesEveryQuantityAndNumbersThatReadBack) {
   int rows = 0;
   while (std::getline(lines, row)) ++rows;
   EXPECT_EQ(rows, 6);  // three pairs of levels per quantity
+}
+
+TEST(StatisticalReport, GroupsCompleteRecordsByMeshBlockAndLevel) {
+  // Block "a": level 0 (h 0.2, 0.22) and level 1 (h 0.1, 0.12, one run incomplete, one NaN);
+  // block "b": one level only (nothing to compare); "c": a level of one run (dropped).
+  std::vector<nlohmann::json> records;
+  const auto add = [&](const char* mesh, int level, int realization, double h, double q,
+                       bool complete = true) {
+    nlohmann::json r = {{"mesh", mesh},
+                        {"level", level},
+                        {"realization", realization},
+                        {"h_avg", h},
+                        {"complete", complete}};
+    r["q"] = number_json(q);
+    records.push_back(r);
+  };
+  add("a", 0, 0, 0.2, 10.0);
+  add("a", 0, 1, 0.22, 12.0);
+  add("a", 1, 0, 0.1, 11.0);
+  add("a", 1, 1, 0.12, 11.5);
+  add("a", 1, 2, 0.1, 50.0, false);                               // incomplete: left out
+  add("a", 1, 3, 0.1, std::numeric_limits<double>::quiet_NaN());  // not measured: left out
+  add("b", 0, 0, 0.2, 1.0);
+  add("b", 0, 1, 0.2, 2.0);
+  add("c", 0, 0, 0.2, 1.0);
+  add("c", 0, 1, 0.2, 2.0);
+  add("c", 1, 0, 0.1, 1.0);
+  StatisticalSettings settings;
+  settings.quantities = {"q"};
+  const std::vector<QuantityConvergence> q = statistical_convergence_of(records, settings);
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_EQ(q[0].name, "a: q");
+  ASSERT_EQ(q[0].levels.size(), 2u);
+  EXPECT_NEAR(q[0].levels[0].h_avg, 0.21, 1e-15);
+  EXPECT_NEAR(q[0].levels[1].h_avg, 0.11, 1e-15);
+  EXPECT_EQ(q[0].levels[1].value, (std::vector<double>{11.0, 11.5}));
+  EXPECT_NEAR(q[0].steps[0].mean_change.estimate, 11.0 - 11.25, 1e-14);
 }
 
 }  // namespace

@@ -35,7 +35,8 @@ double GaussianRandomField::value(const Point& x) const {
          tx * ((1.0 - ty) * node(i + 1, j) + ty * node(i + 1, j + 1));
 }
 
-double GaussianRandomField::mean_over(std::span<const Point> polygon) const {
+double GaussianRandomField::mean_over(std::span<const Point> polygon,
+                                      const std::function<double(double)>& of) const {
   if (polygon.size() < 3)
     throw InputError("random field: a polygon of " + std::to_string(polygon.size()) +
                      " vertices: expected at least 3");
@@ -64,10 +65,10 @@ double GaussianRandomField::mean_over(std::span<const Point> polygon) const {
       }
       pieces = std::move(finer);
     }
+    const auto at = [&](const Point& x) { return of ? of(value(x)) : value(x); };
     for (const auto& [p, q, r] : pieces) {
       const double piece = 0.5 * ((q - p).x() * (r - p).y() - (q - p).y() * (r - p).x());
-      integral +=
-          piece * (value(0.5 * (p + q)) + value(0.5 * (q + r)) + value(0.5 * (r + p))) / 3.0;
+      integral += piece * (at(0.5 * (p + q)) + at(0.5 * (q + r)) + at(0.5 * (r + p))) / 3.0;
       area += piece;
     }
   }

@@ -10,6 +10,7 @@
 // cell's centre it is (4 + 8 rho(s) + 4 rho(sqrt 2 s)) / 16 of the field's, 0.992 for the squared
 // exponential and 0.980 for Matern 3/2 at the default spacing s = l / 8.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -32,9 +33,11 @@ class GaussianRandomField {
   double value(const Point& x) const;
   /// The field's mean over a polygon (counter-clockwise vertices): the triangles of a fan from
   /// its vertex mean, split by their edges' midpoints until no piece is wider than two grid
-  /// spacings, each piece with the three-point edge-midpoint rule. Throws InputError for fewer
-  /// than three vertices or a zero area.
-  double mean_over(std::span<const Point> polygon) const;
+  /// spacings, each piece with the three-point edge-midpoint rule. With `of`, the mean of of(g)
+  /// instead (a material factor mapped from the field). Throws InputError for fewer than three
+  /// vertices or a zero area.
+  double mean_over(std::span<const Point> polygon,
+                   const std::function<double(double)>& of = {}) const;
 
   double spacing() const { return spacing_; }
   int nodes_x() const { return nx_; }

@@ -48,6 +48,16 @@ struct RecordField {
   bool holds(const Record& r) const { return !when || when(r); }
 };
 
+/// The names of the fields that are numbers in the JSON line (what a report can take statistics
+/// of).
+template <class Record>
+std::vector<std::string> number_field_names(const std::vector<RecordField<Record>>& fields) {
+  std::vector<std::string> names;
+  for (const RecordField<Record>& f : fields)
+    if (f.number && f.in_json) names.push_back(f.name);
+  return names;
+}
+
 /// A member of the record: doubles through number_json, anything else as nlohmann::json
 /// reads and writes it (integers, booleans, texts).
 template <class Record, class T>

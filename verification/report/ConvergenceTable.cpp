@@ -146,7 +146,11 @@ void ConvergenceTable::write_markdown(std::ostream& out) const {
   const auto table = formatted();
   for (std::size_t r = 0; r < table.size(); ++r) {
     out << "|";
-    for (const std::string& cell : table[r]) out << " " << cell << " |";
+    for (const std::string& cell : table[r]) {
+      out << " ";
+      for (char ch : cell) out << (ch == '|' ? "\\|" : std::string(1, ch));  // not a cell border
+      out << " |";
+    }
     out << "\n";
     if (r == 0) {
       out << "|";

@@ -1,5 +1,6 @@
 #include "verification/report/StatisticalConvergenceReport.hpp"
 
+#include <cctype>
 #include <sstream>
 
 #include "core/util/Format.hpp"
@@ -28,16 +29,17 @@ std::string interval_text(const Interval& i) {
   return fmt(i.estimate, 3) + " [" + fmt(i.low, 3) + ", " + fmt(i.high, 3) + "]";
 }
 
-/// An interval: its text in the Markdown table, its three numbers in the CSV.
+/// An interval: its text in the Markdown table ("name [interval]"), its three numbers in the
+/// CSV ("name", "name low", "name high").
 void add_interval(ConvergenceTable& t, const std::string& name, const Interval& i) {
-  t.add_text(name, interval_text(i), text_only());
+  t.add_text(name + " [interval]", interval_text(i), text_only());
   t.add_value(name, i.estimate, {}, csv_only());
   t.add_value(name + " low", i.low, {}, csv_only());
   t.add_value(name + " high", i.high, {}, csv_only());
 }
 
 void add_missing_interval(ConvergenceTable& t, const std::string& name) {
-  t.add_text(name, "-", text_only());
+  t.add_text(name + " [interval]", "-", text_only());
 }
 
 /// One row per pair of successive levels of q (into a table shared by every quantity).
@@ -90,7 +92,9 @@ std::string verdict_lines(const QuantityConvergence& q) {
                                 {"Of the mean", &q.of_mean},
                                 {"In mean (r = 1)", &q.in_mean},
                                 {"In probability", &q.in_probability}}) {
-    md += std::string("- **") + name + ": " + verdict_name(v->verdict) + ".** " + v->reason;
+    std::string reason = v->reason;
+    if (!reason.empty()) reason[0] = static_cast<char>(std::toupper(reason[0]));
+    md += std::string("- **") + name + ": " + verdict_name(v->verdict) + ".** " + reason;
     if (v->realizations > 0)
       md += "; about " + std::to_string(v->realizations) + " realizations per level would decide";
     md += ".\n";
@@ -115,7 +119,9 @@ std::string statistical_convergence_md(const std::vector<QuantityConvergence>& q
     std::ostringstream out;
     steps.write_markdown(out);
     md += out.str() + "\nScale " + fmt(q.scale, 3) + ", eps " + fmt(q.epsilon, 3) +
-          (q.trend ? "; the mean goes as h^" + fmt(*q.trend, 2) + " over the levels" : "") +
+          (q.trend ? "; over the " + std::to_string(q.levels.size()) +
+                         " levels the mean goes as h^" + fmt(*q.trend, 2)
+                   : "") +
           ".\n\n" + verdict_lines(q);
   }
   return md;

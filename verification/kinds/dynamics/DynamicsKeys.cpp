@@ -11,8 +11,10 @@
 #include "dynamics/problems/DynamicsProblem.hpp"
 #include "fracture/CohesiveKeys.hpp"
 #include "verification/harness/CommonKeys.hpp"
+#include "verification/harness/StatisticalReport.hpp"
 #include "verification/model/Choices.hpp"
 #include "verification/model/ElementKeys.hpp"
+#include "verification/model/MaterialFieldKeys.hpp"
 #include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
@@ -287,6 +289,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, problem_keys());
   append_keys(keys, elastic_keys("2e11", "0.3"));
   append_keys(keys, material_keys());
+  append_keys(keys, material_field_keys());
   append_keys(keys, bulk_viscosity_keys());
   append_keys(keys, element_keys());
   append_keys(keys, impact_keys());
@@ -295,6 +298,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, mesh_keys());
   append_keys(keys, output_keys());
   append_keys(keys, checkpoint_keys());
+  append_keys(keys, statistics_keys());
   return keys;
 }
 

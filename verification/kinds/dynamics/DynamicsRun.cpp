@@ -225,7 +225,7 @@ void check_dynamics_meshes(const DynamicsScene& scene, const std::vector<Ensembl
 }
 
 ExplicitSimulation dynamics_simulation(const DynamicsScene& scene, const EnsembleRunId& id) {
-  return ExplicitSimulation(scene, bodies_mesh(scene, id), *scene.problem, id.seed);
+  return ExplicitSimulation(scene, bodies_mesh(scene, id), *scene.problem, id.seed, id.realization);
 }
 
 DynamicsRecord run_dynamics(const DynamicsScene& scene, const EnsembleRunId& id,

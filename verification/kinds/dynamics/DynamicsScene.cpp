@@ -12,8 +12,10 @@
 #include "dynamics/contact/ContactLaws.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/kinds/dynamics/DynamicsKeys.hpp"
+#include "verification/kinds/dynamics/DynamicsMeasureFields.hpp"
 #include "verification/kinds/dynamics/DynamicsSceneReader.hpp"
 #include "verification/model/Choices.hpp"
+#include "verification/model/MaterialFieldKeys.hpp"
 #include "verification/solve/SettingsSchema.hpp"
 
 namespace vorodg {
@@ -74,6 +76,10 @@ void DynamicsSceneReader::read_material() {
   s_.mean_dilation = flag(m, "material.mean_dilation");
   s_.variation = number(m, "material.variation");
   s_.variation_seed = static_cast<std::uint64_t>(integer(m, "material.variation_seed"));
+  s_.field = read_material_field(*this, m);
+  if (s_.field.enabled && s_.variation > 0.0)
+    m.fail_value("field", "beside material.variation " + exact_text(s_.variation) +
+                              ": expected one way of varying the material");
   m.finish();
   read_element();
   s_.damping = number(top_, "damping");
@@ -86,9 +92,12 @@ void DynamicsSceneReader::read_material() {
   // criterion in a fragmentation study; only for linear cells of one material (the blocks use
   // the integrator's, unvaried, in the reference configuration).
   s_.dg_interfaces = word(top_, "interfaces", " insertion dg ") == "dg";
-  if (s_.dg_interfaces && s_.variation > 0.0)
-    top_.fail_value("interfaces", "'dg' beside material.variation " + exact_text(s_.variation) +
-                                      ": expected a uniform material");
+  if (s_.dg_interfaces && (s_.variation > 0.0 || s_.field.enabled))
+    top_.fail_value("interfaces",
+                    std::string("'dg' beside ") +
+                        (s_.field.enabled ? "material.field"
+                                          : "material.variation " + exact_text(s_.variation)) +
+                        ": expected a uniform material");
   // Fragments spin: a fragmentation study turns its cells' frames by default.
   s_.corotational = word(top_, "kinematics", " small corotational ",
                          s_.fragmentation ? "corotational" : "small") == "corotational";
@@ -214,6 +223,9 @@ void DynamicsSceneReader::read_time() {
   note("outputs.snapshots", listed.empty() ? "none" : "[" + listed + "]");
   o.finish();
   s_.checkpoint = read_checkpoint_policy(*this);
+  std::vector<std::string> measures;
+  for (const auto& [name, member] : dynamics_measure_fields()) measures.push_back(name);
+  s_.statistics = read_statistical_settings(*this, measures, s_.field.enabled);
 }
 
 void DynamicsSceneReader::read_refinement(SceneObject& t) {

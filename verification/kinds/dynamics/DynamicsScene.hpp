@@ -22,6 +22,7 @@
 #include "dynamics/problems/DynamicsProblem.hpp"
 #include "verification/harness/MeshBlock.hpp"
 #include "verification/harness/RunCheckpoints.hpp"
+#include "verification/harness/StatisticalReport.hpp"
 
 namespace vorodg {
 
@@ -36,6 +37,8 @@ struct DynamicsScene : ExplicitParameters {
   bool vtu = true;
   /// How often a run checkpoints. Not part of what a checkpoint must match: a rerun may change it.
   CheckpointPolicy checkpoint;
+  /// The quantities whose convergence over the mesh levels the report judges (`statistics`).
+  StatisticalSettings statistics;
   std::vector<double> snapshots;  // times of extra frames (ascending), s
   std::vector<SceneMesh> meshes;
   /// Every key and the value used, in the table's order (the echo and summary.json).

@@ -195,6 +195,13 @@ void write_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord
     write_file_atomically(out / "levels.csv", fragment_levels_csv(levels));
     md += fragment_levels_md(levels);
   }
+  if (!scene.statistics.quantities.empty()) {
+    std::vector<json> complete;
+    for (const DynamicsRecord& r : result.records)
+      if (r.complete) complete.push_back(record_json(fields, r));
+    if (!write_statistical_report(complete, scene.statistics, out).empty())
+      md += "\nThe statistical convergence over the levels: statistical-convergence.md.\n";
+  }
   write_file_atomically(out / "report.md", md);
 }
 

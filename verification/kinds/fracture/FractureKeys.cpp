@@ -8,6 +8,7 @@
 #include "fracture/CohesiveKeys.hpp"
 #include "fracture/FractureProblem.hpp"
 #include "verification/harness/CommonKeys.hpp"
+#include "verification/harness/StatisticalReport.hpp"
 #include "verification/model/ElementKeys.hpp"
 
 namespace vorodg {
@@ -88,6 +89,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, mesh_keys());
   append_keys(keys, study_keys());
   append_keys(keys, checkpoint_keys());
+  append_keys(keys, statistics_keys());
   return keys;
 }
 

@@ -51,5 +51,7 @@ FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run
 
 /// A record's line of results.jsonl.
 nlohmann::json fracture_record_json(const FractureRecord& record);
+/// The fields of a record that are numbers: the quantities `statistics.quantities` may name.
+std::vector<std::string> fracture_record_numbers();
 
 }  // namespace vorodg

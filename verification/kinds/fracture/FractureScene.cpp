@@ -10,6 +10,7 @@
 #include "fracture/SofteningLaws.hpp"
 #include "verification/harness/SceneVariants.hpp"
 #include "verification/kinds/fracture/FractureKeys.hpp"
+#include "verification/kinds/fracture/FractureRun.hpp"
 #include "verification/model/Choices.hpp"
 
 namespace vorodg {
@@ -44,6 +45,7 @@ class FractureSceneReader : public SceneKeyReader {
     s_.vtu_every = integer(outputs, "outputs.vtu_every");
     outputs.finish();
     s_.checkpoint = read_checkpoint_policy(*this);
+    s_.statistics = read_statistical_settings(*this, fracture_record_numbers(), false);
     top_.finish();
     s_.settings = settings();
     return s_;

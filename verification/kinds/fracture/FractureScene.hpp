@@ -17,6 +17,7 @@
 #include "fracture/MohrCoulomb.hpp"
 #include "verification/harness/MeshBlock.hpp"
 #include "verification/harness/RunCheckpoints.hpp"
+#include "verification/harness/StatisticalReport.hpp"
 
 namespace vorodg {
 
@@ -38,6 +39,8 @@ struct FractureScene {
   int vtu_every = 10;  // a .vtu of the deformed mesh every this many steps (0: none)
   /// How often a path checkpoints (not part of what a checkpoint must match).
   CheckpointPolicy checkpoint;
+  /// The quantities whose convergence over the mesh levels the report judges (`statistics`).
+  StatisticalSettings statistics;
   /// Every key and the value used, in the key table's order (the echo).
   std::vector<std::pair<std::string, std::string>> settings;
   std::vector<FractureScene> variants;

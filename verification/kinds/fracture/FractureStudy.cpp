@@ -213,6 +213,13 @@ void write_reports(const FractureScene& scene, const StudyRecords<FractureRecord
     if (!r.complete) md << "\n- " << r.run.id() << " is incomplete: " << r.failure << "\n";
     if (!r.ended.empty()) md << "\n- " << r.run.id() << " ended early: " << r.ended << "\n";
   }
+  if (!scene.statistics.quantities.empty()) {
+    std::vector<json> complete;
+    for (const FractureRecord& r : result.records)
+      if (r.complete) complete.push_back(record_json(fracture_fields(), r));
+    if (!write_statistical_report(complete, scene.statistics, out).empty())
+      md << "\nThe statistical convergence over the levels: statistical-convergence.md.\n";
+  }
   write_summary(out, summary);
   write_file_atomically(out / "report.md", md.str());
 }
@@ -247,6 +254,10 @@ int run_fracture_scene(const StudyCall& call) {
 
 nlohmann::json fracture_record_json(const FractureRecord& record) {
   return record_json(fracture_fields(), record);
+}
+
+std::vector<std::string> fracture_record_numbers() {
+  return number_field_names(fracture_fields());
 }
 
 StudyKind fracture_kind() {

@@ -260,6 +260,14 @@ TEST(SamplePlanner, SizesAreTheSmallestThatResolve) {
   EXPECT_GT(student_t_critical(0.95, m - 1) / std::sqrt(double(m - 1)), 0.5);
   EXPECT_EQ(realizations_for_probability(0.5, 0.1), 97u);  // 1.96^2 / 4 / 0.01 = 96.04
   EXPECT_EQ(realizations_for_probability(0.0, 0.1), 1u);
+  // A share of 0 against a bound of 0.1: the Wilson upper end z^2 / (n + z^2) <= 0.1 first at
+  // n = 35 (3.8415 * 9 = 34.57); a share of 0.3 stays above 0.1 from the n where its interval
+  // clears it, checked against the interval itself.
+  EXPECT_EQ(realizations_to_clear(0.0, 0.1), 35u);
+  const std::size_t clear = realizations_to_clear(0.3, 0.1);
+  EXPECT_GT(wilson_interval(std::lround(0.3 * clear), clear).low, 0.1);
+  EXPECT_LE(wilson_interval(std::lround(0.3 * (clear - 1)), clear - 1).low, 0.1);
+  EXPECT_THROW(realizations_to_clear(0.1, 0.1), InputError);
   EXPECT_THROW(realizations_for_ks(0.0), InputError);
   EXPECT_THROW(realizations_for_mean(-1.0, 0.1), InputError);
 }

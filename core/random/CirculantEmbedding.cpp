@@ -96,8 +96,12 @@ CirculantEmbedding::CirculantEmbedding(const Rectangle& domain, const FieldCovar
                      " cells: expected at most 1e8 (a longer correlation or a coarser spacing)");
   nx_ = static_cast<int>(cells_x) + 1;
   ny_ = static_cast<int>(cells_y) + 1;
+  // The smallest periodic grid: twice the grid, and at least 4 l along each axis, so that a
+  // domain thinner than the correlation (a strip one cell high) still embeds.
+  const int reach = static_cast<int>(std::ceil(4.0 * covariance_.length / spacing_));
+  const int first_x = std::max(2 * (nx_ - 1), reach), first_y = std::max(2 * (ny_ - 1), reach);
   for (int factor = 1; factor <= 8; factor *= 2) {
-    const int m1 = fast_size(2 * (nx_ - 1) * factor), m2 = fast_size(2 * (ny_ - 1) * factor);
+    const int m1 = fast_size(first_x * factor), m2 = fast_size(first_y * factor);
     std::vector<double> lambda = eigenvalues(m1, m2);
     const auto [low, high] = std::minmax_element(lambda.begin(), lambda.end());
     if (*low < -1e-10 * *high) continue;
@@ -115,8 +119,8 @@ CirculantEmbedding::CirculantEmbedding(const Rectangle& domain, const FieldCovar
     return;
   }
   throw InputError(
-      "random field: no periodic embedding up to 16 times the grid is non-negative "
-      "definite (correlation length " +
+      "random field: no periodic embedding up to 8 times the smallest (twice the grid, at "
+      "least 4 l) is non-negative definite (correlation length " +
       std::to_string(covariance_.length) + ", spacing " + std::to_string(spacing_) +
       "): expected a shorter correlation length against the domain");
 }

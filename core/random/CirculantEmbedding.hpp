@@ -8,10 +8,11 @@
 // they are all >= 0, F(sqrt(Lambda / M) xi) with xi complex standard normal, F the DFT and
 // M = m1 m2, has exactly the wanted covariance at the grid's nodes (its real part is used; the
 // imaginary part would be a second, independent field). The periodic grid starts at twice the
-// grid and is doubled until the smallest eigenvalue is no lower than -1e-10 of the largest; for a
-// smooth covariance (the squared exponential) the slightly negative eigenvalues left are
-// round-off of a matrix whose condition is huge, and are set to zero; `clipped()` says what share
-// of the trace that was (it is the relative error of the variance).
+// grid (and at least 4 l per axis, for a domain thinner than the correlation) and is doubled until
+// the smallest eigenvalue is no lower than -1e-10 of the largest; for a smooth covariance (the
+// squared exponential) the slightly negative eigenvalues left are round-off of a matrix whose
+// condition is huge, and are set to zero; `clipped()` says what share of the trace that was (it is
+// the relative error of the variance).
 //
 // Normal deviates: a 64-bit Mersenne twister seeded with the realization's seed, 53-bit
 // uniforms, Box-Muller. All three are fixed by their definitions, so a seed gives the same field
@@ -31,7 +32,8 @@ namespace vorodg {
 class CirculantEmbedding {
  public:
   /// `spacing` <= 0 takes l / 8. Throws InputError for a bad covariance or domain, a grid of more
-  /// than 1e8 cells, or when no embedding up to 16 times the grid is non-negative to the
+  /// than 1e8 cells, or when no embedding up to 8 times the smallest (twice the grid, and at
+  /// least 4 l per axis) is non-negative to the
   /// tolerance.
   CirculantEmbedding(const Rectangle& domain, const FieldCovariance& covariance,
                      double spacing = 0.0);

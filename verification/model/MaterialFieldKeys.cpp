@@ -43,17 +43,17 @@ MaterialField read_material_field(SceneKeyReader& reader, SceneObject& m) {
   if (f.enabled) f.covariance.kind = covariance_kind(kind);
   if (f.enabled && !m.has("field_length"))
     m.fail_value("field_length", "expected the correlation length of material.field " + kind);
-  f.covariance.length =
-      m.has("field_length") ? reader.number(m, "material.field_length") : f.covariance.length;
-  if (!m.has("field_length")) reader.note("material.field_length", "none");
+  // Its default is in words: the reader needs a number to fall back on, never used here.
+  if (m.has("field_length"))
+    f.covariance.length = reader.number(m, "material.field_length", f.covariance.length);
+  else
+    reader.note("material.field_length", "none");
   f.covariance.smoothness = reader.number(m, "material.field_smoothness");
   f.marginal.kind = marginal_kind(reader.word(m, "material.field_marginal", " uniform weibull "));
   f.marginal.half_width = reader.number(m, "material.field_amplitude");
   f.marginal.shape = reader.number(m, "material.field_shape");
-  f.spacing = m.has("field_spacing") ? reader.number(m, "material.field_spacing")
-                                     : f.covariance.length / 8.0;
-  if (!m.has("field_spacing"))
-    reader.note("material.field_spacing", f.enabled ? exact_text(f.spacing) : "none");
+  f.spacing = reader.number(m, "material.field_spacing", f.covariance.length / 8.0);
+  if (!f.enabled) reader.note("material.field_spacing", "none");
   f.seed = static_cast<std::uint64_t>(reader.integer(m, "material.field_seed"));
   return f;
 }

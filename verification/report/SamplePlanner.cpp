@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/util/Errors.hpp"
+#include "verification/report/CoupledDifferences.hpp"
 #include "verification/report/Distributions.hpp"
 #include "verification/report/EmpiricalCdf.hpp"
 #include "verification/report/KolmogorovSmirnov.hpp"
@@ -76,6 +77,18 @@ std::size_t realizations_for_probability(double p, double delta, double confiden
   const double z = normal_quantile(0.5 * (1.0 + confidence));
   return static_cast<std::size_t>(
       std::max(1.0, std::ceil(z * z * p * (1.0 - p) / (delta * delta))));
+}
+
+std::size_t realizations_to_clear(double share, double bound, double confidence) {
+  check_resolution("share sample size", bound, 1.0);
+  if (!(share >= 0.0 && share <= 1.0) || share == bound)
+    throw InputError("share sample size: share " + std::to_string(share) +
+                     ": expected in [0, 1] and not the bound " + std::to_string(bound));
+  return smallest(1, [&](std::size_t n) {
+    const auto hits = static_cast<std::size_t>(std::lround(share * static_cast<double>(n)));
+    const Interval w = wilson_interval(hits, n, confidence);
+    return share < bound ? w.high <= bound : w.low > bound;
+  });
 }
 
 }  // namespace vorodg

@@ -27,4 +27,9 @@ std::size_t realizations_for_mean(double std_dev, double delta, double confidenc
 /// when nothing is known of it, the most demanding.
 std::size_t realizations_for_probability(double p, double delta, double confidence = 0.95);
 
+/// The share of a sample beyond a bound: the smallest n at which the Wilson interval of the
+/// share `share` (round(share n) of n) lies wholly on its side of `bound`, 0 < bound < 1 and
+/// share != bound. What decides "is Pr below the bound?" if the share stays what it is.
+std::size_t realizations_to_clear(double share, double bound, double confidence = 0.95);
+
 }  // namespace vorodg

@@ -2,6 +2,7 @@
 // reads the finest pair of levels first: what it cannot resolve is "undecided" with the sample
 // size that would decide it; what it resolves as different is "converging" if the difference
 // fell from the pair before with an observed order, else "does not converge".
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -12,6 +13,12 @@
 
 namespace vorodg {
 namespace {
+
+/// The half-width an interval around `estimate` needs to fall on one side of `bound`: their
+/// distance, but at least a tenth of the bound (an estimate on the bound decides nothing).
+double clearance(double estimate, double bound) {
+  return std::max(std::abs(estimate - bound), 0.1 * bound);
+}
 
 std::string range(const Interval& i) {
   return "[" + fmt(i.low, 3) + ", " + fmt(i.high, 3) + "]";
@@ -60,9 +67,12 @@ NotionVerdict of_mean(const QuantityConvergence& q, const StatisticalOptions& o)
   const std::string change = "the mean changes by " + fmt(c.estimate, 3) + " " + range(c) +
                              " between the finest levels (tolerance " + fmt(q.epsilon, 3) + ")";
   if (c.low >= -q.epsilon && c.high <= q.epsilon) return {Verdict::converges, change};
-  if (c.contains(0.0))
+  if (c.contains(0.0)) {  // to decide: an interval inside +-eps, or one clear of 0
+    const double size = std::abs(c.estimate);
+    const double half = size > q.epsilon ? size : clearance(size, q.epsilon);
     return {Verdict::undecided, change,
-            realizations_for_mean(q.steps.back().change_std_dev, q.epsilon, o.confidence)};
+            realizations_for_mean(q.steps.back().change_std_dev, half, o.confidence)};
+  }
   const auto order = falling(q, [](const LevelStep& t) {
     Interval a = t.mean_change;  // its size: the interval of |change| when it excludes 0
     if (a.low < 0.0 && a.high > 0.0) return std::optional<Interval>();
@@ -98,10 +108,16 @@ NotionVerdict coupled_notion(const QuantityConvergence& q, const StatisticalOpti
     if (order) return {Verdict::converging, what + ", falling at observed order " + fmt(*order, 2)};
     return {Verdict::does_not_converge, what};
   }
-  return {Verdict::undecided, what,
-          probability
-              ? realizations_for_probability(v.estimate, bound / 2.0, o.confidence)
-              : realizations_for_mean(s.coupled->absolute_std_dev, bound / 2.0, o.confidence)};
+  // To decide: an interval wholly on the estimate's side of the bound, if the estimate stays.
+  std::size_t n = 0;
+  if (!probability)
+    n = realizations_for_mean(s.coupled->absolute_std_dev, clearance(v.estimate, bound),
+                              o.confidence);
+  else if (v.estimate != bound)
+    n = realizations_to_clear(v.estimate, bound, o.confidence);
+  else
+    n = realizations_for_probability(bound, clearance(v.estimate, bound), o.confidence);
+  return {Verdict::undecided, what, n};
 }
 
 }  // namespace

@@ -95,3 +95,47 @@ def test_bad_samples_are_refused_in_one_line():
         vs.ks_two_sample([], [1.0])
     with pytest.raises(ValueError, match="one pair per realization"):
         vs.coupled_differences([1.0, 2.0], [1.0], epsilon=0.1)
+
+
+def _strip_scene(field):
+    """The shipped quick campaign made smaller: the strip at the normalized rate 10, two levels,
+    six realizations; with or without its random material field."""
+    import json
+    from conftest import ROOT
+    scene = json.loads((ROOT / "data" / "scenes" / "strip-statistical-convergence-quick.json").read_text())
+    scene["meshes"][0]["realizations"] = 6
+    if not field:
+        for key in [k for k in scene["material"] if k.startswith("field")]:
+            del scene["material"][key]
+    return scene
+
+
+def _report_rows(folder):
+    import csv
+    with open(folder / "rate-10" / "statistical-convergence.csv") as f:
+        return list(csv.DictReader(f))
+
+
+def test_a_scene_with_a_field_gets_the_coupled_report(tmp_path):
+    import vorodg
+    vorodg.run(_strip_scene(True), str(tmp_path / "field"), threads=2, progress=False, plots=False)
+    rows = _report_rows(tmp_path / "field")
+    assert [r["quantity"] for r in rows] == [
+        "rcp: fragments", "rcp: max_fragment_mass_fraction", "rcp: dissipated_energy"]
+    verdicts = {"converges", "converging", "does not converge", "undecided"}
+    for r in rows:
+        assert int(r["pairs"]) == 6
+        # Jensen: E|D| >= |E D|, and E|D|^2 >= (E|D|)^2, realization by realization pairs.
+        assert float(r["E|D|"]) >= abs(float(r["mean change"])) - 1e-12 * abs(float(r["E|D|"]))
+        assert float(r["E|D|^2"]) >= float(r["E|D|"]) ** 2 * (1 - 1e-12)
+        assert {r["in distribution"], r["of the mean"], r["in mean"], r["in probability"]} <= verdicts
+    md = (tmp_path / "field" / "rate-10" / "statistical-convergence.md").read_text()
+    assert "levels coupled" in md
+
+
+def test_without_a_field_the_coupled_notions_do_not_apply(tmp_path):
+    import vorodg
+    vorodg.run(_strip_scene(False), str(tmp_path / "plain"), threads=2, progress=False, plots=False)
+    for r in _report_rows(tmp_path / "plain"):
+        assert r["in mean"] == "not applicable" and r["in probability"] == "not applicable"
+        assert "pairs" not in r or r["pairs"] == ""

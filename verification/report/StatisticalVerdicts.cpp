@@ -20,6 +20,13 @@ double clearance(double estimate, double bound) {
   return std::max(std::abs(estimate - bound), 0.1 * bound);
 }
 
+/// What a "does not converge" from a single pair of levels must add: it has no trend.
+std::string single_pair(const QuantityConvergence& q) {
+  return q.steps.size() == 1
+             ? "; with two levels there is no trend to tell a slow convergence from none"
+             : "";
+}
+
 std::string range(const Interval& i) {
   return "[" + fmt(i.low, 3) + ", " + fmt(i.high, 3) + "]";
 }
@@ -50,8 +57,8 @@ NotionVerdict in_distribution(const QuantityConvergence& q, const StatisticalOpt
       return {Verdict::converging, "the finest levels' laws still differ (" + ks +
                                        "), but W1 fell to " + fmt(s.wasserstein.estimate, 3) +
                                        " at observed order " + fmt(*order, 2)};
-    return {Verdict::does_not_converge,
-            "the finest levels' laws differ (" + ks + ", W1 " + range(s.wasserstein) + ")"};
+    return {Verdict::does_not_converge, "the finest levels' laws differ (" + ks + ", W1 " +
+                                            range(s.wasserstein) + ")" + single_pair(q)};
   }
   if (s.ks_critical <= o.ks_resolution)
     return {Verdict::converges, "the finest levels' laws agree to the resolution asked (" + ks +
@@ -83,7 +90,7 @@ NotionVerdict of_mean(const QuantityConvergence& q, const StatisticalOptions& o)
     return {Verdict::converging,
             change + ", after a larger change, at observed order " + fmt(*order, 2)};
   std::string trend = q.trend ? "; the mean goes as h^" + fmt(*q.trend, 2) : "";
-  return {Verdict::does_not_converge, change + trend};
+  return {Verdict::does_not_converge, change + trend + single_pair(q)};
 }
 
 NotionVerdict coupled_notion(const QuantityConvergence& q, const StatisticalOptions& o,
@@ -106,7 +113,7 @@ NotionVerdict coupled_notion(const QuantityConvergence& q, const StatisticalOpti
       return std::optional(probability ? t.coupled->exceedance : t.coupled->mean_absolute);
     });
     if (order) return {Verdict::converging, what + ", falling at observed order " + fmt(*order, 2)};
-    return {Verdict::does_not_converge, what};
+    return {Verdict::does_not_converge, what + single_pair(q)};
   }
   // To decide: an interval wholly on the estimate's side of the bound, if the estimate stays.
   std::size_t n = 0;

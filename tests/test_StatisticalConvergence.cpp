@@ -168,6 +168,7 @@ TEST(StatisticalReport, GroupsCompleteRecordsByMeshBlockAndLevel) {
                         {"h_avg", h},
                         {"complete", complete}};
     r["q"] = number_json(q);
+    r["seconds"] = 1.5;
     records.push_back(r);
   };
   add("a", 0, 0, 0.2, 10.0);
@@ -190,6 +191,7 @@ TEST(StatisticalReport, GroupsCompleteRecordsByMeshBlockAndLevel) {
   EXPECT_NEAR(q[0].levels[0].h_avg, 0.21, 1e-15);
   EXPECT_NEAR(q[0].levels[1].h_avg, 0.11, 1e-15);
   EXPECT_EQ(q[0].levels[1].value, (std::vector<double>{11.0, 11.5}));
+  EXPECT_EQ(q[0].levels[1].core_seconds, 3.0);  // the two runs kept, 1.5 s each
   EXPECT_NEAR(q[0].steps[0].mean_change.estimate, 11.0 - 11.25, 1e-14);
 }
 

@@ -82,6 +82,7 @@ std::vector<QuantityConvergence> statistical_convergence_of(
       LevelSample& l = levels[{r.at("mesh").get<std::string>(), r.at("level").get<int>()}];
       l.h_avg += read_number(r.at("h_avg"));
       l.realization.push_back(r.at("realization").get<int>());
+      if (r.contains("seconds")) l.core_seconds += read_number(r.at("seconds"));
       l.value.push_back(v);
     }
     std::map<std::string, std::vector<LevelSample>> by_mesh;

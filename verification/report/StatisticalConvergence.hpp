@@ -22,6 +22,7 @@ struct LevelSample {
   double h_avg = 0.0;
   std::vector<int> realization;
   std::vector<double> value;
+  double core_seconds = 0.0;  // what its runs took, summed (the cost of the level's sample)
 };
 
 struct StatisticalOptions {

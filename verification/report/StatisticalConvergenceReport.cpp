@@ -80,6 +80,7 @@ std::string levels_table(const QuantityConvergence& q) {
     t.add_value("runs", static_cast<double>(q.levels[k].value.size()), {}, integer_style());
     t.add_text("mean [interval]", interval_text(q.mean[k]));
     t.add_text("CDF band +-", fmt(q.dkw[k], 2));
+    t.add_value("core-hours", q.levels[k].core_seconds / 3600.0, {}, ColumnStyle{.precision = 3});
   }
   std::ostringstream out;
   t.write_markdown(out);

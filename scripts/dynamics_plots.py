@@ -53,6 +53,7 @@ from plotting_common import (  # noqa: E402
     columns, light_grid, number, outdir_arguments, plt, read_table, save_atomically)
 from snapshot_plots import plot_snapshots  # noqa: E402
 from timeline_plots import plot_crack_timeline  # noqa: E402
+import statistics_plots  # noqa: E402
 
 # (history column, legend label, colour): the energies of the top panel.
 ENERGIES = (("kinetic_energy", "kinetic", "tab:blue"),
@@ -298,6 +299,11 @@ def plot_variants(outdir, variants, dpi):
     save_atomically(fig, os.path.join(outdir, "plots", "fragments_by_variant.png"), dpi)
 
 
+def plot_statistics(outdir, _runs, dpi):
+    """The statistical report's figures (statistics_plots.py), where the scene asked for one."""
+    statistics_plots.draw_all(outdir, dpi)
+
+
 def main(argv):
     args = outdir_arguments(__doc__, argv)
     variants = read_variants(args.outdir)
@@ -341,7 +347,8 @@ def main(argv):
                 skip(f"the fragment plot of {run['id']}", f"{type(e).__name__}: {e}")
     for what, plot in (("the crack time line", plot_crack_timeline),
                        ("the fragment CDFs", plot_level_cdfs),
-                       ("the plot over the levels", plot_levels)):
+                       ("the plot over the levels", plot_levels),
+                       ("the statistical convergence", plot_statistics)):
         try:
             plot(args.outdir, runs, args.dpi)
         except Exception as e:

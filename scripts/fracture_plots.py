@@ -32,6 +32,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plotting_common import (  # noqa: E402
     columns, light_grid, number, outdir_arguments, plt, read_table, save_atomically)
 from study_plots import level_colours  # noqa: E402
+import statistics_plots  # noqa: E402
 
 METRICS = (("peak_load", "peak load (N)"), ("dissipated_energy", "dissipated energy (J)"),
            ("crack_length", "crack length (m)"))
@@ -227,6 +228,11 @@ def plot_energy(outdir, groups, levels, dpi):
     save_atomically(fig, os.path.join(outdir, "energy.png"), dpi)
 
 
+def plot_statistics(outdir, _groups, _levels, dpi):
+    """The statistical report's figures (statistics_plots.py), where the scene asked for one."""
+    statistics_plots.draw_all(outdir, dpi)
+
+
 def main(argv):
     args = outdir_arguments(__doc__, argv)
     groups = read_groups(args.outdir)
@@ -236,7 +242,7 @@ def main(argv):
     levels = read_levels(args.outdir)
     plots = ((plot_load, "displacement", "displacement (mm)", "load_displacement"),
              (plot_load, "cmod", "CMOD (mm)", "load_cmod"),
-             (plot_cracks,), (plot_cdfs,), (plot_energy,))
+             (plot_cracks,), (plot_cdfs,), (plot_energy,), (plot_statistics,))
     for plot, *extra in plots:
         try:
             plot(args.outdir, groups, levels, *extra, dpi=args.dpi)

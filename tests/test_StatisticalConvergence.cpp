@@ -186,7 +186,8 @@ TEST(StatisticalReport, GroupsCompleteRecordsByMeshBlockAndLevel) {
   settings.quantities = {"q"};
   const std::vector<QuantityConvergence> q = statistical_convergence_of(records, settings);
   ASSERT_EQ(q.size(), 1u);
-  EXPECT_EQ(q[0].name, "a: q");
+  EXPECT_EQ(q[0].name, "q");
+  EXPECT_EQ(q[0].mesh, "a");
   ASSERT_EQ(q[0].levels.size(), 2u);
   EXPECT_NEAR(q[0].levels[0].h_avg, 0.21, 1e-15);
   EXPECT_NEAR(q[0].levels[1].h_avg, 0.11, 1e-15);

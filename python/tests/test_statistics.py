@@ -120,8 +120,8 @@ def test_a_scene_with_a_field_gets_the_coupled_report(tmp_path):
     import vorodg
     vorodg.run(_strip_scene(True), str(tmp_path / "field"), threads=2, progress=False, plots=False)
     rows = _report_rows(tmp_path / "field")
-    assert [r["quantity"] for r in rows] == [
-        "rcp: fragments", "rcp: max_fragment_mass_fraction", "rcp: dissipated_energy"]
+    assert [(r["mesh"], r["quantity"]) for r in rows] == [
+        ("rcp", "fragments"), ("rcp", "max_fragment_mass_fraction"), ("rcp", "dissipated_energy")]
     verdicts = {"converges", "converging", "does not converge", "undecided"}
     for r in rows:
         assert int(r["pairs"]) == 6
@@ -131,6 +131,14 @@ def test_a_scene_with_a_field_gets_the_coupled_report(tmp_path):
         assert {r["in distribution"], r["of the mean"], r["in mean"], r["in probability"]} <= verdicts
     md = (tmp_path / "field" / "rate-10" / "statistical-convergence.md").read_text()
     assert "levels coupled" in md
+    import csv
+    with open(tmp_path / "field" / "rate-10" / "statistical-levels.csv") as f:
+        levels = list(csv.DictReader(f))
+    assert len(levels) == 3 * 2 and all(int(l["runs"]) == 6 for l in levels)
+    for l in levels:  # the DKW half-width for 6 runs at 95 %
+        assert float(l["CDF band +-"]) == pytest.approx((np.log(40) / 12) ** 0.5, rel=1e-12)
+        assert float(l["mean low"]) <= float(l["mean"]) <= float(l["mean high"])
+        assert float(l["core-hours"]) > 0
 
 
 def test_without_a_field_the_coupled_notions_do_not_apply(tmp_path):

@@ -87,13 +87,15 @@ std::vector<QuantityConvergence> statistical_convergence_of(
     }
     std::map<std::string, std::vector<LevelSample>> by_mesh;
     for (auto& [key, l] : levels) {
+      l.level = key.second;
       l.h_avg /= static_cast<double>(l.value.size());
       if (l.value.size() >= 2) by_mesh[key.first].push_back(std::move(l));
     }
-    for (auto& [mesh, samples] : by_mesh)
-      if (samples.size() >= 2)
-        out.push_back(
-            statistical_convergence(mesh + ": " + quantity, std::move(samples), settings.options));
+    for (auto& [mesh, samples] : by_mesh) {
+      if (samples.size() < 2) continue;
+      out.push_back(statistical_convergence(quantity, std::move(samples), settings.options));
+      out.back().mesh = mesh;
+    }
   }
   return out;
 }
@@ -105,6 +107,7 @@ std::string write_statistical_report(const std::vector<nlohmann::json>& records,
   if (q.empty()) return "";
   const std::string md = statistical_convergence_md(q, settings.options);
   write_file_atomically(out / "statistical-convergence.csv", statistical_convergence_csv(q));
+  write_file_atomically(out / "statistical-levels.csv", statistical_levels_csv(q));
   write_file_atomically(out / "statistical-convergence.md", md);
   return md;
 }

@@ -23,6 +23,7 @@ struct LevelSample {
   std::vector<int> realization;
   std::vector<double> value;
   double core_seconds = 0.0;  // what its runs took, summed (the cost of the level's sample)
+  int level = 0;  // its index in the scene's mesh block (for the files that name runs by it)
 };
 
 struct StatisticalOptions {
@@ -61,6 +62,7 @@ struct NotionVerdict {
 
 struct QuantityConvergence {
   std::string name;
+  std::string mesh;                 // the mesh block it belongs to (empty: one block)
   std::vector<LevelSample> levels;  // coarse to fine
   std::vector<Interval> mean;       // per level (Student t; a point for one realization)
   std::vector<double> dkw;          // per level, the DKW half-width

@@ -47,7 +47,10 @@ void add_steps(ConvergenceTable& t, const QuantityConvergence& q, bool with_name
   for (std::size_t k = 0; k < q.steps.size(); ++k) {
     const LevelStep& s = q.steps[k];
     t.start_row();
-    if (with_name) t.add_text("quantity", q.name, csv_text_only());
+    if (with_name) {
+      t.add_text("mesh", q.mesh, csv_text_only());
+      t.add_text("quantity", q.name, csv_text_only());
+    }
     t.add_value("h", q.levels[k].h_avg, {}, ColumnStyle{.precision = 3});
     t.add_value("h finer", q.levels[k + 1].h_avg, {}, ColumnStyle{.precision = 3});
     t.add_value("KS D", s.ks.distance, {}, ColumnStyle{.precision = 3});
@@ -72,16 +75,26 @@ void add_steps(ConvergenceTable& t, const QuantityConvergence& q, bool with_name
   }
 }
 
-std::string levels_table(const QuantityConvergence& q) {
-  ConvergenceTable t;
+/// One row per level of q (into a table shared by every quantity for the CSV).
+void add_levels(ConvergenceTable& t, const QuantityConvergence& q, bool with_name) {
   for (std::size_t k = 0; k < q.levels.size(); ++k) {
     t.start_row();
+    if (with_name) {
+      t.add_text("mesh", q.mesh, csv_text_only());
+      t.add_text("quantity", q.name, csv_text_only());
+      t.add_value("level", q.levels[k].level, {}, integer_style());
+    }
     t.add_value("h_avg", q.levels[k].h_avg, {}, ColumnStyle{.precision = 3});
     t.add_value("runs", static_cast<double>(q.levels[k].value.size()), {}, integer_style());
-    t.add_text("mean [interval]", interval_text(q.mean[k]));
-    t.add_text("CDF band +-", fmt(q.dkw[k], 2));
+    add_interval(t, "mean", q.mean[k]);
+    t.add_value("CDF band +-", q.dkw[k], {}, ColumnStyle{.precision = 2});
     t.add_value("core-hours", q.levels[k].core_seconds / 3600.0, {}, ColumnStyle{.precision = 3});
   }
+}
+
+std::string levels_table(const QuantityConvergence& q) {
+  ConvergenceTable t;
+  add_levels(t, q, false);
   std::ostringstream out;
   t.write_markdown(out);
   return out.str();
@@ -114,7 +127,8 @@ std::string statistical_convergence_md(const std::vector<QuantityConvergence>& q
       (o.coupled ? "coupled (each realization's random field shared)" : "independent") +
       " (docs/statistics.md).\n";
   for (const QuantityConvergence& q : quantities) {
-    md += "\n## " + q.name + "\n\n" + levels_table(q) + "\n";
+    const std::string title = q.mesh.empty() ? q.name : q.mesh + ": " + q.name;
+    md += "\n## " + title + "\n\n" + levels_table(q) + "\n";
     ConvergenceTable steps;
     add_steps(steps, q, false);
     std::ostringstream out;
@@ -131,6 +145,12 @@ std::string statistical_convergence_md(const std::vector<QuantityConvergence>& q
 std::string statistical_convergence_csv(const std::vector<QuantityConvergence>& quantities) {
   ConvergenceTable t;
   for (const QuantityConvergence& q : quantities) add_steps(t, q, true);
+  return csv_text(t);
+}
+
+std::string statistical_levels_csv(const std::vector<QuantityConvergence>& quantities) {
+  ConvergenceTable t;
+  for (const QuantityConvergence& q : quantities) add_levels(t, q, true);
   return csv_text(t);
 }
 

@@ -20,4 +20,8 @@ std::string statistical_convergence_md(const std::vector<QuantityConvergence>& q
 /// row.
 std::string statistical_convergence_csv(const std::vector<QuantityConvergence>& quantities);
 
+/// statistical-levels.csv: one row per quantity and level (h_avg, runs, the mean with its
+/// interval, the DKW half-width, core-hours): what the plots draw the bands from.
+std::string statistical_levels_csv(const std::vector<QuantityConvergence>& quantities);
+
 }  // namespace vorodg

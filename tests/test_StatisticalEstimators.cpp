@@ -97,8 +97,9 @@ TEST(EmpiricalCdf, DkwHalfWidthIsMassartsBound) {
 }
 
 TEST(EmpiricalCdf, DkwBandHoldsTheTrueCdfAtLeastAsOftenAsPromised) {
-  // 2000 samples of 40 uniforms: sup |F_n - x| <= eps in at least 95 % of them, less three
-  // standard errors of a share (0.015); the bound is conservative, so more are expected.
+  // 2000 samples of 40 uniforms: sup |F_n - x| <= eps in at least 94 % of them (95 % promised,
+  // less about two standard errors of a share, 0.01); the bound is conservative: numpy's
+  // generator gives 96.3 % for the same experiment.
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::size_t n = 40, trials = 2000;
@@ -115,7 +116,7 @@ TEST(EmpiricalCdf, DkwBandHoldsTheTrueCdfAtLeastAsOftenAsPromised) {
     }
     held += sup <= eps ? 1 : 0;
   }
-  EXPECT_GE(static_cast<double>(held) / trials, 0.95 - 0.015);
+  EXPECT_GE(static_cast<double>(held) / trials, 0.94);
 }
 
 TEST(Wasserstein, MatchesHandCasesAndScipy) {

@@ -83,3 +83,25 @@ def test_bad_choices_are_named(tmp_path):
         vorodg.fracture_path(scene, str(tmp_path), variant="case1", run=7)
     with pytest.raises(ValueError, match=r"run 'rcp-L0-R9': no such run \(rcp-L0-R0, rcp-L0-R1, rcp-L0-R2\)"):
         vorodg.fracture_path(scene, str(tmp_path), variant="case1", run="rcp-L0-R9")
+
+
+def test_the_load_at_twice_the_peak_displacement_is_the_curves(tmp_path):
+    """load_at_twice_peak, kept point by point as the path runs, against the finished curve read
+    independently: the first crossing of twice the peak's displacement after the peak,
+    interpolated linearly between the two points around it."""
+    vorodg.run("demo-fracture", str(tmp_path), threads=2, progress=False, plots=False)
+    with open(tmp_path / "results.csv") as f:
+        runs = list(csv.DictReader(f))
+    assert runs
+    for run in runs:
+        with open(tmp_path / "curves" / f"{run['id']}.csv") as f:
+            curve = list(csv.DictReader(f))
+        stroke = np.array([float(p["displacement"]) for p in curve])
+        load = np.array([float(p["load"]) for p in curve])
+        peak = int(np.argmax(load))
+        target = 2.0 * stroke[peak]
+        assert stroke[-1] >= target, "the demo's paths run past twice the peak"
+        after = peak + int(np.argmax(stroke[peak:] >= target))
+        t = (target - stroke[after - 1]) / (stroke[after] - stroke[after - 1])
+        expected = load[after - 1] + t * (load[after] - load[after - 1])
+        assert float(run["load_at_twice_peak"]) == pytest.approx(expected, rel=1e-9)

@@ -1,5 +1,6 @@
 #include "verification/kinds/fracture/FractureRun.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -131,7 +132,8 @@ class PathRecorder {
     series_.archive(a);
     a.vector("recorder.last_points", last_points_);
     for (double* x : {&r_.peak_load, &r_.displacement_at_peak, &r_.dissipated_energy,
-                      &r_.crack_length, &r_.energy_balance_error, &r_.closed_form_error})
+                      &r_.crack_length, &r_.energy_balance_error, &r_.closed_form_error,
+                      &r_.load_at_twice_peak, &previous_stroke_, &previous_load_})
       a.value("recorder.figure", *x);
     a.value("recorder.newton_iterations", r_.newton_iterations);
     a.value("recorder.points", r_.points);
@@ -145,7 +147,18 @@ class PathRecorder {
 
  private:
   void update_record(const PathPoint& p) {
-    if (p.load > r_.peak_load) r_.peak_load = p.load, r_.displacement_at_peak = p.stroke;
+    if (p.load > r_.peak_load) {  // a new peak: the softening branch starts again
+      r_.peak_load = p.load, r_.displacement_at_peak = p.stroke;
+      r_.load_at_twice_peak = NAN;
+    } else if (std::isnan(r_.load_at_twice_peak) && p.stroke >= 2.0 * r_.displacement_at_peak &&
+               r_.displacement_at_peak > 0.0) {
+      const double target = 2.0 * r_.displacement_at_peak;
+      const double t = p.stroke > previous_stroke_
+                           ? (target - previous_stroke_) / (p.stroke - previous_stroke_)
+                           : 1.0;
+      r_.load_at_twice_peak = previous_load_ + std::clamp(t, 0.0, 1.0) * (p.load - previous_load_);
+    }
+    previous_stroke_ = p.stroke, previous_load_ = p.load;
     r_.dissipated_energy = p.energy.dissipated;
     r_.crack_length = p.energy.crack_length;
     r_.energy_balance_error = std::max(r_.energy_balance_error, p.balance_error());
@@ -169,6 +182,7 @@ class PathRecorder {
   const double magnify_;
   std::ostringstream curve_;
   std::vector<InterfacePoint> last_points_;
+  double previous_stroke_ = 0.0, previous_load_ = 0.0;  // the point before, to interpolate
 };
 
 }  // namespace

@@ -24,6 +24,9 @@ struct FractureRecord {
   int cells = 0, dofs = 0, full_dg_dofs = 0;
   double h_avg = 0.0;
   double peak_load = 0.0, displacement_at_peak = 0.0;
+  /// The load where the stroke first reaches twice the peak's after the peak (interpolated
+  /// between the path's points): the softening branch's level; NaN if the path ends before.
+  double load_at_twice_peak = NAN;
   double dissipated_energy = 0.0, crack_length = 0.0;
   double energy_balance_error = 0.0;  // the largest over the converged points
   double closed_form_error = NAN;     // tension bar: the largest deviation from the closed form

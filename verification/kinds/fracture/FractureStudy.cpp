@@ -42,6 +42,7 @@ const std::vector<RecordField<FractureRecord>>& fracture_fields() {
                        field("full_dg_dofs", &R::full_dg_dofs), field("h_avg", &R::h_avg, fine),
                        field("peak_load", &R::peak_load, fine),
                        field("displacement_at_peak", &R::displacement_at_peak, fine),
+                       field("load_at_twice_peak", &R::load_at_twice_peak, {true, 12, true}, true),
                        field("dissipated_energy", &R::dissipated_energy, fine),
                        field("crack_length", &R::crack_length, fine),
                        field("energy_balance_error", &R::energy_balance_error),

@@ -105,3 +105,20 @@ def test_the_load_at_twice_the_peak_displacement_is_the_curves(tmp_path):
         t = (target - stroke[after - 1]) / (stroke[after] - stroke[after - 1])
         expected = load[after - 1] + t * (load[after] - load[after - 1])
         assert float(run["load_at_twice_peak"]) == pytest.approx(expected, rel=1e-9)
+
+
+def test_the_crack_tortuosity_is_the_crack_files(tmp_path):
+    """crack_tortuosity against cracks/<run>.csv: the faces' total length over their extent along
+    y (on demo-fracture's mirrored meshes the crack is the straight mid-line: 1)."""
+    vorodg.run("demo-fracture", str(tmp_path), threads=2, progress=False, plots=False)
+    with open(tmp_path / "results.csv") as f:
+        runs = list(csv.DictReader(f))
+    for run in runs:
+        with open(tmp_path / "cracks" / f"{run['id']}.csv") as f:
+            faces = list(csv.DictReader(f))
+        assert faces
+        length = sum(np.hypot(float(p["x1"]) - float(p["x0"]), float(p["y1"]) - float(p["y0"]))
+                     for p in faces)
+        ys = [float(p[k]) for p in faces for k in ("y0", "y1")]
+        assert float(run["crack_tortuosity"]) == pytest.approx(length / (max(ys) - min(ys)),
+                                                               rel=1e-9)

@@ -69,6 +69,16 @@ std::string crack_faces(const CohesiveFracture& model, const std::vector<Interfa
   return csv_text(t);
 }
 
+/// Total length over extent along y of the cracked faces (NaN for none, or none with extent).
+double tortuosity(const std::vector<CrackedFace>& faces) {
+  double length = 0.0, low = HUGE_VAL, high = -HUGE_VAL;
+  for (const CrackedFace& f : faces) {
+    length += (f.b - f.a).norm();
+    low = std::min({low, f.a.y(), f.b.y()}), high = std::max({high, f.a.y(), f.b.y()});
+  }
+  return high > low ? length / (high - low) : NAN;
+}
+
 }  // namespace
 
 GeneratedMesh fracture_run_mesh(const FractureScene& scene, const EnsembleRunId& run) {
@@ -141,6 +151,7 @@ class PathRecorder {
 
   /// The whole curve, and the faces past the strength at the last point.
   void finish() {
+    r_.crack_tortuosity = tortuosity(model_.cracked_faces(last_points_));
     write_file_atomically(curve_file_, curve_.str());
     write_file_atomically(out_ / "cracks" / (id_ + ".csv"), crack_faces(model_, last_points_));
   }

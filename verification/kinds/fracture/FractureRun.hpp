@@ -28,6 +28,10 @@ struct FractureRecord {
   /// between the path's points): the softening branch's level; NaN if the path ends before.
   double load_at_twice_peak = NAN;
   double dissipated_energy = 0.0, crack_length = 0.0;
+  /// The cracked faces' total length over their extent along y at the end (the straight crack
+  /// of both problems runs along y): 1 for a straight crack, more for a winding or branched one;
+  /// NaN without cracked faces.
+  double crack_tortuosity = NAN;
   double energy_balance_error = 0.0;  // the largest over the converged points
   double closed_form_error = NAN;     // tension bar: the largest deviation from the closed form
   int points = 0, newton_iterations = 0, factorizations = 0;

@@ -45,6 +45,7 @@ const std::vector<RecordField<FractureRecord>>& fracture_fields() {
                        field("load_at_twice_peak", &R::load_at_twice_peak, {true, 12, true}, true),
                        field("dissipated_energy", &R::dissipated_energy, fine),
                        field("crack_length", &R::crack_length, fine),
+                       field("crack_tortuosity", &R::crack_tortuosity, {true, 12, true}, true),
                        field("energy_balance_error", &R::energy_balance_error),
                        field("closed_form_error", &R::closed_form_error, {true, 6, true}, true),
                        field("points", &R::points, kNotInCsv),

@@ -178,7 +178,7 @@ constexpr double kBase = 1.0 / 1024;
 TEST(ExtremesVerdict, AFailedRunIsBrokenWithItsError) {
   const Scene s = hand_sweep("none");
   const json r = failed_row("dg-sipg", "the matrix is not positive definite at k_p = 0.001 E");
-  const Verdict v = judge(s, r, {r});
+  const RunVerdict v = judge(s, r, {r});
   EXPECT_EQ(v.level, "broken");
   EXPECT_NE(v.reason.find("the matrix is not positive definite at k_p = 0.001 E"),
             std::string::npos)
@@ -191,7 +191,7 @@ TEST(ExtremesVerdict, ANonConvergedDgIterationIsBroken) {
     json r = row("dg-al", 0.01);
     r["stop_reason"] = stop;
     r["iterations"] = 100;
-    const Verdict v = judge(s, r, {r});
+    const RunVerdict v = judge(s, r, {r});
     EXPECT_EQ(v.level, "broken") << stop;
     EXPECT_NE(v.reason.find(stop), std::string::npos) << v.reason;
   }
@@ -206,7 +206,7 @@ TEST(ExtremesVerdict, ARelativeErrorOfOneOrMoreIsBroken) {
   const Scene s = hand_sweep("none");
   for (double e : {1.0, 740.0}) {
     const json r = row("cg", e);
-    const Verdict v = judge(s, r, {r});
+    const RunVerdict v = judge(s, r, {r});
     EXPECT_EQ(v.level, "broken") << e;
     EXPECT_NE(v.reason.find(">= 1"), std::string::npos) << v.reason;
   }
@@ -222,7 +222,7 @@ TEST(ExtremesVerdict, ANonFiniteErrorIsBroken) {
   // reads it back that way and must give the same verdict, not throw.
   const json reread = json::parse(nan_row.dump());
   ASSERT_TRUE(reread["l2_error"].is_null());
-  Verdict v;
+  RunVerdict v;
   EXPECT_NO_THROW(v = judge(s, reread, {reread}));
   EXPECT_EQ(v.level, "broken");
   EXPECT_NE(v.reason.find("non-finite"), std::string::npos) << v.reason;
@@ -238,7 +238,7 @@ void expect_factors(const Scene& s, json run, const json& base, double base_erro
   for (const Case& c : {Case{1.0, "ok"}, Case{2.5, "ok"}, Case{3.0, "ok"}, Case{3.5, "degraded"},
                         Case{30.0, "degraded"}, Case{31.0, "broken"}, Case{200.0, "broken"}}) {
     run["l2_error"] = c.factor * base_error;
-    const Verdict v = judge(s, run, {base, run});
+    const RunVerdict v = judge(s, run, {base, run});
     EXPECT_EQ(v.level, c.level) << s.baseline << " x" << c.factor << ": " << v.reason;
     if (std::string(c.level) != "ok") {
       EXPECT_NE(v.reason.find("baseline (" + s.baseline + ")"), std::string::npos) << v.reason;
@@ -320,7 +320,7 @@ TEST(ExtremesVerdict, ANearSingularFactorIsDegraded) {
   const Scene s = hand_sweep("none");
   json r = row("dg-al", 0.01);
   r["rcond"] = 1e-14;
-  Verdict v = judge(s, r, {r});
+  RunVerdict v = judge(s, r, {r});
   EXPECT_EQ(v.level, "degraded");
   EXPECT_NE(v.reason.find("rcond"), std::string::npos) << v.reason;
   r["rcond"] = 1e-12;  // at the threshold: not below it

@@ -20,7 +20,7 @@ namespace {
 
 constexpr int kMaxNodes = 64;  // cells with more vertices are rejected
 
-void check_options(const ElementOptions& o) {
+void check_element_options(const ElementOptions& o) {
   if (std::find(kFanRulePoints.begin(), kFanRulePoints.end(), o.rule_points) ==
       kFanRulePoints.end())
     throw InputError("quadrature rule with " + std::to_string(o.rule_points) +
@@ -73,7 +73,7 @@ std::span<const Eigen::Vector2d> cell_nodes(const PolygonMesh& mesh, int c,
 
 ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& options)
     : mesh_(mesh), options_(options) {
-  check_options(options);
+  check_element_options(options);
   check_star_shaped(mesh);
   if (options.family == ElementFamily::wachspress) check_convex(mesh);
   if (options.family == ElementFamily::rk)

@@ -32,11 +32,6 @@ struct Header {
   }
 };
 
-template <class T>
-void put(std::string& out, T x) {
-  out.append(reinterpret_cast<const char*>(&x), sizeof(T));
-}
-
 fs::path previous(const fs::path& file) {
   return file.string() + ".prev";
 }
@@ -66,11 +61,11 @@ void write_checkpoint(const fs::path& file, const CheckpointOwner& owner,
   StateArchive fields;
   header.archive(fields);
   std::string bytes(kMagic);
-  put(bytes, kCheckpointVersion);
-  put(bytes, static_cast<std::uint64_t>(fields.bytes().size()));
+  append_bytes(bytes, kCheckpointVersion);
+  append_bytes(bytes, static_cast<std::uint64_t>(fields.bytes().size()));
   bytes += fields.bytes();
   bytes += data.payload;
-  put(bytes, crc32_of(bytes));
+  append_bytes(bytes, crc32_of(bytes));
   std::error_code ec;
   if (fs::exists(file, ec)) fs::rename(file, previous(file), ec);
   write_file_atomically(file, bytes);

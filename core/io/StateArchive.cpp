@@ -3,15 +3,6 @@
 #include "core/util/Errors.hpp"
 
 namespace vorodg {
-namespace {
-
-template <class T>
-void put(std::string& out, T x) {
-  out.append(reinterpret_cast<const char*>(&x), sizeof(T));
-}
-
-}  // namespace
-
 void StateArchive::throw_mismatch(std::string_view name, const std::string& expected) {
   throw CheckpointError("state entry '" + std::string(name) + "': expected " + expected);
 }
@@ -24,9 +15,9 @@ void StateArchive::finish() const {
 
 std::size_t StateArchive::entry(std::string_view name, std::size_t bytes, std::size_t unit) {
   if (!loading_) {
-    put(bytes_, static_cast<std::uint16_t>(name.size()));
+    append_bytes(bytes_, static_cast<std::uint16_t>(name.size()));
     bytes_.append(name);
-    put(bytes_, static_cast<std::uint64_t>(bytes));
+    append_bytes(bytes_, static_cast<std::uint64_t>(bytes));
     return bytes;
   }
   auto take = [&](void* to, std::size_t n) {

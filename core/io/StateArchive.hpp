@@ -25,6 +25,12 @@
 
 namespace vorodg {
 
+/// Appends the bytes of `x` to `out` (the archive's entries and the checkpoint's header).
+template <class T>
+void append_bytes(std::string& out, T x) {
+  out.append(reinterpret_cast<const char*>(&x), sizeof(T));
+}
+
 template <class T>
 concept PlainBytes = std::is_trivially_destructible_v<T> && std::is_standard_layout_v<T>;
 

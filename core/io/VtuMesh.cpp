@@ -16,7 +16,6 @@
 namespace vorodg {
 namespace {
 
-constexpr int kVtkTriangle = 5, kVtkPolygon = 7, kVtkPixel = 8, kVtkQuad = 9;
 constexpr int kMaxComponents = 1024;
 constexpr std::string_view kAppendedClose = "</AppendedData>";
 
@@ -128,8 +127,8 @@ void read_cells(const VtuArrayDecoder& d, const pugi::xml_node& cells, long long
              std::to_string(conn.size()) + " connectivity entries");
     const long long t = types[c];
     const long long n = end - begin;
-    const bool ok = (t == kVtkPolygon && n >= 3) || (t == kVtkTriangle && n == 3) ||
-                    ((t == kVtkQuad || t == kVtkPixel) && n == 4);
+    const bool ok = (t == vtk_cell::polygon && n >= 3) || (t == vtk_cell::triangle && n == 3) ||
+                    ((t == vtk_cell::quad || t == vtk_cell::pixel) && n == 4);
     if (!ok)
       d.fail(cell + ": VTK cell type " + std::to_string(t) + " with " + std::to_string(n) +
              " vertices, expected a polygon (7), triangle (5), pixel (8) or quad (9)");
@@ -141,7 +140,7 @@ void read_cells(const VtuArrayDecoder& d, const pugi::xml_node& cells, long long
       out.connectivity.push_back(static_cast<int>(conn[k]));
     }
     // Pixels are numbered row by row; swap the last two for a counter-clockwise loop.
-    if (t == kVtkPixel) std::swap(out.connectivity[first + 2], out.connectivity[first + 3]);
+    if (t == vtk_cell::pixel) std::swap(out.connectivity[first + 2], out.connectivity[first + 3]);
     out.offsets.push_back(static_cast<int>(out.connectivity.size()));
     begin = end;
   }

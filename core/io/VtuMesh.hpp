@@ -12,6 +12,12 @@
 
 namespace vorodg {
 
+/// The VTK cell type codes vorodg writes (polygons) and reads (all four), as the VTK file format
+/// numbers them.
+namespace vtk_cell {
+inline constexpr int triangle = 5, polygon = 7, pixel = 8, quad = 9;
+}
+
 /// A named array written with a mesh: `components` values per point or per cell.
 struct VtuField {
   std::string name;

@@ -16,8 +16,6 @@
 namespace vorodg {
 namespace {
 
-constexpr char kVtkPolygon = 7;
-
 class TextBuilder {
  public:
   explicit TextBuilder(std::size_t reserve) { text_.reserve(reserve); }
@@ -123,7 +121,8 @@ void write_points(TextBuilder& out, const PolygonMesh& mesh, VtuEncoding encodin
 
 /// Connectivity, offsets and types. Binary: Int32 indices, which hold every index of a mesh.
 void write_cells_binary(TextBuilder& out, const PolygonMesh& mesh) {
-  std::string conn, offs, types(static_cast<std::size_t>(mesh.num_cells()), kVtkPolygon);
+  std::string conn, offs,
+      types(static_cast<std::size_t>(mesh.num_cells()), static_cast<char>(vtk_cell::polygon));
   conn.reserve(4 * mesh.cell_vertex_list().size());
   offs.reserve(4 * static_cast<std::size_t>(mesh.num_cells()));
   for (int v : mesh.cell_vertex_list()) put_le(conn, static_cast<std::int32_t>(v));

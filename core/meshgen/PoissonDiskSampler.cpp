@@ -245,7 +245,7 @@ std::vector<ActiveSquare> refine(const SampleGrid& grid, const std::vector<Activ
   return children;
 }
 
-void check_options(const Rectangle& domain, double d) {
+void check_sampler_options(const Rectangle& domain, double d) {
   if (!(d > 0.0) || !std::isfinite(d))
     throw InputError("minimum distance d = " + fmt(d) + ": expected a finite d > 0");
   if (d > domain.scale())
@@ -262,7 +262,7 @@ void check_options(const Rectangle& domain, double d) {
 
 PoissonDiskResult sample_poisson_disk(const Rectangle& domain, const PoissonDiskOptions& options) {
   const double d = options.min_distance;
-  check_options(domain, d);
+  check_sampler_options(domain, d);
   SampleGrid grid(domain, d);
   Random rng(options.seed);
   PoissonDiskResult result;
@@ -304,7 +304,7 @@ PoissonDiskResult sample_poisson_disk(const Rectangle& domain, const PoissonDisk
 }
 
 std::vector<Point> sample_boundary_points(const Rectangle& domain, double d, std::uint64_t seed) {
-  check_options(domain, d);
+  check_sampler_options(domain, d);
   Random rng(seed);
   std::vector<Point> points = {domain.lo(), Point(domain.x1(), domain.y0()), domain.hi(),
                                Point(domain.x0(), domain.y1())};

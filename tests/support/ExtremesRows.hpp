@@ -111,7 +111,7 @@ inline RunRecord record(const json& r) {
   return out;
 }
 
-inline Verdict judge(const Scene& sweep, const json& run, const std::vector<json>& runs) {
+inline RunVerdict judge(const Scene& sweep, const json& run, const std::vector<json>& runs) {
   std::vector<RunRecord> records;
   for (const json& r : runs) records.push_back(record(r));
   return judge_run(sweep, record(run), records);

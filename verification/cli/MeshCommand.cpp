@@ -62,8 +62,8 @@ void write_mesh_file(const MeshCommandOptions& o, GeneratedMesh& generated) {
 }
 
 /// The statistics file: the mesh's statistics, the spec, and what the generator reports.
-nlohmann::json stats_json(const MeshSpec& spec, const MeshStatistics& stats,
-                          const MeshGenReport& r) {
+nlohmann::json mesh_stats_json(const MeshSpec& spec, const MeshStatistics& stats,
+                               const MeshGenReport& r) {
   nlohmann::json json = to_json(stats);
   json["family"] = family_name(spec.family);
   json["domain"] = {spec.domain.x0(), spec.domain.y0(), spec.domain.x1(), spec.domain.y1()};
@@ -109,7 +109,7 @@ int run_mesh_command(const MeshCommandOptions& o, const CLI::App& command) {
   const MeshStatistics stats = compute_statistics(generated.mesh);
   if (!o.output.path.empty()) write_mesh_file(o, generated);
   const MeshGenReport& r = generated.report;
-  nlohmann::json json = stats_json(spec, stats, r);
+  nlohmann::json json = mesh_stats_json(spec, stats, r);
   json["seconds"]["total"] = total.seconds();
   if (!o.stats.empty()) write_json(o.stats, json);
 

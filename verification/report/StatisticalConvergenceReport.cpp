@@ -92,7 +92,7 @@ void add_levels(ConvergenceTable& t, const QuantityConvergence& q, bool with_nam
   }
 }
 
-std::string levels_table(const QuantityConvergence& q) {
+std::string statistical_levels_table(const QuantityConvergence& q) {
   ConvergenceTable t;
   add_levels(t, q, false);
   std::ostringstream out;
@@ -128,7 +128,7 @@ std::string statistical_convergence_md(const std::vector<QuantityConvergence>& q
       " (docs/statistics.md).\n";
   for (const QuantityConvergence& q : quantities) {
     const std::string title = q.mesh.empty() ? q.name : q.mesh + ": " + q.name;
-    md += "\n## " + title + "\n\n" + levels_table(q) + "\n";
+    md += "\n## " + title + "\n\n" + statistical_levels_table(q) + "\n";
     ConvergenceTable steps;
     add_steps(steps, q, false);
     std::ostringstream out;

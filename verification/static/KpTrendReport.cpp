@@ -36,7 +36,7 @@ bool rises_overall(const Reading& r) {
   return b.rate > a.rate + ci(a) + ci(b);
 }
 
-std::string rate_text(const RateFit& fit) {
+std::string kp_rate_text(const RateFit& fit) {
   return fmt(fit.rate, 3) + (fit.ci95 ? " ± " + fmt(*fit.ci95, 2) : "");
 }
 
@@ -82,7 +82,7 @@ void add_reading(ConvergenceTable& table, Reading& r, const Readings& all, Verdi
     const auto at = std::find_if(r.all.begin(), r.all.end(),
                                  [&](const GroupSummary* g) { return *g->kp == kp; });
     table.add_text("k_p " + fmt(kp), at == r.all.end() ? "-"
-                                     : (*at)->rate_l2  ? rate_text((*at)->rate_l2->fit)
+                                     : (*at)->rate_l2  ? kp_rate_text((*at)->rate_l2->fit)
                                                        : "no rate");
   }
   int failed = 0, diverged = 0, runs = 0;

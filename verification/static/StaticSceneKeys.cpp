@@ -23,7 +23,7 @@ std::vector<SceneKey> schema_keys(SettingScope scope, const std::string& prefix)
 }
 
 /// study, problems, domain: what a static scene is about.
-std::vector<SceneKey> study_keys() {
+std::vector<SceneKey> static_study_keys() {
   std::string kinds;
   for (const StudyKind& k : study_kinds()) kinds += (kinds.empty() ? "" : ", ") + k.name;
   const SettingSpec& problem = setting_spec("problem");
@@ -68,7 +68,7 @@ std::vector<SceneKey> report_keys() {
 }
 
 /// sweeps[]: the extremes study's axes, each a scene merged over the top level.
-std::vector<SceneKey> sweep_keys() {
+std::vector<SceneKey> static_sweep_keys() {
   const Scene d;  // a sweep is a Scene: its defaults
   return {
       key("sweeps[]", "list (required)", "", "a non-empty list of sweep objects",
@@ -91,9 +91,9 @@ std::vector<SceneKey> sweep_keys() {
   };
 }
 
-std::vector<SceneKey> make_keys(bool sweeps) {
+std::vector<SceneKey> make_static_keys(bool sweeps) {
   std::vector<SceneKey> keys = naming_keys();
-  append_keys(keys, study_keys());
+  append_keys(keys, static_study_keys());
   append_keys(keys, schema_keys(SettingScope::material, "material."));
   append_keys(keys, mesh_keys());
   keys.push_back(key("formulations[]", "list (required)", "",
@@ -103,19 +103,19 @@ std::vector<SceneKey> make_keys(bool sweeps) {
   append_keys(keys, schema_keys(SettingScope::formulation, "formulations[]."));
   append_keys(keys, schema_keys(SettingScope::outputs, "outputs."));
   append_keys(keys, report_keys());
-  if (sweeps) append_keys(keys, sweep_keys());
+  if (sweeps) append_keys(keys, static_sweep_keys());
   return keys;
 }
 
 }  // namespace
 
 const KeyTable& static_scene_table() {
-  static const KeyTable table{"static", make_keys(false), {}};
+  static const KeyTable table{"static", make_static_keys(false), {}};
   return table;
 }
 
 const KeyTable& extremes_scene_table() {
-  static const KeyTable table{"extremes", make_keys(true), {}};
+  static const KeyTable table{"extremes", make_static_keys(true), {}};
   return table;
 }
 

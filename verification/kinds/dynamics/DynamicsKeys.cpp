@@ -36,7 +36,7 @@ std::string contact_default(const std::function<std::string(const ContactDefault
 }
 
 /// The keys only one problem reads, each problem's rows in the problems' order.
-std::vector<SceneKey> problem_keys() {
+std::vector<SceneKey> dynamics_problem_keys() {
   std::vector<SceneKey> keys;
   for (const std::unique_ptr<DynamicsProblem>& p : dynamics_problems())
     append_keys(keys, p->keys());
@@ -44,7 +44,7 @@ std::vector<SceneKey> problem_keys() {
 }
 
 /// The study, the problem and the body it is about.
-std::vector<SceneKey> study_keys() {
+std::vector<SceneKey> dynamics_study_keys() {
   return {
       key("study", "string", "dynamics", "dynamics or fragmentation",
           "the study kind: fragmentation adds crack insertion and the cohesive keys "
@@ -256,9 +256,9 @@ std::vector<SceneKey> output_keys() {
   };
 }
 
-std::vector<SceneKey> make_keys() {
+std::vector<SceneKey> make_dynamics_keys() {
   std::vector<SceneKey> keys = naming_keys();
-  append_keys(keys, study_keys());
+  append_keys(keys, dynamics_study_keys());
   append_keys(keys, cohesive_keys({"3e8", "100", "10", "0",
                                    "dynamics needs an initially elastic law; its springs share "
                                    "the stable step",
@@ -286,7 +286,7 @@ std::vector<SceneKey> make_keys() {
           "exact gradient of the faces' energy, but it made column runs unstable "
           "(docs/impact.md, \"The ablation\")"));
   append_keys(keys, body_keys());
-  append_keys(keys, problem_keys());
+  append_keys(keys, dynamics_problem_keys());
   append_keys(keys, elastic_keys("2e11", "0.3"));
   append_keys(keys, material_keys());
   append_keys(keys, material_field_keys());
@@ -305,7 +305,7 @@ std::vector<SceneKey> make_keys() {
 }  // namespace
 
 const KeyTable& dynamics_scene_keys() {
-  static const KeyTable table{"dynamics", make_keys(), {}};
+  static const KeyTable table{"dynamics", make_dynamics_keys(), {}};
   return table;
 }
 

@@ -164,8 +164,8 @@ std::string report_md(const DynamicsScene& scene, const StudyRecords<DynamicsRec
   return md.str();
 }
 
-void write_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result,
-                   const fs::path& out) {
+void write_dynamics_reports(const DynamicsScene& scene, const StudyRecords<DynamicsRecord>& result,
+                            const fs::path& out) {
   const std::vector<RecordField<DynamicsRecord>> fields = dynamics_fields(scene);
   write_results_csv(out, fields, result.records);
   json settings = json::object();
@@ -217,7 +217,7 @@ StudyRecords<DynamicsRecord> run_dynamics_study(const DynamicsScene& scene, cons
                fmt(r.measures.energy_balance_error, 2) + ", " + fmt(r.seconds, 3) + " s" +
                (r.complete ? "" : " (incomplete: " + r.failure + ")");
       });
-  if (Ensemble::writes_reports()) write_reports(scene, result, out);
+  if (Ensemble::writes_reports()) write_dynamics_reports(scene, result, out);
   return result;
 }
 

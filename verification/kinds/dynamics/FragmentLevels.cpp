@@ -84,7 +84,7 @@ namespace {
 
 /// One table for levels.csv and the report: the report shows means with their spread and the
 /// KS distance with its p-value; the CSV has each number in a column of its own.
-ConvergenceTable levels_table(const std::vector<FragmentLevel>& levels) {
+ConvergenceTable fragment_levels_table(const std::vector<FragmentLevel>& levels) {
   ColumnStyle plain, csv_only, text_only;
   plain.csv_quoted = false;
   csv_only.in_text = false, csv_only.csv_precision = 10;
@@ -144,7 +144,7 @@ ConvergenceTable levels_table(const std::vector<FragmentLevel>& levels) {
 
 std::string fragment_levels_csv(const std::vector<FragmentLevel>& levels) {
   std::ostringstream csv;
-  levels_table(levels).write_csv(csv, {.quote_names = false});
+  fragment_levels_table(levels).write_csv(csv, {.quote_names = false});
   return csv.str();
 }
 
@@ -154,7 +154,7 @@ std::string fragment_levels_md(const std::vector<FragmentLevel>& levels) {
         "Kolmogorov-Smirnov distance between the pooled fragment mass fractions of a level and "
         "of the next coarser one, with its p-value (levels.csv; "
         "plots/largest_fragment_vs_h.png).\n\n";
-  levels_table(levels).write_markdown(md);
+  fragment_levels_table(levels).write_markdown(md);
   if (levels.size() < 2) return md.str();
   const KsResult& finest = *levels.back().against_coarser;
   md << "\nThe two finest levels' fragment mass distributions are "

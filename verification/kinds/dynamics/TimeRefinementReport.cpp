@@ -124,7 +124,7 @@ std::vector<Group> groups_of(const std::vector<RefinedPart>& parts) {
 }
 
 /// The (mesh block, level) pairs with a complete run in every step, in run order.
-std::vector<std::pair<int, int>> levels_of(const Group& g) {
+std::vector<std::pair<int, int>> mesh_levels_of(const Group& g) {
   std::vector<std::pair<int, int>> out;
   for (const DynamicsRecord& r : g.steps.front()->records)
     if (r.complete &&
@@ -269,7 +269,7 @@ void write_time_refinement_report(const DynamicsScene& top, const std::vector<Re
         "extrapolated to dt -> 0. Measures that are the same in every run are left out.\n";
   for (const Group& g : groups) {
     const std::string name = g.base.empty() ? top.name : g.base;
-    for (const auto& level : levels_of(g)) md << level_section(g, level, name, csv);
+    for (const auto& level : mesh_levels_of(g)) md << level_section(g, level, name, csv);
   }
   write_file_atomically(out / "time-refinement.md", md.str());
   write_file_atomically(out / "time-refinement.csv", csv_text(csv));

@@ -92,7 +92,7 @@ double axis_value(const Scene& sweep, const RunRecord& record) {
   return std::nan("");
 }
 
-Verdict judge_run(const Scene& sweep, const RunRecord& run, const std::vector<RunRecord>& runs) {
+RunVerdict judge_run(const Scene& sweep, const RunRecord& run, const std::vector<RunRecord>& runs) {
   if (!run.ok()) return {"broken", "breakdown: " + run.error};
   const RunMetrics& m = *run.metrics;
   const double e = m.l2_error;
@@ -118,11 +118,11 @@ Verdict judge_run(const Scene& sweep, const RunRecord& run, const std::vector<Ru
 
 namespace {
 
-using Worst = std::map<std::pair<std::string, std::string>, std::map<double, Verdict>>;
+using Worst = std::map<std::pair<std::string, std::string>, std::map<double, RunVerdict>>;
 
 std::string trust_table(const Worst& worst, json& trust) {
   ConvergenceTable t;
-  auto describe = [](double value, const Verdict& v) {
+  auto describe = [](double value, const RunVerdict& v) {
     return fmt(value, 8) + ": " + v.level + ", " + v.reason;
   };
   for (const auto& [key, by_value] : worst) {
@@ -193,7 +193,7 @@ ConvergenceTable extremes_table() {
 }
 
 /// One run's row of extremes.csv and its entry of extremes.json.
-void add_case(const Scene& sweep, const RunRecord& r, const Verdict& v, double value,
+void add_case(const Scene& sweep, const RunRecord& r, const RunVerdict& v, double value,
               ConvergenceTable& csv, json& cases) {
   const StudyRun& run = r.run;
   const auto& m = r.metrics;
@@ -242,12 +242,12 @@ int write_extremes_report(const Scene& scene, const std::vector<std::vector<RunR
   for (std::size_t s = 0; s < scene.sweeps.size(); ++s) {
     const Scene& sweep = *scene.sweeps[s];
     for (const RunRecord& r : results[s]) {
-      const Verdict v = judge_run(sweep, r, results[s]);
+      const RunVerdict v = judge_run(sweep, r, results[s]);
       const double value = axis_value(sweep, r);
       broken += v.level == "broken";
       add_case(sweep, r, v, value, csv, cases);
       if (!std::isfinite(value)) continue;  // no place on the axis (cg on the k_p axis)
-      Verdict& w = worst[{sweep.axis, r.run.formulation_label}][value];
+      RunVerdict& w = worst[{sweep.axis, r.run.formulation_label}][value];
       if (w.level.empty() || rank.at(v.level) > rank.at(w.level)) w = v;
     }
   }

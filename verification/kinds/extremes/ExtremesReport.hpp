@@ -20,13 +20,13 @@
 
 namespace vorodg {
 
-struct Verdict {
+struct RunVerdict {
   std::string level;   // ok | degraded | broken
   std::string reason;  // empty for ok
 };
 
 /// The verdict of one run of a sweep, given the sweep's other runs (for the baseline).
-Verdict judge_run(const Scene& sweep, const RunRecord& run, const std::vector<RunRecord>& runs);
+RunVerdict judge_run(const Scene& sweep, const RunRecord& run, const std::vector<RunRecord>& runs);
 
 /// The value of the sweep's axis for a run (nu, k_p, L/D, r, regularization threshold, h_avg).
 double axis_value(const Scene& sweep, const RunRecord& run);

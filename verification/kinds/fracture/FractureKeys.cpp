@@ -15,7 +15,7 @@ namespace vorodg {
 namespace {
 
 /// The study, the problem and its geometry.
-std::vector<SceneKey> problem_keys() {
+std::vector<SceneKey> fracture_problem_keys() {
   return {
       key("study", "string", "fracture", "fracture", "the study kind"),
       key("label", "string", "\"\"", "any", "a variant's name and subfolder (variants[] only)"),
@@ -67,7 +67,7 @@ std::vector<SceneKey> loading_keys() {
 }
 
 /// The outputs and the variants.
-std::vector<SceneKey> study_keys() {
+std::vector<SceneKey> fracture_study_keys() {
   return {
       bounded("outputs.vtu_every", "integer", "10", "0 <= vtu_every <= 1e9",
               "write the deformed mesh every this many points (0: never)", 0.0, false, 1e9),
@@ -75,9 +75,9 @@ std::vector<SceneKey> study_keys() {
   };
 }
 
-std::vector<SceneKey> make_keys() {
+std::vector<SceneKey> make_fracture_keys() {
   std::vector<SceneKey> keys = naming_keys();
-  append_keys(keys, problem_keys());
+  append_keys(keys, fracture_problem_keys());
   append_keys(keys, element_keys());
   append_keys(keys, elastic_keys("3e10", "0.2"));
   append_keys(keys, {bounded("material.thickness", "number", "1", "0 < thickness <= 1000",
@@ -87,7 +87,7 @@ std::vector<SceneKey> make_keys() {
   append_keys(keys, cracking_keys());
   append_keys(keys, loading_keys());
   append_keys(keys, mesh_keys());
-  append_keys(keys, study_keys());
+  append_keys(keys, fracture_study_keys());
   append_keys(keys, checkpoint_keys());
   append_keys(keys, statistics_keys());
   return keys;
@@ -97,7 +97,7 @@ std::vector<SceneKey> make_keys() {
 
 const KeyTable& fracture_scene_keys() {
   static const KeyTable table{"fracture",
-                              make_keys(),
+                              make_fracture_keys(),
                               {{"cohesive.cohesion", "criterion.cohesion"},
                                {"cohesive.friction", "criterion.friction"},
                                {"cohesive.tensile_cutoff", "criterion.tensile_cutoff"}}};

@@ -81,7 +81,7 @@ std::vector<LevelStats> by_level(const std::vector<FractureRecord>& records) {
   return levels;
 }
 
-json stats_json(const std::vector<double>& v) {
+json sample_json(const std::vector<double>& v) {
   const SampleStatistics s = sample_statistics(v);
   json j = {{"mean", s.mean}, {"min", s.min}, {"max", s.max}, {"values", v}};
   if (s.std_dev) j["std_dev"] = *s.std_dev;
@@ -132,9 +132,9 @@ json level_statistics(const std::vector<LevelStats>& levels, ConvergenceTable& t
     json j = {{"mesh", l.mesh},
               {"level", l.level},
               {"h_avg", l.h_avg},
-              {"peak_load", stats_json(l.peak)},
-              {"dissipated_energy", stats_json(l.dissipated)},
-              {"crack_length", stats_json(l.crack)}};
+              {"peak_load", sample_json(l.peak)},
+              {"dissipated_energy", sample_json(l.dissipated)},
+              {"crack_length", sample_json(l.crack)}};
     std::string ks_text = "-";
     if (i > 0 && levels[i - 1].mesh == l.mesh) {
       j["ks_to_previous"] = ks_to_previous(l, levels[i - 1]);
@@ -179,8 +179,8 @@ std::string worst_errors(const std::vector<FractureRecord>& records, json& summa
   return md.str();
 }
 
-void write_reports(const FractureScene& scene, const StudyRecords<FractureRecord>& result,
-                   const fs::path& out) {
+void write_fracture_reports(const FractureScene& scene, const StudyRecords<FractureRecord>& result,
+                            const fs::path& out) {
   write_results_csv(out, fracture_fields(), result.records);
 
   const std::string problem = scene.geometry.problem->name();
@@ -238,7 +238,7 @@ StudyRecords<FractureRecord> run_fracture_study(const FractureScene& scene, cons
                (r.complete ? "" : " (incomplete: " + r.failure + ")") +
                (r.ended.empty() ? "" : " (ended: " + r.ended + ")");
       });
-  if (Ensemble::writes_reports()) write_reports(scene, result, out);
+  if (Ensemble::writes_reports()) write_fracture_reports(scene, result, out);
   return result;
 }
 

@@ -61,9 +61,9 @@ std::vector<std::string> exclusions(const GroupSummary& g, const Scene& scene) {
 }
 
 /// Per level of the group: the summary's means and the runs' median and range of seconds.
-std::vector<TradeoffLevel> levels_of(const GroupSummary& g,
-                                     const std::vector<const RunRecord*>& runs,
-                                     double min_seconds) {
+std::vector<TradeoffLevel> tradeoff_levels_of(const GroupSummary& g,
+                                              const std::vector<const RunRecord*>& runs,
+                                              double min_seconds) {
   std::vector<TradeoffLevel> out;
   for (const LevelSummary& lv : g.levels) {
     if (!lv.l2) continue;
@@ -150,7 +150,7 @@ TradeoffAnalysis analyse_tradeoff(const Scene& scene, const StudySummary& summar
     TradeoffConfig c;
     c.variant = g.variant;
     c.group = &g;
-    c.levels = levels_of(g, by_group[g.key], scene.tradeoff.min_seconds);
+    c.levels = tradeoff_levels_of(g, by_group[g.key], scene.tradeoff.min_seconds);
     c.exclusions = exclusions(g, scene);
     fit_lines(c);
     if (!c.cost_fit) {

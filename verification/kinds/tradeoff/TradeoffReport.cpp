@@ -19,7 +19,7 @@ std::string scientific(double x) {
   return os.str();
 }
 
-std::string rate_text(const std::optional<RateSummary>& r) {
+std::string tradeoff_rate_text(const std::optional<RateSummary>& r) {
   return r ? fmt(r->fit.rate, 3) : "-";
 }
 
@@ -57,8 +57,8 @@ void write_admission(const TradeoffAnalysis& a, const TradeoffSettings& s, std::
   for (const TradeoffConfig& c : a.configs) {
     const auto& pair = c.group->rate_l2;
     add_row(t, {{"configuration", c.variant},
-                {"L2 rate", rate_text(c.group->rate_l2)},
-                {"energy rate", rate_text(c.group->rate_energy)},
+                {"L2 rate", tradeoff_rate_text(c.group->rate_l2)},
+                {"energy rate", tradeoff_rate_text(c.group->rate_energy)},
                 {"lowest L2 pair rate", pair && pair->pair_min ? fmt(*pair->pair_min, 3) : "-"},
                 {"verdict", c.admitted() ? "admitted" : "**excluded**"}});
   }
@@ -208,7 +208,7 @@ void write_knob_table(const TradeoffAnalysis& a, std::ostringstream& md) {
   md << markdown(t) << "\n";
 }
 
-json level_json(const TradeoffConfig& c, const TradeoffLevel& lv) {
+json tradeoff_level_json(const TradeoffConfig& c, const TradeoffLevel& lv) {
   return {{"variant", c.variant},
           {"level", lv.level},
           {"size", lv.size},
@@ -236,9 +236,10 @@ json tradeoff_json(const TradeoffAnalysis& a, const std::optional<TradeoffCheck>
                         {"intercept", c.cost_fit->intercept},
                         {"seconds_per_dof", *c.seconds_per_dof}};
     data["configs"].push_back(j);
-    for (const TradeoffLevel& lv : c.levels) data["points"].push_back(level_json(c, lv));
+    for (const TradeoffLevel& lv : c.levels) data["points"].push_back(tradeoff_level_json(c, lv));
   }
-  for (const TradeoffPoint& p : a.front) data["pareto"].push_back(level_json(*p.config, *p.level));
+  for (const TradeoffPoint& p : a.front)
+    data["pareto"].push_back(tradeoff_level_json(*p.config, *p.level));
   for (const TradeoffTarget& t : a.targets) {
     json j = {{"error", t.error}};
     if (t.config)

@@ -6,8 +6,12 @@ JOBS ?= $(shell nproc)
 bootstrap:
 	scripts/bootstrap --no-build
 
+# Ninja (bootstrap installs it) compiles a library's sources while the libraries below it are
+# still building, so both cores stay busy; a build/ made before keeps its generator.
+GENERATOR := $(if $(wildcard build/CMakeCache.txt),,-G Ninja)
+
 configure: bootstrap
-	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake -S . -B build $(GENERATOR) -DCMAKE_BUILD_TYPE=Release >/dev/null
 
 # Everything: the library, the program, the tests, the benchmarks and the fuzz replays.
 build: configure

@@ -28,7 +28,14 @@ std::string single_pair(const QuantityConvergence& q) {
 }
 
 std::string range(const Interval& i) {
-  return "[" + fmt(i.low, 3) + ", " + fmt(i.high, 3) + "]";
+  // Appended piece by piece: GCC 12 warns falsely (-Wstringop-overflow) on "[" + std::string&&
+  // once this is inlined into a unity batch.
+  std::string out = "[";
+  out += fmt(i.low, 3);
+  out += ", ";
+  out += fmt(i.high, 3);
+  out += "]";
+  return out;
 }
 
 /// The order at which a difference d fell from step k - 1 to step k (h of their coarse levels).

@@ -1,0 +1,2 @@
+// The target that owns the libraries' shared precompiled header (CMakeLists.txt,
+// vorodg_shared_headers) needs one source of its own.

@@ -9,8 +9,9 @@ run happened, and so differ between any two runs of the same program:
   - pictures (.png) are only checked to exist;
   - run.json (the scene's absolute path) and timings.json (wall-clock seconds per stage)
     are skipped, and so are a shard's own results files (results.shard-K-of-N.jsonl);
-  - timing and memory values are masked: JSON keys and CSV columns named "*seconds*" or
-    "*memory*", and in report.md a number followed by " s".
+  - timing and memory values are masked: JSON keys and CSV columns named "*seconds*",
+    "*memory*" or "*core_hours*" (or "core-hours"), markdown table columns headed by a run time, seconds, wall
+    or core-hours, and in the .md reports a number followed by " s".
 Prints one line per difference and exits 1 if there is any, 0 otherwise.
 """
 import csv
@@ -22,7 +23,7 @@ import sys
 
 
 def is_timing(name):
-    return "seconds" in name or "memory" in name
+    return any(w in name for w in ("seconds", "memory", "core_hours", "core-hours"))
 
 
 def mask_json(value):
@@ -66,7 +67,7 @@ def masked_markdown(text):
 
 def is_timing_header(cell):
     cell = cell.lower()
-    return "run time" in cell or "seconds" in cell or "wall" in cell
+    return "run time" in cell or "seconds" in cell or "wall" in cell or "core-hours" in cell
 
 
 def comparable(path, data):

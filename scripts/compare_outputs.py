@@ -9,9 +9,9 @@ run happened, and so differ between any two runs of the same program:
   - pictures (.png) are only checked to exist;
   - run.json (the scene's absolute path) and timings.json (wall-clock seconds per stage)
     are skipped, and so are a shard's own results files (results.shard-K-of-N.jsonl);
-  - timing and memory values are masked: JSON keys and CSV columns named "*seconds*",
-    "*memory*" or "*core_hours*" (or "core-hours"), markdown table columns headed by a run time, seconds, wall
-    or core-hours, and in the .md reports a number followed by " s".
+  - timing and memory values are masked: JSON keys and CSV columns whose names hold
+    "seconds", "memory", "core_hours" or "core-hours"; markdown table columns headed by a run
+    time, seconds, wall or core-hours; and in the .md reports a number followed by " s".
 Prints one line per difference and exits 1 if there is any, 0 otherwise.
 """
 import csv

@@ -39,6 +39,12 @@ std::vector<char> CohesiveFracture::crack_capable() const {
   return capable;
 }
 
+void CohesiveFracture::set_edge_strength(std::vector<double> factor) {
+  if (interfaces_)
+    throw InputError("cohesive fracture: the strength may vary only before setup_system");
+  edge_strength_ = std::move(factor);
+}
+
 void CohesiveFracture::setup_system() {
   Stopwatch clock;
   const PolygonMesh& mesh = table_.mesh();
@@ -59,6 +65,7 @@ void CohesiveFracture::setup_system() {
       coupling_.weighted_average, interface_traction(coupling_), threads_);
   interfaces_ = std::make_unique<CohesiveInterfaces>(
       *ops_, *penalty_, interface_traction(coupling_), law_, criterion_);
+  interfaces_->set_edge_strength(edge_strength_);
   initial_points_.assign(interfaces_->num_points(), InterfacePoint{});
   for (int p = 0; p < interfaces_->num_points(); ++p) {
     const int e = interfaces_->face(p).edge;
@@ -194,13 +201,12 @@ std::vector<int> CohesiveFracture::eligible_points(
 std::vector<CrackedFace> CohesiveFracture::cracked_faces(
     const std::vector<InterfacePoint>& points) const {
   std::vector<CrackedFace> faces;
-  const CohesiveLaw& law = interfaces_->law();
   for (int p = 0; p + 1 < static_cast<int>(points.size()); p += 2) {
     const Interface& f = interfaces_->face(p);
     if (setup_.notch[f.edge]) continue;
     bool cracked = false, open = true;
     for (int q = p; q < p + 2; ++q) {
-      cracked |= law.dissipated_energy(points[q].history.max_opening) > 0.0;
+      cracked |= interfaces_->law(q).dissipated_energy(points[q].history.max_opening) > 0.0;
       open &= points[q].state == PointState::open;
     }
     if (cracked) faces.push_back({f.a, f.b, open});

@@ -53,6 +53,10 @@ class CohesiveFracture {
                    const MohrCoulombParameters& criterion, const DgOptions& coupling,
                    int threads = 1);
 
+  /// A strength varying from edge to edge (MaterialVariation::edge_strength: one factor per
+  /// mesh edge) for the crack faces' law and criterion; the bulk stays uniform. Call before
+  /// setup_system.
+  void set_edge_strength(std::vector<double> factor);
   void setup_system();
 
   int num_dofs() const { return space_->num_dofs(); }
@@ -108,6 +112,7 @@ class CohesiveFracture {
   Eigen::SparseMatrix<double> bulk_;  // all DOFs, in the pattern
   Eigen::SparseMatrix<double> base_;  // bulk + every interface coupled as if intact
   std::vector<InterfacePoint> initial_points_;
+  std::vector<double> edge_strength_;  // per mesh edge; empty: uniform
   Eigen::VectorXd gauge_;
   StageTimes seconds_;
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/quadrature/TriangleRule.hpp"
+#include "core/util/Errors.hpp"
 #include "dg/SeriesShearLaw.hpp"
 #include "fracture/FaceInsertion.hpp"
 #include "fracture/FacePoint.hpp"
@@ -46,6 +47,20 @@ CohesiveInterfaces::CohesiveInterfaces(const InterfaceOperators& ops,
   }
 }
 
+void CohesiveInterfaces::set_edge_strength(const std::vector<double>& factor) {
+  face_laws_.clear(), face_strength_.clear();
+  if (factor.empty()) return;
+  const auto& faces = ops_.space().interfaces();
+  const int edges = ops_.space().mesh().num_edges();
+  if (static_cast<int>(factor.size()) != edges)
+    throw InputError("cohesive interfaces: " + std::to_string(factor.size()) +
+                     " edge strengths, expected one per mesh edge (" + std::to_string(edges) + ")");
+  for (const Interface& f : faces) {
+    face_strength_.push_back(factor[f.edge]);
+    face_laws_.push_back(law_.with_strength_factor(factor[f.edge]));
+  }
+}
+
 double CohesiveInterfaces::weight(int p) const {
   return gauss2_segment().weights[p % 2] * face(p).length;
 }
@@ -75,14 +90,16 @@ Eigen::Vector2d CohesiveInterfaces::flux_traction(const Eigen::VectorXd& u, int 
 }
 
 double CohesiveInterfaces::utilization(const Eigen::VectorXd& u, int p) const {
-  return face_utilization(criterion_, flux_traction(u, p));
+  const double strength = face_strength_.empty() ? 1.0 : face_strength_[p / 2];
+  return face_utilization(criterion_, flux_traction(u, p), strength);
 }
 
-void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, InterfacePoint& point,
-                                      Eigen::Vector2d& tau, Eigen::Matrix2d& C) const {
+void CohesiveInterfaces::cohesive_law(const CohesiveLaw& law, double eps, const Eigen::Vector2d& g,
+                                      InterfacePoint& point, Eigen::Vector2d& tau,
+                                      Eigen::Matrix2d& C) const {
   const Eigen::Vector2d d = g - point.offset;
-  const bool fresh = !law_.intrinsic() && point.history.max_opening == 0.0;
-  const double beta = law_.parameters().shear_factor, strength = law_.parameters().strength;
+  const bool fresh = !law.intrinsic() && point.history.max_opening == 0.0;
+  const double beta = law.parameters().shear_factor, strength = law.parameters().strength;
   const double shear = eps * d[1];  // the sticking branch's shear traction
   if (fresh && d[0] <= 0.0 && (std::abs(shear) < beta * strength || d[1] == 0.0)) {
     // Inserted but not yet opened: the face sticks, stiff as the coupling. Its normal traction
@@ -94,24 +111,24 @@ void CohesiveInterfaces::cohesive_law(double eps, const Eigen::Vector2d& g, Inte
     // softening slope: the face fails because it is being loaded, so Newton should see it open,
     // not stick (with eps there it predicts no opening, then overshoots onto the softening
     // branch, and cycles).
-    const double sn = sticking_strength(law_, eps, d[1]);
+    const double sn = sticking_strength(law, eps, d[1]);
     const double k = beta > 0.0 ? eps * eps / (beta * beta) : 0.0;  // d(r^2)/d(g_t^2)
     const double ds = -k * d[1] / sn, dds = -k * strength * strength / (sn * sn * sn);
     tau = Eigen::Vector2d(sn + eps * d[0], ds * d[0] + shear);
     C << eps, ds, ds, eps + dds * d[0];
-    if (d[0] == 0.0 && d[1] == 0.0) C(0, 0) = law_.envelope_slope(0.0);
+    if (d[0] == 0.0 && d[1] == 0.0) C(0, 0) = law.envelope_slope(0.0);
     return;
   }
-  if (law_.intrinsic()) {  // its secant never exceeds K0: the law alone
-    const auto r = law_.respond(d, point.history);
+  if (law.intrinsic()) {  // its secant never exceeds K0: the law alone
+    const auto r = law.respond(d, point.history);
     tau = r.traction;
     C = r.tangent;
   } else {  // sliding in series with the coupling's spring eps (dg/SeriesShearLaw)
-    const SeriesShearResponse r = series_shear_respond(law_, eps, d, point.history);
+    const SeriesShearResponse r = series_shear_respond(law, eps, d, point.history);
     tau = r.traction;
     C = r.tangent;
   }
-  if (law_.envelope(point.history.max_opening) == 0.0 && point.history.max_opening > 0.0)
+  if (law.envelope(point.history.max_opening) == 0.0 && point.history.max_opening > 0.0)
     point.state = PointState::open;  // fully softened: nothing left to carry
 }
 
@@ -119,7 +136,8 @@ void CohesiveInterfaces::face_law(int p, const Eigen::Vector2d& g, InterfacePoin
                                   Eigen::Vector2d& tau, Eigen::Matrix2d& C) const {
   const double eps = penalty_.eps(p / 2);
   FacePointResponse r;
-  if (point.state == PointState::cohesive) cohesive_law(eps, g, point, r.traction, r.tangent);
+  if (point.state == PointState::cohesive)
+    cohesive_law(law(p), eps, g, point, r.traction, r.tangent);
   if (point.state == PointState::open)
     r.tangent += kOpenTangentFraction * eps * Eigen::Matrix2d::Identity();
   add_closure(eps, g[0], r);  // overclosure: the contact penalty
@@ -184,27 +202,28 @@ InterfaceEnergies CohesiveInterfaces::energies(const Eigen::VectorXd& u,
       continue;
     }
     const Eigen::Vector2d g = opening(u, p);
+    const CohesiveLaw& law_p = law(p);
     const double dmax = points[p].history.max_opening;
-    if (law_.dissipated_energy(dmax) > 0.0) e.crack_length += w;
+    if (law_p.dissipated_energy(dmax) > 0.0) e.crack_length += w;
     const Eigen::Vector2d d = g - points[p].offset;
     const double closure = closure_energy(eps, g[0]);
-    if (points[p].state == PointState::cohesive && !law_.intrinsic() && dmax == 0.0) {
+    if (points[p].state == PointState::cohesive && !law_p.intrinsic() && dmax == 0.0) {
       // Inserted, not yet opened: the sticking branch's potential (see cohesive_law).
       const double dn = std::min(d[0], 0.0);
-      e.cohesive += w * (sticking_strength(law_, eps, d[1]) * dn +
+      e.cohesive += w * (sticking_strength(law_p, eps, d[1]) * dn +
                          0.5 * eps * (dn * dn + d[1] * d[1]) + closure);
       continue;
     }
     if (points[p].state == PointState::open) {  // traction-free: only contact stores energy
       e.cohesive += w * closure;
-      e.dissipated += w * law_.dissipated_energy(dmax);
+      e.dissipated += w * law_p.dissipated_energy(dmax);
       continue;
     }
-    const double stored = law_.intrinsic()
-                              ? law_.stored_energy(d, points[p].history)
-                              : series_shear_stored_energy(law_, eps, d, points[p].history);
+    const double stored = law_p.intrinsic()
+                              ? law_p.stored_energy(d, points[p].history)
+                              : series_shear_stored_energy(law_p, eps, d, points[p].history);
     e.cohesive += w * (stored + closure);
-    e.dissipated += w * law_.dissipated_energy(dmax);
+    e.dissipated += w * law_p.dissipated_energy(dmax);
   }
   return e;
 }

@@ -73,7 +73,16 @@ class CohesiveInterfaces {
   const Interface& face(int p) const { return ops_.space().interfaces()[p / 2]; }
   /// Quadrature weight (length included) of point p.
   double weight(int p) const;
+  /// The scene's law (the nominal strength and fracture energy: the path's scales).
   const CohesiveLaw& law() const { return law_; }
+  /// The law at point p: the scene's, or its face's when the strength varies.
+  const CohesiveLaw& law(int p) const {
+    return face_laws_.empty() ? law_ : face_laws_[static_cast<std::size_t>(p / 2)];
+  }
+  /// A strength varying from edge to edge (MaterialVariation::edge_strength, one factor per mesh
+  /// edge): face i's law has factor x sigma_c (G, beta and K0 unchanged), and its criterion's
+  /// cohesion and cutoff scale by the factor. An empty vector restores the uniform strength.
+  void set_edge_strength(const std::vector<double>& factor);
 
  private:
   Eigen::VectorXd local(const Eigen::VectorXd& u, int i) const;
@@ -86,13 +95,15 @@ class CohesiveInterfaces {
   void face_law(int p, const Eigen::Vector2d& g, InterfacePoint& point, Eigen::Vector2d& tau,
                 Eigen::Matrix2d& C) const;
   /// The cohesive law's part of face_law, on the opening beyond the point's offset.
-  void cohesive_law(double eps, const Eigen::Vector2d& g, InterfacePoint& point,
-                    Eigen::Vector2d& tau, Eigen::Matrix2d& C) const;
+  void cohesive_law(const CohesiveLaw& law, double eps, const Eigen::Vector2d& g,
+                    InterfacePoint& point, Eigen::Vector2d& tau, Eigen::Matrix2d& C) const;
 
   const InterfaceOperators& ops_;
   const InterfacePenalty& penalty_;
   const CohesiveLaw& law_;
   const MohrCoulomb& criterion_;
+  std::vector<CohesiveLaw> face_laws_;       // per interface when the strength varies
+  std::vector<double> face_strength_;        // per interface when the strength varies
   std::vector<std::vector<int>> dofs_;       // per interface
   std::vector<InterfaceOperator> traction_;  // per point: {sigma}_w n
 };

@@ -206,18 +206,21 @@ double QuasiStaticPath::line_search(const State& start, const State& at, const E
 /// is linear until then, with the effective opening sigma_c / K0 at the peak. The probe's own
 /// lambda if nothing opens (no point is cohesive).
 double QuasiStaticPath::first_peak(const State& probe, double lambda_probe) const {
-  const CohesiveLaw& law = model_.interfaces().law();
+  const CohesiveInterfaces& faces = model_.interfaces();
+  if (!(faces.law().parameters().initial_stiffness > 0.0)) return lambda_probe;
   const Eigen::VectorXd u = full(probe);
-  double widest = 0.0;
-  for (int p = 0; p < model_.interfaces().num_points(); ++p) {
+  double nearest = 0.0;  // the largest effective opening over the point's peak opening
+  for (int p = 0; p < faces.num_points(); ++p) {
     if (probe.points[p].state != PointState::cohesive) continue;
+    const CohesiveLaw& law = faces.law(p);
     CohesiveLaw::State scratch = probe.points[p].history;  // the law's effective opening only
-    const Eigen::Vector2d g = model_.interfaces().opening(u, p) - probe.points[p].offset;
-    widest = std::max(widest, law.respond(g, scratch).effective_opening);
+    const Eigen::Vector2d g = faces.opening(u, p) - probe.points[p].offset;
+    const CohesiveParameters& c = law.parameters();
+    const double peak_opening = c.strength / c.initial_stiffness;
+    nearest = std::max(nearest, law.respond(g, scratch).effective_opening / peak_opening);
   }
-  const CohesiveParameters& c = law.parameters();
-  if (!(widest > 0.0) || !(c.initial_stiffness > 0.0)) return lambda_probe;
-  return lambda_probe * (c.strength / c.initial_stiffness) / widest;
+  if (!(nearest > 0.0)) return lambda_probe;
+  return lambda_probe / nearest;
 }
 
 /// The energy released from `start` to `at` when every unloading is secant (Clapeyron: the

@@ -42,11 +42,13 @@ double QuasiStaticPath::max_utilization(const State& s, const Eigen::VectorXd& u
 }
 
 bool QuasiStaticPath::softened(const State& s) const {
-  const CohesiveLaw& law = model_.interfaces().law();
-  for (const InterfacePoint& p : s.points)
-    if ((p.state == PointState::cohesive && !law.intrinsic()) ||
-        law.dissipated_energy(p.history.max_opening) > 0.0)
+  const CohesiveInterfaces& faces = model_.interfaces();
+  for (int p = 0; p < static_cast<int>(s.points.size()); ++p) {
+    const InterfacePoint& point = s.points[p];
+    if ((point.state == PointState::cohesive && !faces.law(p).intrinsic()) ||
+        faces.law(p).dissipated_energy(point.history.max_opening) > 0.0)
       return true;
+  }
   return false;
 }
 

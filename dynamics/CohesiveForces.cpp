@@ -82,10 +82,8 @@ void CohesiveForces::set_friction(double mu) {
   friction_ = mu;
 }
 
-CohesiveParameters CohesiveForces::edge_parameters(int e) const {
-  CohesiveParameters p = law_.parameters();
-  p.strength *= edge_strength_[e];
-  return p;
+CohesiveLaw CohesiveForces::edge_law(int e) const {
+  return law_.with_strength_factor(edge_strength_[e]);
 }
 
 void CohesiveForces::add_edge(int e) {
@@ -94,7 +92,7 @@ void CohesiveForces::add_edge(int e) {
     throw InputError("cohesive forces: edge " + std::to_string(e) + " is already cracked");
   if (!edge_strength_.empty()) {
     try {
-      face_laws_.emplace_back(edge_parameters(e));
+      face_laws_.push_back(edge_law(e));
     } catch (const InputError& error) {
       throw InputError("cohesive forces: edge " + std::to_string(e) + " with strength x " +
                        std::to_string(edge_strength_[e]) + ": " + error.what());
@@ -345,7 +343,7 @@ void CohesiveForces::archive(StateArchive& a) {
   a.vector("cohesive.released", released_);
   if (a.loading() && !edge_strength_.empty()) {  // each face's law follows from its edge
     face_laws_.clear();
-    for (const Face& f : faces_) face_laws_.emplace_back(edge_parameters(f.edge));
+    for (const Face& f : faces_) face_laws_.push_back(edge_law(f.edge));
   }
   a.value("cohesive.work", work_);
   a.value("cohesive.continuation_energy", continuation_energy_);

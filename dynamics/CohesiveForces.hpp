@@ -253,8 +253,8 @@ class CohesiveForces {
   }
   /// The nodes of face f's ends on both sides.
   void bind_face(const SplitDofMap& dofs, Face& f) const;
-  /// The law's parameters with edge e's strength (a varying strength).
-  CohesiveParameters edge_parameters(int e) const;
+  /// The law with edge e's strength (a varying strength).
+  CohesiveLaw edge_law(int e) const;
 
   const PolygonMesh& mesh_;
   const CohesiveLaw& law_;

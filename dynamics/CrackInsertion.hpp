@@ -18,8 +18,8 @@
 #include "core/dofs/SplitDofMap.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/mesh/PolygonMesh.hpp"
+#include "core/random/MaterialVariation.hpp"
 #include "dynamics/CorotationalFrames.hpp"
-#include "dynamics/MaterialVariation.hpp"
 #include "fracture/MohrCoulomb.hpp"
 
 namespace vorodg {

@@ -14,6 +14,7 @@
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
+#include "core/random/MaterialVariation.hpp"
 #include "dynamics/BodiesMesh.hpp"
 #include "dynamics/BulkViscosity.hpp"
 #include "dynamics/CentralDifference.hpp"
@@ -23,7 +24,6 @@
 #include "dynamics/Fragmentation.hpp"
 #include "dynamics/InterfaceCoupling.hpp"
 #include "dynamics/LumpedMass.hpp"
-#include "dynamics/MaterialVariation.hpp"
 
 namespace vorodg {
 

@@ -10,11 +10,11 @@
 
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/io/VtuMesh.hpp"
+#include "core/random/MaterialVariation.hpp"
 #include "dynamics/DynamicFracture.hpp"
 #include "dynamics/ExplicitLoading.hpp"
 #include "dynamics/ExplicitParameters.hpp"
 #include "dynamics/GlobalTimeStep.hpp"
-#include "dynamics/MaterialVariation.hpp"
 #include "dynamics/StableTimeStep.hpp"
 #include "fracture/Fragments.hpp"
 

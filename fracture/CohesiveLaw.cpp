@@ -29,6 +29,12 @@ CohesiveLaw::CohesiveLaw(const CohesiveParameters& parameters) : p_(parameters) 
                       "large enough that the peak comes before the critical opening");
 }
 
+CohesiveLaw CohesiveLaw::with_strength_factor(double factor) const {
+  CohesiveParameters scaled = p_;
+  scaled.strength *= factor;
+  return CohesiveLaw(scaled);
+}
+
 double CohesiveLaw::critical_opening() const {
   return knots_.back().x();
 }

@@ -38,6 +38,10 @@ class CohesiveLaw {
   explicit CohesiveLaw(const CohesiveParameters& parameters);
 
   const CohesiveParameters& parameters() const { return p_; }
+  /// The law of a face whose strength is `factor` times this one's (a material varying in
+  /// space): sigma_c scaled; G, beta and K0 unchanged, so delta_c scales by 1 / factor.
+  /// Throws InputError as the constructor does for the scaled strength.
+  CohesiveLaw with_strength_factor(double factor) const;
   /// delta_c: the effective opening at which the traction vanishes for good.
   double critical_opening() const;
   bool intrinsic() const { return p_.initial_stiffness > 0.0; }

@@ -15,9 +15,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/random/MaterialVariation.hpp"
 #include "core/util/Random.hpp"
 #include "dynamics/CrackInsertion.hpp"
-#include "dynamics/MaterialVariation.hpp"
 #include "fracture/FaceInsertion.hpp"
 #include "fracture/MohrCoulomb.hpp"
 #include "support/DynamicsModel.hpp"

@@ -16,7 +16,7 @@
 #include "core/meshgen/MeshFamily.hpp"
 #include "core/random/CirculantEmbedding.hpp"
 #include "core/random/GaussianRandomField.hpp"
-#include "dynamics/MaterialVariation.hpp"
+#include "core/random/MaterialVariation.hpp"
 
 namespace vorodg {
 namespace {

@@ -11,10 +11,10 @@
 //     and an edge of another factor carries its own law's traction at the same opening.
 #include <gtest/gtest.h>
 
+#include "core/random/MaterialVariation.hpp"
 #include "core/util/Errors.hpp"
 #include "dynamics/CohesiveForces.hpp"
 #include "dynamics/CrackInsertion.hpp"
-#include "dynamics/MaterialVariation.hpp"
 #include "support/DynamicsModel.hpp"
 
 namespace vorodg {

@@ -10,6 +10,7 @@
 #include "verification/harness/CommonKeys.hpp"
 #include "verification/harness/StatisticalReport.hpp"
 #include "verification/model/ElementKeys.hpp"
+#include "verification/model/MaterialFieldKeys.hpp"
 
 namespace vorodg {
 namespace {
@@ -83,6 +84,7 @@ std::vector<SceneKey> make_fracture_keys() {
   append_keys(keys, {bounded("material.thickness", "number", "1", "0 < thickness <= 1000",
                              "out of plane, m: loads in newtons and energies in joules include it",
                              0.0, true, 1e3)});
+  append_keys(keys, material_field_keys());
   append_keys(keys, cohesive_keys({"3.33e6", "124", "1000", "0.75", "pre-inserted faces", ""}));
   append_keys(keys, cracking_keys());
   append_keys(keys, loading_keys());

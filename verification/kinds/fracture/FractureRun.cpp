@@ -12,6 +12,7 @@
 #include "core/io/StateArchive.hpp"
 #include "core/io/VtuMesh.hpp"
 #include "core/mesh/MeshValidator.hpp"
+#include "core/random/MaterialVariation.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
 #include "core/util/Stopwatch.hpp"
@@ -227,6 +228,9 @@ FractureRecord run_fracture(const FractureScene& scene, const EnsembleRunId& run
   if (scene.mode == CrackingMode::pre_inserted)
     law.initial_stiffness = scene.initial_stiffness * scene.E / mesh.h_avg();
   CohesiveFracture model(table, integrator, setup, law, scene.criterion, DgOptions{});
+  if (scene.field.enabled)  // realization i's strength, the same field on every level
+    model.set_edge_strength(
+        MaterialVariation::from_field(mesh, scene.field, run.realization).edge_strength(mesh));
   model.setup_system();
   r.dofs = model.num_dofs();
 

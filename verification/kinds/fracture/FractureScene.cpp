@@ -12,6 +12,7 @@
 #include "verification/kinds/fracture/FractureKeys.hpp"
 #include "verification/kinds/fracture/FractureRun.hpp"
 #include "verification/model/Choices.hpp"
+#include "verification/model/MaterialFieldKeys.hpp"
 
 namespace vorodg {
 namespace {
@@ -45,7 +46,7 @@ class FractureSceneReader : public SceneKeyReader {
     s_.vtu_every = integer(outputs, "outputs.vtu_every");
     outputs.finish();
     s_.checkpoint = read_checkpoint_policy(*this);
-    s_.statistics = read_statistical_settings(*this, fracture_record_numbers(), false);
+    s_.statistics = read_statistical_settings(*this, fracture_record_numbers(), s_.field.enabled);
     top_.finish();
     s_.settings = settings();
     return s_;
@@ -81,6 +82,7 @@ class FractureSceneReader : public SceneKeyReader {
     } catch (const InputError& e) {
       m.fail_value("E", e.what());
     }
+    s_.field = read_material_field(*this, m);
     m.finish();
   }
 

@@ -11,6 +11,7 @@
 
 #include "core/element/ElementTable.hpp"
 #include "core/material/IsotropicElasticity.hpp"
+#include "core/random/MaterialField.hpp"
 #include "dg/QuasiStaticPath.hpp"
 #include "fracture/CohesiveLaw.hpp"
 #include "fracture/FractureProblem.hpp"
@@ -28,6 +29,9 @@ struct FractureScene {
   double E = 30e9, nu = 0.2;
   PlaneModel plane = PlaneModel::stress;
   double thickness = 1.0;
+  /// A random field of strength (docs/statistics.md): the crack faces' law and criterion scale
+  /// by it, face by face; the bulk's stiffness stays uniform.
+  MaterialField field;
   CohesiveParameters law;           // initial_stiffness set per mesh for pre-inserted faces
   MohrCoulombParameters criterion;  // cohesion, friction, tensile cutoff (default: strength)
   double initial_stiffness = 1e3;   // pre-inserted: K0 = this x E / h_avg

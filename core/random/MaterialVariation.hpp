@@ -1,11 +1,8 @@
 #pragma once
 // Per-cell variation of the material (the report's Figure 16): each cell's Young's modulus and
 // strength are the scene's times factors drawn uniformly from [1 - x, 1 + x], independently, from
-// a seed. The stiffness factor scales the cell's stiffness matrix and its stresses (nu and the
-// density are unchanged); the strength factor of an edge, the mean of its two cells', scales the
-// criterion's cohesion and cutoff there and the cohesive law's strength (G and K0 unchanged).
-// Each cell draws from its own stream (derive_seed(seed, cell)), so the factors do not depend on
-// the order anything runs in.
+// a seed. Each cell draws from its own stream (derive_seed(seed, cell)), so the factors do not
+// depend on the order anything runs in. An edge's strength factor is the mean of its two cells'.
 //
 // Or the factors follow a random field in space (from_field, docs/statistics.md): each cell's
 // factor is the mean over its polygon of the field mapped to its marginal, so a coarse cell's
@@ -13,6 +10,10 @@
 // on every mesh level. With the uniform marginal the stiffness and the strength follow two
 // independent fields of the same law; with the Weibull marginal (a strength law) only the
 // strength varies.
+//
+// What the factors scale is the caller's: the explicit path scales a cell's stiffness and
+// stresses and an edge's criterion (cohesion, cutoff) and cohesive strength; the quasi-static
+// path scales the strength only (docs/statistics.md, "The field in the quasi-static kind").
 #include <cstdint>
 #include <vector>
 

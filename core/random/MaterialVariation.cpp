@@ -1,4 +1,4 @@
-#include "dynamics/MaterialVariation.hpp"
+#include "core/random/MaterialVariation.hpp"
 
 #include <cmath>
 

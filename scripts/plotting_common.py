@@ -17,13 +17,16 @@ class InputError(Exception):
     """A missing or malformed input file: one line on stderr, no traceback."""
 
 
-def save_atomically(fig, path, dpi):
-    """Writes the figure to a temporary file beside `path`, then renames it into place."""
+def replace_atomically(path, write, suffix=".tmp"):
+    """Calls write(binary file) on a temporary file beside `path`, then renames it into place
+    (readable as a file created normally would be; nothing half-written is ever at `path`)."""
     folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(path) + ".", suffix=".tmp.png")
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(path) + ".", suffix=suffix)
     try:
         with os.fdopen(fd, "wb") as f:
-            fig.savefig(f, format="png", dpi=dpi)
+            write(f)
+            f.flush()
+            os.fsync(f.fileno())
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private
@@ -34,6 +37,17 @@ def save_atomically(fig, path, dpi):
         except OSError:
             pass
         raise
+
+
+def write_text_atomically(path, text):
+    """Writes `text` (UTF-8) to `path` atomically."""
+    replace_atomically(path, lambda f: f.write(text.encode("utf-8")))
+
+
+def save_atomically(fig, path, dpi):
+    """Writes the figure to a temporary file beside `path`, then renames it into place."""
+    try:
+        replace_atomically(path, lambda f: fig.savefig(f, format="png", dpi=dpi), ".tmp.png")
     finally:
         plt.close(fig)
     print(path)

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/element/BarycentricCoordinates.hpp"
+#include "core/element/CongruentCells.hpp"
 #include "core/element/RkShapeFunctions.hpp"
 #include "core/element/VirtualElement.hpp"
 #include "core/geometry/Polygon.hpp"
@@ -76,10 +77,21 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
   check_element_options(options);
   check_star_shaped(mesh);
   if (options.family == ElementFamily::wachspress) check_convex(mesh);
-  if (options.family == ElementFamily::rk)
-    weights_ = std::make_unique<WeightFunctions>(mesh, options.weights, options.threads);
-  const int q_per_fan = triangle_rule(options.rule_points).size();
   const int nc = mesh.num_cells();
+  classes_ = nc;
+  if (options.reuse_congruent) {
+    const CongruentCells congruent(mesh);
+    classes_ = congruent.num_classes();
+    if (classes_ < nc) {
+      representative_.resize(nc), class_size_.resize(nc);
+      for (int c = 0; c < nc; ++c)
+        representative_[c] = congruent.representative(c), class_size_[c] = congruent.class_size(c);
+    }
+  }
+  if (options.family == ElementFamily::rk)
+    weights_ =
+        std::make_unique<WeightFunctions>(mesh, options.weights, options.threads, representative_);
+  const int q_per_fan = triangle_rule(options.rule_points).size();
   centroids_.resize(nc);
   for (int c = 0; c < nc; ++c) centroids_[c] = mesh.cell_centroid(c);
   point_offsets_.assign(nc + 1, 0);
@@ -101,14 +113,21 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
 
   // Exceptions must not leave a parallel region: remember the first failing cell instead.
   std::atomic<int> failed{nc};
-#pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(options.threads, 1))
+  const int threads = std::max(options.threads, 1);
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
   for (int c = 0; c < nc; ++c) {
+    if (representative(c) != c) continue;
     build_cell(c);
     if (!(rcond_[c] > kMinMomentRcond) || !(min_weight_[c] > 0.0)) {
       int expected = failed.load();
       while (c < expected && !failed.compare_exchange_weak(expected, c)) {
       }
     }
+  }
+  if (!representative_.empty()) {
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int c = 0; c < nc; ++c)
+      if (representative_[c] != c) copy_cell(c, representative_[c]);
   }
   if (failed < nc) {
     const int c = failed.load();
@@ -165,6 +184,21 @@ void ElementTable::build_cell(int c) {
   rcond_[c] = std::min(min_rcond, 1.0);  // 1 for the families without a moment matrix
   min_weight_[c] = options_.family == ElementFamily::rk ? min_weight : 1.0;
   close_divergence_gap(c, nodes);
+}
+
+void ElementTable::copy_cell(int c, int r) {
+  const int points = num_points(c);
+  for (int q = 0; q < points; ++q) {
+    const std::size_t to = point_offsets_[c] + q, from = point_offsets_[r] + q;
+    fan_points_[to] = fan_points_[from];
+    weights_q_[to] = weights_q_[from];
+    points_[to] = position(c, fan_points_[to]);
+  }
+  std::copy_n(shape_.begin() + value_offsets_[r], value_offsets_[r + 1] - value_offsets_[r],
+              shape_.begin() + value_offsets_[c]);
+  std::copy_n(grad_.begin() + value_offsets_[r], value_offsets_[r + 1] - value_offsets_[r],
+              grad_.begin() + value_offsets_[c]);
+  defect_[c] = defect_[r], rcond_[c] = rcond_[r], min_weight_[c] = min_weight_[r];
 }
 
 /// The virtual element's one point, the centroid with the cell's area: its projected strain is
@@ -280,7 +314,8 @@ void ElementTable::release_weights() {
 
 void ElementTable::restore_weights() {
   if (!weights_ && options_.family == ElementFamily::rk)
-    weights_ = std::make_unique<WeightFunctions>(mesh_, options_.weights, options_.threads);
+    weights_ = std::make_unique<WeightFunctions>(mesh_, options_.weights, options_.threads,
+                                                 representative_);
 }
 
 void ElementTable::release_point_values() {

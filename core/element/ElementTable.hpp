@@ -27,6 +27,9 @@ struct ElementOptions {
   int rule_points = 3;  // per fan triangle: 1, 3 or 6 (vem: one point per cell, see there)
   bool divergence_correction = true;  // enforce the discrete divergence identity (Eq. 16)
   WeightFunctionOptions weights;
+  /// Cells congruent with an earlier one (CongruentCells: the same neighbourhood up to a
+  /// translation) take its values instead of computing their own; false: every cell computed.
+  bool reuse_congruent = true;
   int threads = 1;  // setup threads; results do not depend on it
   bool operator==(const ElementOptions&) const = default;
 };
@@ -68,6 +71,13 @@ class ElementTable {
     return grad_[value_offsets_[c] + q * num_nodes(c) + k];
   }
 
+  /// The cell whose shape functions c shares (CongruentCells; c itself when it shares none), and
+  /// how many cells share them.
+  int representative(int c) const { return representative_.empty() ? c : representative_[c]; }
+  int class_size(int c) const { return class_size_.empty() ? 1 : class_size_[representative(c)]; }
+  /// Classes of congruent cells (the number of cells without reuse).
+  int num_classes() const { return classes_; }
+
   /// Largest |sum_q w_q dpsi_k/dx_i - (boundary integral)| over the cell's nodes and directions
   /// before any correction: the discrete divergence defect (Eq. 16), absolute.
   double divergence_defect(int c) const { return defect_[c]; }
@@ -104,6 +114,8 @@ class ElementTable {
 
  private:
   void build_cell(int c);
+  /// Cell c's values from its representative r's (points from c's own geometry).
+  void copy_cell(int c, int r);
   void build_virtual_element_cell(int c, std::span<const Eigen::Vector2d> nodes);
   /// Eq. 16's gap for each node of cell c, recorded, and closed if the correction is on.
   void close_divergence_gap(int c, std::span<const Eigen::Vector2d> nodes);
@@ -130,6 +142,8 @@ class ElementTable {
   std::vector<double> shape_;
   std::vector<Eigen::Vector2d> grad_;
   std::vector<double> defect_, rcond_, min_weight_;
+  std::vector<int> representative_, class_size_;  // empty: no reuse
+  int classes_ = 0;
 };
 
 }  // namespace vorodg

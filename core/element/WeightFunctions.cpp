@@ -192,8 +192,11 @@ void check_weight_options(const WeightFunctionOptions& o) {
 }
 
 WeightFunctions::WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOptions& options,
-                                 int threads)
+                                 int threads, std::span<const int> representative)
     : mesh_(mesh), options_(options) {
+  if (!representative.empty() && static_cast<int>(representative.size()) != mesh.num_cells())
+    throw InputError("weight functions: " + std::to_string(representative.size()) +
+                     " representatives for " + std::to_string(mesh.num_cells()) + " cells");
   check_weight_options(options);
   centroids_.resize(mesh.num_cells());
   offsets_.resize(mesh.num_cells() + 1, 0);
@@ -206,7 +209,7 @@ WeightFunctions::WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOp
   int largest = 0;
   for (int c = 0; c < mesh.num_cells(); ++c) largest = std::max(largest, lattice(c).node_count());
   if (options.condense && largest <= kMaxCondensedNodes) {
-    solve_by_condensation(threads);
+    solve_by_condensation(threads, representative);
     return;
   }
 #pragma omp parallel num_threads(std::max(threads, 1))
@@ -221,7 +224,7 @@ WeightFunctions::WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOp
 /// and the nodes of the edges at it; (3) per cell, the inner values of each of its vertices'
 /// weight functions from those boundary values. The same solution as one solve per patch, to
 /// round-off, with each cell's matrix assembled and factored twice instead of once per vertex.
-void WeightFunctions::solve_by_condensation(int threads) {
+void WeightFunctions::solve_by_condensation(int threads, std::span<const int> representative) {
   const int N = divisions(), m = lattice_size(), degree = options_.degree, nb = 2 * N - 1;
   const int nc = mesh_.num_cells();
   const int per_vertex = nb * nb + nb;
@@ -235,8 +238,16 @@ void WeightFunctions::solve_by_condensation(int threads) {
     CellCondensation cc;
 #pragma omp for schedule(dynamic, 256)
     for (int c = 0; c < nc; ++c) {
+      if (!computes(representative, c)) continue;
       condense_cell(mesh_, centroids_[c], c, N, m, degree, cc);
       vertex_blocks(cc, blocks.data() + block_offsets[c]);
+    }
+#pragma omp for schedule(static)
+    for (int c = 0; c < nc; ++c) {  // a congruent cell's blocks are its representative's
+      if (computes(representative, c)) continue;
+      const int r = representative[c];
+      std::copy(blocks.begin() + block_offsets[r], blocks.begin() + block_offsets[r + 1],
+                blocks.begin() + block_offsets[c]);
     }
     std::vector<double> A, rhs;
     std::vector<int> local;  // per patch cell, its block's nodes as patch unknowns
@@ -244,6 +255,9 @@ void WeightFunctions::solve_by_condensation(int threads) {
 #pragma omp for schedule(dynamic, 256)
     for (int v = 0; v < mesh_.num_vertices(); ++v) {
       const auto cells = mesh_.vertex_cells(v);
+      if (std::none_of(cells.begin(), cells.end(),
+                       [&](int c) { return computes(representative, c); }))
+        continue;  // every cell of the patch takes its values from its representative
       // Patch unknowns: the vertex, then N - 1 per edge at it, by distance from the vertex.
       edges.clear();
       const auto slot = [&](int e) {
@@ -293,8 +307,16 @@ void WeightFunctions::solve_by_condensation(int threads) {
     }
 #pragma omp for schedule(dynamic, 256)
     for (int c = 0; c < nc; ++c) {
+      if (!computes(representative, c)) continue;
       condense_cell(mesh_, centroids_[c], c, N, m, degree, cc);
       recover_inner_values(cc, N, values_.data() + offsets_[c]);
+    }
+#pragma omp for schedule(static)
+    for (int c = 0; c < nc; ++c) {
+      if (computes(representative, c)) continue;
+      const int r = representative[c];
+      std::copy(values_.begin() + offsets_[r], values_.begin() + offsets_[r + 1],
+                values_.begin() + offsets_[c]);
     }
   }
 }

@@ -39,8 +39,12 @@ void check_weight_options(const WeightFunctionOptions& options);
 class WeightFunctions {
  public:
   /// Solves every vertex patch problem. `threads` > 1 runs patches in parallel; the result does
-  /// not depend on the thread count.
-  WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOptions& options, int threads = 1);
+  /// not depend on the thread count. With `representative` (per cell, CongruentCells: a cell
+  /// whose neighbourhood is a translate of an earlier cell's), a cell that is not its own
+  /// representative takes its representative's values, and a patch of such cells only is not
+  /// solved (condensed lattices only; the other path solves every patch).
+  WeightFunctions(const PolygonMesh& mesh, const WeightFunctionOptions& options, int threads = 1,
+                  std::span<const int> representative = {});
 
   const WeightFunctionOptions& options() const { return options_; }
   /// Sub-triangles per fan-triangle side.
@@ -72,7 +76,11 @@ class WeightFunctions {
  private:
   int divisions() const { return lattice_size() * options_.degree; }
   void solve_patch(int vertex);
-  void solve_by_condensation(int threads);
+  void solve_by_condensation(int threads, std::span<const int> representative);
+  /// Whether cell c computes its own values (it is its representative, or there are none).
+  static bool computes(std::span<const int> representative, int c) {
+    return representative.empty() || representative[c] == c;
+  }
   /// Position of `vertex` in the cell's loop.
   int vertex_position(int cell, int vertex) const;
 

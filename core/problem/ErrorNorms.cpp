@@ -1,6 +1,7 @@
 #include "core/problem/ErrorNorms.hpp"
 
 #include <cmath>
+#include <unordered_map>
 
 #include "core/quadrature/TriangleRule.hpp"
 #include "core/util/Errors.hpp"
@@ -12,21 +13,16 @@ struct CellSums {
   double l2 = 0, l2_exact = 0, energy = 0, energy_exact = 0;
 };
 
-CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, int c,
-                        const Eigen::VectorXd& u, bool energy,
-                        const CellDilatationMean& dilatation_mean) {
-  const bool mean_dilation = static_cast<bool>(dilatation_mean);
+/// Calls visit(at, w) for every error point of cell c: the 7-point rule on each sub-triangle of
+/// the weight functions' lattice in each fan triangle, in one fixed order.
+template <class Visit>
+void for_each_error_point(const ElementTable& table, int c, Visit&& visit) {
   const PolygonMesh& mesh = table.mesh();
   const auto loop = mesh.cell_vertices(c);
   const int n = static_cast<int>(loop.size());
   const int m = table.lattice_size();
   const TriangleRule& rule = triangle_rule(7);
-  const Eigen::Matrix3d& D = exact.material().D();
   const Point& C = table.centroid(c);
-  double psi[64];
-  Eigen::Vector2d grad[64];
-  CellSums sums;
-  const double cell_dilatation = mean_dilation ? dilatation_mean(c, u) : 0.0;
   for (int k = 0; k < n; ++k) {
     const double fan_area =
         0.5 * std::abs((mesh.vertex(loop[k]) - C).x() * (mesh.vertex(loop[(k + 1) % n]) - C).y() -
@@ -39,32 +35,71 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
           for (int r = 0; r < rule.size(); ++r) {
             const double xi = rule.bary[r][1], eta = rule.bary[r][2];
             const double lu = up ? a + xi : a + 1 - xi, lv = up ? b + eta : b + 1 - eta;
-            const FanPoint at{k, Eigen::Vector3d(1 - (lu + lv) / m, lu / m, lv / m)};
-            table.evaluate(c, at, psi, grad);
-            const Point x = table.position(c, at);
-            Eigen::Vector2d uh = Eigen::Vector2d::Zero();
-            Eigen::Matrix2d Gh = Eigen::Matrix2d::Zero();
-            for (int j = 0; j < n; ++j) {
-              uh += psi[j] * u.segment<2>(2 * j);
-              Gh += u.segment<2>(2 * j) * grad[j].transpose();
-            }
-            const double w = rule.weights[r] * sub_area;
-            const Eigen::Vector2d ue = exact.displacement(x);
-            sums.l2 += w * (uh - ue).squaredNorm();
-            sums.l2_exact += w * ue.squaredNorm();
-            if (!energy) continue;
-            Eigen::Vector3d eh(Gh(0, 0), Gh(1, 1), Gh(0, 1) + Gh(1, 0));
-            if (mean_dilation) {  // as the B-bar operator: half the gap to each normal strain
-              const double shift = 0.5 * (cell_dilatation - (eh[0] + eh[1]));
-              eh[0] += shift;
-              eh[1] += shift;
-            }
-            const Eigen::Vector3d ee = exact.strain(x);
-            sums.energy += w * (eh - ee).dot(D * (eh - ee));
-            sums.energy_exact += w * ee.dot(D * ee);
+            visit(FanPoint{k, Eigen::Vector3d(1 - (lu + lv) / m, lu / m, lv / m)},
+                  rule.weights[r] * sub_area);
           }
         }
   }
+}
+
+/// The shape functions at a cell's error points, kept for a class of congruent cells
+/// (ElementTable::representative): evaluated once, read by every member.
+struct ErrorPointShapes {
+  std::vector<double> psi;
+  std::vector<Eigen::Vector2d> grad;
+};
+
+ErrorPointShapes shapes_at_error_points(const ElementTable& table, int c) {
+  const int n = table.num_nodes(c);
+  ErrorPointShapes s;
+  for_each_error_point(table, c, [&](const FanPoint& at, double) {
+    s.psi.resize(s.psi.size() + n);
+    s.grad.resize(s.grad.size() + n);
+    table.evaluate(c, at, s.psi.data() + s.psi.size() - n, s.grad.data() + s.grad.size() - n);
+  });
+  return s;
+}
+
+CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, int c,
+                        const Eigen::VectorXd& u, bool energy,
+                        const CellDilatationMean& dilatation_mean, const ErrorPointShapes* shared) {
+  const bool mean_dilation = static_cast<bool>(dilatation_mean);
+  const int n = table.num_nodes(c);
+  const Eigen::Matrix3d& D = exact.material().D();
+  double own_psi[64];
+  Eigen::Vector2d own_grad[64];
+  CellSums sums;
+  const double cell_dilatation = mean_dilation ? dilatation_mean(c, u) : 0.0;
+  std::size_t point = 0;
+  for_each_error_point(table, c, [&](const FanPoint& at, double w) {
+    const double* psi = own_psi;
+    const Eigen::Vector2d* grad = own_grad;
+    if (shared)
+      psi = &shared->psi[point * n], grad = &shared->grad[point * n];
+    else
+      table.evaluate(c, at, own_psi, own_grad);
+    ++point;
+    const Point x = table.position(c, at);
+    Eigen::Vector2d uh = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d Gh = Eigen::Matrix2d::Zero();
+    for (int j = 0; j < n; ++j) {
+      uh += psi[j] * u.segment<2>(2 * j);
+      Gh += u.segment<2>(2 * j) * grad[j].transpose();
+    }
+    const Eigen::Vector2d ue = exact.displacement(x);
+    sums.l2 += w * (uh - ue).squaredNorm();
+    sums.l2_exact += w * ue.squaredNorm();
+    if (!energy) return;
+    Eigen::Vector3d eh(Gh(0, 0), Gh(1, 1), Gh(0, 1) + Gh(1, 0));
+    if (mean_dilation) {  // as the B-bar operator: half the gap to each normal strain
+      const double shift = 0.5 * (cell_dilatation - (eh[0] + eh[1]));
+      eh[0] += shift;
+      eh[1] += shift;
+    }
+    const Eigen::Vector3d ee = exact.strain(x);
+    sums.energy += w * (eh - ee).dot(D * (eh - ee));
+    sums.energy_exact += w * ee.dot(D * ee);
+  });
   return sums;
 }
 
@@ -76,9 +111,16 @@ ErrorReport compute_errors(const ElementTable& table, const ExactSolution& exact
   const PolygonMesh& mesh = table.mesh();
   const int nc = mesh.num_cells();
   std::vector<CellSums> sums(nc);
-#pragma omp parallel for schedule(dynamic, 128) num_threads(std::max(threads, 1))
+  std::unordered_map<int, ErrorPointShapes> shared;  // per class of congruent cells
   for (int c = 0; c < nc; ++c)
-    sums[c] = integrate_cell(table, exact, c, cell_dofs(c), energy, dilatation_mean);
+    if (table.representative(c) == c && table.class_size(c) > 1)
+      shared.emplace(c, shapes_at_error_points(table, c));
+#pragma omp parallel for schedule(dynamic, 128) num_threads(std::max(threads, 1))
+  for (int c = 0; c < nc; ++c) {
+    const auto found = shared.find(table.representative(c));
+    sums[c] = integrate_cell(table, exact, c, cell_dofs(c), energy, dilatation_mean,
+                             found == shared.end() ? nullptr : &found->second);
+  }
   ErrorReport report;
   report.cell_l2_density.resize(nc);
   report.cell_energy_density.resize(nc);

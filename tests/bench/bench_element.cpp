@@ -4,6 +4,9 @@
 //   BM_ElementTable/N/refinement/degree      weights + quadrature + shape functions + correction
 //   BM_ElementTableThreads/N/threads         the default setting on 1 and 2 threads
 //   BM_CellStiffness/N                       the shared cell-stiffness kernel over all cells
+//   BM_CongruentCells/N/family               finding the congruent cells alone (0 rcp, 1 quad)
+//   BM_QuadElementTable/N/reuse              the default table on the quad grid of the beam,
+//                                            every cell computed (0) or one per class (1)
 //   BM_ElementFamily/N/family                the element table of each element family
 //                                            (0 rk, 1 wachspress, 2 mean-value, 3 vem) on the raw
 //                                            Voronoi mesh (regularization 0: convex cells)
@@ -15,6 +18,7 @@
 #include <memory>
 
 #include "BenchMeshes.hpp"
+#include "core/element/CongruentCells.hpp"
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/meshgen/MeshFamily.hpp"
@@ -40,6 +44,20 @@ const PolygonMesh& raw_rcp_mesh(int n) {
   if (!slot) {
     MeshSpec spec = bench::rcp_spec(n);
     spec.regularization = 0.0;
+    slot = std::make_unique<PolygonMesh>(generate_mesh(spec).mesh);
+  }
+  return *slot;
+}
+
+/// The beam's quad grid (4 x 1) with about n cells, generated once per n.
+const PolygonMesh& quad_mesh(int n) {
+  static std::map<int, std::unique_ptr<PolygonMesh>> cache;
+  auto& slot = cache[n];
+  if (!slot) {
+    MeshSpec spec;
+    spec.family = MeshFamily::quad;
+    spec.domain = Rectangle(0.0, -0.5, 4.0, 0.5);
+    spec.size = 2.0 / std::sqrt(static_cast<double>(n));
     slot = std::make_unique<PolygonMesh>(generate_mesh(spec).mesh);
   }
   return *slot;
@@ -100,6 +118,27 @@ void BM_ElementFamily(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * mesh.num_cells());
 }
 
+void BM_CongruentCells(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const PolygonMesh& mesh = state.range(1) == 0 ? rcp_mesh(n) : quad_mesh(n);
+  for (auto _ : state) {
+    const CongruentCells classes(mesh);
+    benchmark::DoNotOptimize(classes.num_classes());
+  }
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+}
+
+void BM_QuadElementTable(benchmark::State& state) {
+  const PolygonMesh& mesh = quad_mesh(static_cast<int>(state.range(0)));
+  ElementOptions o;
+  o.reuse_congruent = state.range(1) != 0;
+  for (auto _ : state) {
+    ElementTable table(mesh, o);
+    benchmark::DoNotOptimize(table.shape(0, 0, 0));
+  }
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+}
+
 void BM_CellStiffness(benchmark::State& state) {
   const PolygonMesh& mesh = rcp_mesh(static_cast<int>(state.range(0)));
   const ElementTable table(mesh, ElementOptions{});
@@ -148,6 +187,16 @@ BENCHMARK(BM_ElementTableThreads)
 BENCHMARK(BM_ElementFamily)
     ->ArgNames({"cells", "family"})
     ->ArgsProduct({{100000}, {0, 1, 2, 3}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_CongruentCells)
+    ->ArgNames({"cells", "family"})
+    ->ArgsProduct({{100000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_QuadElementTable)
+    ->ArgNames({"cells", "reuse"})
+    ->ArgsProduct({{65536, 262144}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_CellStiffness)->Args({100000, 0})->Args({100000, 1})->Unit(benchmark::kMillisecond);

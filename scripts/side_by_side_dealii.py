@@ -265,6 +265,7 @@ def main(argv):
         return 0
     exe = build_dealii(a.build)
     vorodg_sha = sha256(a.vorodg)
+    a.revision = vorodg_revision()  # of the sources when the runs start, not when they end
     if a.rcp:
         return main_rcp(a, exe, vorodg_sha)
 
@@ -290,7 +291,7 @@ def main(argv):
                 dealii[(n, s)].append(run_dealii(exe, n, s))
             vorodg[n].append(run_vorodg(a.vorodg, n))
             print(f"repeat {rep + 1}/{a.repeats} n={n}: done", file=sys.stderr)
-    when, revision = provenance(a.vorodg, vorodg_sha)
+    when, revision = provenance(a, vorodg_sha)
     header = [
         f"Timoshenko cantilever, L = 4, D = 1, E = 1, nu = 0.3, plane stress, P = 1; 4n x n "
         f"squares. deal.II: Q1, 2x2 Gauss, L2 error with QGauss(4). vorodg {revision}: "
@@ -313,11 +314,12 @@ def main(argv):
     return 0
 
 
-def provenance(vorodg, vorodg_sha):
-    """When the runs ended and which vorodg ran them; warns if its binary changed meanwhile."""
-    if sha256(vorodg) != vorodg_sha:
-        print(f"warning: {vorodg} changed during the runs (rebuilt?)", file=sys.stderr)
-    return datetime.datetime.now().isoformat(timespec="seconds"), vorodg_revision()
+def provenance(a, vorodg_sha):
+    """When the runs ended and the sources' revision when they started (the binary itself is
+    named by its sha256 in the raw file); warns if the binary changed meanwhile."""
+    if sha256(a.vorodg) != vorodg_sha:
+        print(f"warning: {a.vorodg} changed during the runs (rebuilt?)", file=sys.stderr)
+    return datetime.datetime.now().isoformat(timespec="seconds"), a.revision
 
 
 def write_outputs(out, md, raw):
@@ -344,7 +346,7 @@ def main_rcp(a, exe, vorodg_sha):
         if k < a.realizations:
             vorodg += [run_vorodg_rcp(a.vorodg, d, k + 1) for d in sorted(a.rcp_d, reverse=True)]
         print(f"round {k + 1}/{max(a.repeats, a.realizations)}: done", file=sys.stderr)
-    when, revision = provenance(a.vorodg, vorodg_sha)
+    when, revision = provenance(a, vorodg_sha)
     header = [
         f"Timoshenko cantilever, L = 4, D = 1, E = 1, nu = 0.3, plane stress, P = 1; relative "
         f"L2 error of the displacement. deal.II: Q1 on 4n x n squares, UMFPACK, time = its own "

@@ -30,6 +30,10 @@ std::vector<SceneKey> mesh_keys() {
           "the domain when the scene is read; its h_avg is the level's size"),
       bounded("meshes[].realizations", "integer", "1", "1 <= realizations <= 1e6 (file: 1)",
               "random meshes per level", 1.0, false, 1e6),
+      key("meshes[].realizations_per_level", "list of integers", "none",
+          "one per size, each 1..1e6; not beside realizations",
+          "random meshes of each level instead of one count for all (a statistical campaign: "
+          "many coarse runs, few fine ones)"),
       bounded("meshes[].seed", "integer", std::to_string(spec.seed), "0 <= seed <= 2^53",
               "base seed; realization i of level l uses a pure function of (seed, l, i)", 0.0,
               false, 9007199254740992.0),

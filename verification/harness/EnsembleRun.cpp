@@ -21,7 +21,7 @@ std::vector<EnsembleRunId> ensemble_runs(const std::vector<SceneMesh>& meshes) {
                          "' is also meshes[" + std::to_string(o) +
                          "]'s: expected a label of its own (their runs would share ids)");
     for (int level = 0; level < static_cast<int>(mesh.sizes.size()); ++level)
-      for (int r = 0; r < mesh.realizations; ++r)
+      for (int r = 0; r < mesh.realizations_at(level); ++r)
         runs.push_back({static_cast<int>(m), level, r, mesh.label,
                         derive_seed(derive_seed(mesh.seed, level), r)});
   }

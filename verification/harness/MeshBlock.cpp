@@ -81,6 +81,8 @@ void read_file_levels(SceneObject& m, SceneMesh& mesh, const Rectangle& domain) 
     mesh.files.push_back(path);
     mesh.sizes.push_back(h);
   }
+  if (m.has("realizations_per_level"))
+    m.fail_value("realizations_per_level", "a file family has one mesh per level");
   mesh.realizations = m.integer("realizations", mesh.realizations);
   if (mesh.realizations != 1)
     m.fail_value("realizations", "a file family has one mesh per level: expected 1, found " +
@@ -101,6 +103,23 @@ void read_symmetry(SceneObject& m, SceneMesh& mesh, const std::string& family) {
   }
   if (mesh.symmetric && mesh.family != MeshFamily::rcp)
     m.fail_value("symmetric", "only the rcp family is mirrored, found family " + family);
+}
+
+/// realizations_per_level: one whole count in [1, 1e6] per size, instead of `realizations`.
+void read_realizations_per_level(SceneObject& m, SceneMesh& mesh) {
+  if (m.has("realizations"))
+    m.fail_value("realizations_per_level",
+                 "beside realizations: expected one way of giving the realizations");
+  const std::vector<double> counts = m.numbers("realizations_per_level", {});
+  if (counts.size() != mesh.sizes.size())
+    m.fail_value("realizations_per_level", "expected one count per size (" +
+                                               std::to_string(mesh.sizes.size()) + "), found " +
+                                               std::to_string(counts.size()));
+  for (double n : counts) {
+    if (!(n >= 1 && n <= 1e6 && n == std::floor(n)))
+      m.fail_value("realizations_per_level", "expected whole counts in [1, 1e6], found " + fmt(n));
+    mesh.realizations_per_level.push_back(static_cast<int>(n));
+  }
 }
 
 /// The families a scene can name: those generated, and meshes read from files.
@@ -130,6 +149,7 @@ SceneMesh read_mesh(SceneObject& m, const Rectangle& domain) {
     check_sizes(m, mesh.sizes, domain);
     mesh.realizations = m.integer("realizations", mesh.realizations);
     bounded_number(m, "realizations", mesh.realizations);
+    if (m.has("realizations_per_level")) read_realizations_per_level(m, mesh);
   }
   const double seed = bounded_number(m, "seed", static_cast<double>(mesh.seed));
   if (seed != std::floor(seed)) m.fail_value("seed", "expected an integer, found " + fmt(seed));

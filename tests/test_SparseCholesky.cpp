@@ -207,6 +207,31 @@ TEST(SparseCholesky, NodeGraphOrderingSolvesLikeAmdWithLessFill) {
   EXPECT_LT(r_nodes.rcond, 2.0 * r_amd.rcond);
 }
 
+// `auto`: node AMD for a factorization made once below the size, node METIS when the analysis
+// is kept for reuse or shared, or the system is large; the explicit orderings stand for
+// themselves.
+TEST(SparseCholesky, AutoOrdersALoneFactorizationByNodeAmdAndAKeptOneByMetis) {
+  const SpMat L = block_laplacian_lower(65);
+  const auto nonzeros = [&](FactorizationOptions options) {
+    SparseCholesky chol;
+    return chol.factorize(L, options).factor_nonzeros;
+  };
+  const long metis = nonzeros({.ordering = FillOrdering::node_metis});
+  const long amd = nonzeros({.ordering = FillOrdering::node_amd});
+  ASSERT_NE(metis, amd);  // the case tells the two apart
+  EXPECT_EQ(nonzeros({.ordering = FillOrdering::automatic}), amd);
+  EXPECT_EQ(nonzeros({.ordering = FillOrdering::automatic, .reuse_analysis = true}), metis);
+  SymbolicAnalyses shared;
+  EXPECT_EQ(nonzeros({.ordering = FillOrdering::automatic, .shared_analyses = &shared}), metis);
+  EXPECT_EQ(resolve_ordering(FillOrdering::automatic, kAutoAmdBelowDofs - 1, false),
+            FillOrdering::node_amd);
+  EXPECT_EQ(resolve_ordering(FillOrdering::automatic, kAutoAmdBelowDofs, false),
+            FillOrdering::node_metis);
+  for (FillOrdering o : {FillOrdering::node_metis, FillOrdering::node_amd, FillOrdering::amd,
+                         FillOrdering::cholmod_default})
+    EXPECT_EQ(resolve_ordering(o, 10, false), o);
+}
+
 TEST(SparseCholesky, OddSizeFallsBackToAmd) {
   SpMat L = block_laplacian_lower(65);
   L.conservativeResize(L.rows() - 1, L.cols() - 1);  // a node with one DOF: no node graph

@@ -20,7 +20,7 @@ inline constexpr int kAmgFromFreeDofs = 2'000'000;
 
 struct LinearSolverOptions {
   LinearSolverKind kind = LinearSolverKind::automatic;
-  FillOrdering ordering = FillOrdering::node_metis;  // cholmod
+  FillOrdering ordering = FillOrdering::automatic;  // cholmod
   /// amg-cg: the stopping tolerance (AmgCgOptions::tolerance); 0 ties it to the mesh, see
   /// amg_tolerance_for().
   double amg_tolerance = 0.0;

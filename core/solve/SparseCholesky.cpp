@@ -185,19 +185,20 @@ void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
   if (factor) cholmod_free_factor(&factor, &common);
   cholmod_sparse a = view_of(lower, -1);
   const int b = options.block_size;
+  const FillOrdering ordering = resolve_ordering(options.ordering, lower.cols(),
+                                                 options.reuse_analysis || options.shared_analyses);
   // METIS pays off only on large graphs; small systems (patch tests, coarse levels) use AMD.
-  const bool by_nodes =
-      options.ordering == FillOrdering::node_metis || options.ordering == FillOrdering::node_amd;
+  const bool by_nodes = ordering == FillOrdering::node_metis || ordering == FillOrdering::node_amd;
   const bool use_nodes = by_nodes && b >= 1 && lower.cols() % b == 0 && lower.cols() >= 4000;
   common.postorder = 1;
   if (use_nodes) {
     std::vector<int> perm =
-        node_permutation(lower, b, options.ordering == FillOrdering::node_metis, &common);
+        node_permutation(lower, b, ordering == FillOrdering::node_metis, &common);
     common.nmethods = 1;
     common.method[0].ordering = CHOLMOD_GIVEN;
     factor = cholmod_analyze_p(&a, perm.data(), nullptr, 0, &common);
   } else {
-    common.nmethods = options.ordering == FillOrdering::cholmod_default ? 0 : 1;
+    common.nmethods = ordering == FillOrdering::cholmod_default ? 0 : 1;
     common.method[0].ordering = CHOLMOD_AMD;
     // CHOLMOD's own choice may try METIS.
     std::unique_lock<std::mutex> serial(metis_lock(), std::defer_lock);
@@ -207,6 +208,12 @@ void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
   if (!factor)
     throw NumericalError("CHOLMOD's symbolic analysis failed (status " +
                          std::to_string(common.status) + ", out of memory?)");
+}
+
+FillOrdering resolve_ordering(FillOrdering ordering, long dofs, bool analysis_reused) {
+  if (ordering != FillOrdering::automatic) return ordering;
+  return analysis_reused || dofs >= kAutoAmdBelowDofs ? FillOrdering::node_metis
+                                                      : FillOrdering::node_amd;
 }
 
 SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}

@@ -53,6 +53,7 @@ const Choices& generated_family_choices() {
 
 const Choices& ordering_choices() {
   static const Choices choices = choice_table(R"(
+auto        node-amd for a CG factorization made once on a moderate system, else node-metis
 node-metis  METIS nested dissection on the node graph
 node-amd    approximate minimum degree on the node graph
 amd         approximate minimum degree on the DOF graph
@@ -129,8 +130,9 @@ std::string choice_alternatives(const Choices& choices) {
 
 namespace {
 
-constexpr FillOrdering kOrderings[] = {FillOrdering::node_metis, FillOrdering::node_amd,
-                                       FillOrdering::amd, FillOrdering::cholmod_default};
+constexpr FillOrdering kOrderings[] = {FillOrdering::automatic, FillOrdering::node_metis,
+                                       FillOrdering::node_amd, FillOrdering::amd,
+                                       FillOrdering::cholmod_default};
 constexpr LinearSolverKind kSolvers[] = {LinearSolverKind::automatic, LinearSolverKind::cholmod,
                                          LinearSolverKind::amg_cg};
 constexpr ElementFamily kElements[] = {ElementFamily::rk, ElementFamily::wachspress,

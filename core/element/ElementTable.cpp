@@ -93,7 +93,11 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
         std::make_unique<WeightFunctions>(mesh, options.weights, options.threads, representative_);
   const int q_per_fan = triangle_rule(options.rule_points).size();
   centroids_.resize(nc);
-  for (int c = 0; c < nc; ++c) centroids_[c] = mesh.cell_centroid(c);
+  scales_.resize(nc);
+  for (int c = 0; c < nc; ++c) {
+    centroids_[c] = mesh.cell_centroid(c);
+    scales_[c] = std::sqrt(mesh.cell_area(c));
+  }
   point_offsets_.assign(nc + 1, 0);
   value_offsets_.assign(nc + 1, 0);
   for (int c = 0; c < nc; ++c) {
@@ -246,7 +250,7 @@ int ElementTable::points_per_cell(int n, int per_fan) const {
 }
 
 RkCellFrame ElementTable::cell_frame(int c) const {
-  return {centroids_[c], std::sqrt(mesh_.cell_area(c))};
+  return {centroids_[c], scales_[c]};
 }
 
 double ElementTable::shape_functions(int c, std::span<const Eigen::Vector2d> nodes,

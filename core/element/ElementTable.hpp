@@ -134,6 +134,7 @@ class ElementTable {
   ElementOptions options_;
   std::unique_ptr<WeightFunctions> weights_;
   std::vector<Point> centroids_;
+  std::vector<double> scales_;  // sqrt(area): the RK frame's length, once per cell
   std::vector<int> point_offsets_;
   std::vector<std::size_t> value_offsets_;
   std::vector<Point> points_;

@@ -181,6 +181,19 @@ void recover_inner_values(const CellCondensation& cc, int N, double* values) {
   }
 }
 
+/// A congruent cell's slice of `data` (cell c at offsets[c]) is its representative's; called by
+/// every thread of a parallel region (an orphaned worksharing loop).
+void copy_from_representatives(std::span<const int> representative,
+                               const std::vector<std::size_t>& offsets, std::vector<double>& data) {
+  const int nc = static_cast<int>(representative.size());
+#pragma omp for schedule(static)
+  for (int c = 0; c < nc; ++c) {
+    const int r = representative[c];
+    if (r == c) continue;
+    std::copy(data.begin() + offsets[r], data.begin() + offsets[r + 1], data.begin() + offsets[c]);
+  }
+}
+
 }  // namespace
 
 void check_weight_options(const WeightFunctionOptions& o) {
@@ -242,13 +255,7 @@ void WeightFunctions::solve_by_condensation(int threads, std::span<const int> re
       condense_cell(mesh_, centroids_[c], c, N, m, degree, cc);
       vertex_blocks(cc, blocks.data() + block_offsets[c]);
     }
-#pragma omp for schedule(static)
-    for (int c = 0; c < nc; ++c) {  // a congruent cell's blocks are its representative's
-      if (computes(representative, c)) continue;
-      const int r = representative[c];
-      std::copy(blocks.begin() + block_offsets[r], blocks.begin() + block_offsets[r + 1],
-                blocks.begin() + block_offsets[c]);
-    }
+    copy_from_representatives(representative, block_offsets, blocks);
     std::vector<double> A, rhs;
     std::vector<int> local;  // per patch cell, its block's nodes as patch unknowns
     std::vector<int> edges;  // the patch's edges at the vertex
@@ -311,13 +318,7 @@ void WeightFunctions::solve_by_condensation(int threads, std::span<const int> re
       condense_cell(mesh_, centroids_[c], c, N, m, degree, cc);
       recover_inner_values(cc, N, values_.data() + offsets_[c]);
     }
-#pragma omp for schedule(static)
-    for (int c = 0; c < nc; ++c) {
-      if (computes(representative, c)) continue;
-      const int r = representative[c];
-      std::copy(values_.begin() + offsets_[r], values_.begin() + offsets_[r + 1],
-                values_.begin() + offsets_[c]);
-    }
+    copy_from_representatives(representative, offsets_, values_);
   }
 }
 

@@ -53,6 +53,21 @@ void note_orphans(const RunPlan& plan, const std::map<std::string, json>& lines,
                  "scene); they are ignored\n";
 }
 
+/// Opens a results file for appending records. A stop may have cut the last line short (or
+/// left a whole record without its newline): that line is ended first, so the next record
+/// starts a line of its own and every later reader still parses it.
+std::ofstream open_for_records(const std::filesystem::path& file) {
+  bool ends_cut = false;
+  if (std::ifstream in(file, std::ios::binary | std::ios::ate); in && in.tellg() > 0) {
+    in.seekg(-1, std::ios::end);
+    ends_cut = in.get() != '\n';
+  }
+  std::ofstream append(file, std::ios::app | std::ios::binary);
+  if (!append) throw InputError("cannot write '" + file.string() + "'");
+  if (ends_cut) append << '\n' << std::flush;
+  return append;
+}
+
 /// One task per block with runs still to do, holding those runs, at the block's place.
 std::vector<Task> pending_tasks(const RunPlan& plan, const std::vector<bool>& done) {
   std::vector<Task> tasks;
@@ -102,8 +117,7 @@ std::map<std::string, json> run_resumable(const RunPlan& plan, const std::filesy
   for (const std::string& id : plan.ids) finished.push_back(done.count(id) > 0);
   const std::vector<Task> tasks = pending_tasks(plan, finished);
   const std::filesystem::path own = Ensemble::own_results(jsonl);
-  std::ofstream append(own, std::ios::app);
-  if (!append) throw InputError("cannot write '" + own.string() + "'");
+  std::ofstream append = open_for_records(own);
   RunProgress progress(plan.costs, finished, options.progress && Ensemble::coordinator());
   const int workers = std::clamp(static_cast<int>(tasks.size()), 1, std::max(options.threads, 1));
   const ScopedBlasThreads blas(
@@ -122,7 +136,8 @@ std::map<std::string, json> run_resumable(const RunPlan& plan, const std::filesy
       [&](const Task& task, const TaskOutput& output) {
         for (std::size_t k = 0; k < task.runs.size(); ++k) {
           // At once: a stop loses only the tasks in flight (a task is the unit a rank reports).
-          append << output.lines.at(k) << '\n' << std::flush;
+          // The record and its newline in one write call, so a stop does not part them.
+          append << output.lines.at(k) + '\n' << std::flush;
           done[plan.ids[task.runs[k]]] = json::parse(output.lines[k]);
           if (options.progress && !output.notes[k].empty())
             std::cout << "  " << output.notes[k] << "\n" << std::flush;

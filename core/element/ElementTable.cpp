@@ -166,24 +166,24 @@ void ElementTable::build_cell(int c) {
     return;
   }
   const TriangleRule& rule = triangle_rule(options_.rule_points);
+  const int per_fan = rule.size();
   double min_rcond = std::numeric_limits<double>::infinity();
   double min_weight = std::numeric_limits<double>::infinity();
-  int q = 0;
   for (int k = 0; k < n; ++k) {
     const Point& A = nodes[k];
     const Point& B = nodes[(k + 1) % n];
     const double fan_area = 0.5 * polygon::orient2(C, A, B);
-    for (int r = 0; r < rule.size(); ++r, ++q) {
-      const std::size_t at = point_offsets_[c] + q;
-      fan_points_[at] = {k, rule.bary[r]};
-      points_[at] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
-      weights_q_[at] = rule.weights[r] * fan_area;
-      const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(q) * n;
-      const double rc =
-          shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, fan_points_[at],
-                          points_[at], &shape_[v], &grad_[v], &min_weight);
-      min_rcond = std::min(min_rcond, std::isfinite(rc) ? rc : 0.0);
+    const std::size_t first = point_offsets_[c] + static_cast<std::size_t>(k) * per_fan;
+    for (int r = 0; r < per_fan; ++r) {
+      fan_points_[first + r] = {k, rule.bary[r]};
+      points_[first + r] = rule.bary[r][0] * C + rule.bary[r][1] * A + rule.bary[r][2] * B;
+      weights_q_[first + r] = rule.weights[r] * fan_area;
     }
+    const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(k) * per_fan * n;
+    min_rcond = std::min(min_rcond,
+                         fan_shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, k,
+                                             {rule.bary.data(), static_cast<std::size_t>(per_fan)},
+                                             &points_[first], &shape_[v], &grad_[v], &min_weight));
   }
   rcond_[c] = std::min(min_rcond, 1.0);  // 1 for the families without a moment matrix
   min_weight_[c] = options_.family == ElementFamily::rk ? min_weight : 1.0;
@@ -253,26 +253,43 @@ RkCellFrame ElementTable::cell_frame(int c) const {
   return {centroids_[c], scales_[c]};
 }
 
-double ElementTable::shape_functions(int c, std::span<const Eigen::Vector2d> nodes,
-                                     std::span<const Eigen::Vector3d> node_basis,
-                                     const FanPoint& at, const Point& x, double* psi,
-                                     Eigen::Vector2d* grad, double* min_weight) const {
+double ElementTable::fan_shape_functions(int c, std::span<const Eigen::Vector2d> nodes,
+                                         std::span<const Eigen::Vector3d> node_basis, int fan,
+                                         std::span<const Eigen::Vector3d> bary, const Point* x,
+                                         double* psi, Eigen::Vector2d* grad,
+                                         double* min_weight) const {
   const int n = static_cast<int>(nodes.size());
+  const std::size_t points = bary.size();
+  double min_rcond = std::numeric_limits<double>::infinity();
+  auto keep = [&](double rc) { min_rcond = std::min(min_rcond, std::isfinite(rc) ? rc : 0.0); };
   if (options_.family == ElementFamily::vem) {  // the projection: what a virtual element knows
-    VemProjection(nodes, mesh_.cell_area(c)).basis(x, psi, grad);
+    const VemProjection projection(nodes, mesh_.cell_area(c));
+    for (std::size_t p = 0; p < points; ++p) projection.basis(x[p], psi + p * n, grad + p * n);
     return 1.0;
   }
   if (options_.family != ElementFamily::rk) {
-    barycentric_coordinates(barycentric_kind(options_.family), nodes, x, psi, grad);
-    for (int k = 0; k < n; ++k)
-      if (!std::isfinite(psi[k]) || !grad[k].allFinite()) return 0.0;
-    return 1.0;
+    for (std::size_t p = 0; p < points; ++p) {
+      double* ps = psi + p * n;
+      Eigen::Vector2d* gr = grad + p * n;
+      barycentric_coordinates(barycentric_kind(options_.family), nodes, x[p], ps, gr);
+      bool finite = true;
+      for (int k = 0; k < n; ++k) finite = finite && std::isfinite(ps[k]) && gr[k].allFinite();
+      keep(finite ? 1.0 : 0.0);
+    }
+    return min_rcond;
   }
-  Eigen::Vector2d grad_w[kMaxNodes];
-  double w[kMaxNodes];
-  weights().evaluate(c, at.fan, at.bary, w, grad_w);
-  for (int j = 0; j < n; ++j) *min_weight = std::min(*min_weight, std::isnan(w[j]) ? -1.0 : w[j]);
-  return rk_shape_functions(cell_frame(c), node_basis, x, w, grad_w, psi, grad);
+  // The weight functions of the fan's points in one pass (the fan's geometry set up once).
+  thread_local std::vector<double> w;
+  thread_local std::vector<Eigen::Vector2d> grad_w;
+  w.resize(points * n);
+  grad_w.resize(points * n);
+  weights().evaluate_fan(c, fan, bary, w.data(), grad_w.data());
+  for (double wj : w) *min_weight = std::min(*min_weight, std::isnan(wj) ? -1.0 : wj);
+  const RkCellFrame frame = cell_frame(c);
+  for (std::size_t p = 0; p < points; ++p)
+    keep(rk_shape_functions(frame, node_basis, x[p], &w[p * n], &grad_w[p * n], psi + p * n,
+                            grad + p * n));
+  return min_rcond;
 }
 
 Point ElementTable::position(int c, const FanPoint& at) const {
@@ -283,6 +300,11 @@ Point ElementTable::position(int c, const FanPoint& at) const {
 }
 
 void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vector2d* grad) const {
+  evaluate_points(c, {&at, 1}, psi, grad);
+}
+
+void ElementTable::evaluate_points(int c, std::span<const FanPoint> at, double* psi,
+                                   Eigen::Vector2d* grad) const {
   const int n = mesh_.cell_size(c);
   Eigen::Vector2d node_storage[kMaxNodes];
   const auto nodes = cell_nodes(mesh_, c, node_storage);
@@ -291,19 +313,31 @@ void ElementTable::evaluate(int c, const FanPoint& at, double* psi, Eigen::Vecto
   // On the cell's edge the RK moment matrix is singular and Wachspress's weights vanish; the
   // gradient is the one-sided limit from just inside.
   constexpr double kInside = 1e-9;
-  const bool on_edge = at.bary[0] < kInside;
-  Eigen::Vector3d bary = at.bary;
-  if (on_edge)
-    bary = Eigen::Vector3d(kInside, at.bary[1] * (1 - kInside), at.bary[2] * (1 - kInside));
-  const FanPoint inside{at.fan, bary};
+  thread_local std::vector<Eigen::Vector3d> bary;
+  thread_local std::vector<Point> x;
   double min_weight = 1.0;
-  shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, inside, position(c, inside),
-                  psi, grad, &min_weight);
-  if (on_edge) {  // exact edge limit: linear between the edge's end points
-    const double s = at.bary[1] + at.bary[2];
-    for (int k = 0; k < n; ++k) psi[k] = 0.0;
-    psi[at.fan] = at.bary[1] / s;
-    psi[(at.fan + 1) % n] = at.bary[2] / s;
+  for (std::size_t first = 0; first < at.size();) {  // one run of points of one fan at a time
+    const int fan = at[first].fan;
+    std::size_t last = first;
+    bary.clear(), x.clear();
+    for (; last < at.size() && at[last].fan == fan; ++last) {
+      Eigen::Vector3d b = at[last].bary;
+      if (b[0] < kInside) b = Eigen::Vector3d(kInside, b[1] * (1 - kInside), b[2] * (1 - kInside));
+      bary.push_back(b);
+      x.push_back(position(c, FanPoint{fan, b}));
+    }
+    fan_shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, fan, bary, x.data(),
+                        psi + first * n, grad + first * n, &min_weight);
+    for (std::size_t p = first; p < last; ++p) {
+      if (at[p].bary[0] >= kInside) continue;
+      // Exact edge limit: linear between the edge's end points.
+      const double s = at[p].bary[1] + at[p].bary[2];
+      double* ps = psi + p * n;
+      for (int k = 0; k < n; ++k) ps[k] = 0.0;
+      ps[fan] = at[p].bary[1] / s;
+      ps[(fan + 1) % n] = at[p].bary[2] / s;
+    }
+    first = last;
   }
 }
 

@@ -94,6 +94,11 @@ class ElementTable {
   /// barycentric coordinates. On the cell's edges (barycentric centroid coordinate 0) the values
   /// are the exact edge limit, linear between the edge's two vertices.
   void evaluate(int c, const FanPoint& at, double* psi, Eigen::Vector2d* grad) const;
+  /// The same at several points of cell c (point after point: psi and grad have at.size() x
+  /// cell_size entries). The cell's setup is shared, and each run of points on one fan
+  /// triangle evaluates its weight functions in one pass: list a fan's points together.
+  void evaluate_points(int c, std::span<const FanPoint> at, double* psi,
+                       Eigen::Vector2d* grad) const;
   Point position(int c, const FanPoint& at) const;
 
   /// Frees the values, gradients and weights stored at the quadrature points (and the points),
@@ -122,13 +127,13 @@ class ElementTable {
   /// Quadrature points of an n-gon: the fan rule's per fan triangle, or one (vem).
   int points_per_cell(int n, int per_fan) const;
   RkCellFrame cell_frame(int c) const;
-  /// psi_k and grad psi_k of the family at a point strictly inside cell c (fan point `at`, or
-  /// quadrature point q with its weight-function values); the RK moment matrix's reciprocal
-  /// condition estimate, or 1.
-  double shape_functions(int c, std::span<const Eigen::Vector2d> nodes,
-                         std::span<const Eigen::Vector3d> node_basis, const FanPoint& at,
-                         const Point& x, double* psi, Eigen::Vector2d* grad,
-                         double* min_weight) const;
+  /// psi_k and grad psi_k of the family at points strictly inside cell c, all on fan triangle
+  /// `fan` (barycentric `bary`, positions `x`; point after point in psi and grad); the smallest
+  /// RK moment-matrix reciprocal condition estimate over them (0 for a non-finite value), or 1.
+  double fan_shape_functions(int c, std::span<const Eigen::Vector2d> nodes,
+                             std::span<const Eigen::Vector3d> node_basis, int fan,
+                             std::span<const Eigen::Vector3d> bary, const Point* x, double* psi,
+                             Eigen::Vector2d* grad, double* min_weight) const;
 
   const PolygonMesh& mesh_;
   ElementOptions options_;

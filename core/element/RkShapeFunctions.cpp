@@ -1,6 +1,7 @@
 #include "core/element/RkShapeFunctions.hpp"
 
 #include <Eigen/Dense>
+#include <array>
 #include <stdexcept>
 
 namespace vorodg {
@@ -11,17 +12,17 @@ Eigen::Vector3d basis_at(const RkCellFrame& frame, const Eigen::Vector2d& y) {
   return {1.0, (y.x() - frame.centre.x()) / frame.scale, (y.y() - frame.centre.y()) / frame.scale};
 }
 
-/// Adds s p p^T to the symmetric 3x3 matrix A, entry by entry on its upper triangle (the lower
-/// one is copied at the end): half the work of the full outer product, the same sums.
-void add_outer(double s, const Eigen::Vector3d& p, Eigen::Matrix3d& A) {
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i <= j; ++i) A(i, j) += s * (p[i] * p[j]);
+/// The upper triangle of p p^T, row by row: (00, 01, 02, 11, 12, 22).
+using Sym3 = std::array<double, 6>;
+
+Sym3 outer_upper(const Eigen::Vector3d& p) {
+  return {p[0] * p[0], p[0] * p[1], p[0] * p[2], p[1] * p[1], p[1] * p[2], p[2] * p[2]};
 }
 
-void fill_lower(Eigen::Matrix3d& A) {
-  A(1, 0) = A(0, 1);
-  A(2, 0) = A(0, 2);
-  A(2, 1) = A(1, 2);
+Eigen::Matrix3d from_upper(const Sym3& a) {
+  Eigen::Matrix3d A;
+  A << a[0], a[1], a[2], a[1], a[3], a[4], a[2], a[4], a[5];
+  return A;
 }
 
 }  // namespace
@@ -45,16 +46,19 @@ double rk_shape_functions(const RkCellFrame& frame, std::span<const Eigen::Vecto
                           const Eigen::Vector2d& x, const double* w, const Eigen::Vector2d* grad_w,
                           double* psi, Eigen::Vector2d* grad_psi) {
   const int n = static_cast<int>(node_basis.size());
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero(),
-                  dM[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  // M = sum_J w_J p_J p_J^T and its derivatives, accumulated in local sums (which stay in
+  // registers; a matrix updated entry by entry in memory made every addition wait on the last).
+  Sym3 m{}, dmx{}, dmy{};
   for (int J = 0; J < n; ++J) {
-    add_outer(w[J], node_basis[J], M);
-    add_outer(grad_w[J].x(), node_basis[J], dM[0]);
-    add_outer(grad_w[J].y(), node_basis[J], dM[1]);
+    const Sym3 q = outer_upper(node_basis[J]);
+    const double wj = w[J], gx = grad_w[J].x(), gy = grad_w[J].y();
+    for (int k = 0; k < 6; ++k) {
+      m[k] += wj * q[k];
+      dmx[k] += gx * q[k];
+      dmy[k] += gy * q[k];
+    }
   }
-  fill_lower(M);
-  fill_lower(dM[0]);
-  fill_lower(dM[1]);
+  const Eigen::Matrix3d M = from_upper(m), dM[2] = {from_upper(dmx), from_upper(dmy)};
   // M is 3x3 symmetric positive definite inside the cell: its inverse in closed form (adjugate
   // over determinant) is exact enough and far cheaper than a factorization per point.
   const Eigen::Matrix3d Minv = M.inverse();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/element/CellCondensation.hpp"
 #include "core/element/LatticeBasis.hpp"
 #include "core/element/LatticeStiffness.hpp"
 #include "core/element/SmallCholesky.hpp"
@@ -67,117 +68,6 @@ void number_patch(const PolygonMesh& mesh, int vertex, int N, PatchNumbering& pa
       for (int t = 1; t < N; ++t)
         cd.dof[lattice.edge_node(e_local, t)] = it->second + (same_direction ? t : N - t) - 1;
     }
-  }
-}
-
-/// Lattices up to this many nodes per cell are solved by condensing each cell onto its boundary
-/// (the default, P2 unrefined, has 3n + 1); finer ones by one sparse or dense solve per patch.
-constexpr int kMaxCondensedNodes = 64;
-
-/// One cell's weight-function problem, -lap w = 1 on its lattice, split into the nodes inside
-/// the cell (centroid, spokes, fan interiors: `inner`) and those on its boundary (vertices and
-/// edge nodes). Every weight function of a vertex is, inside each cell of its patch, the solution
-/// of this problem for its boundary values, so the inner nodes are eliminated cell by cell, once
-/// for all the cell's vertices, and the patch problems keep only the vertex and the nodes of the
-/// edges at it.
-struct CellCondensation {
-  int n = 0, N = 0, nodes = 0, n_inner = 0;
-  std::array<int, kMaxCondensedNodes> inner{};                      // inner nodes, in node order
-  std::array<double, kMaxCondensedNodes * kMaxCondensedNodes> K{};  // full, row-major
-  std::array<double, kMaxCondensedNodes> f{};
-  std::array<double, kMaxCondensedNodes * kMaxCondensedNodes> L{};  // factor of K(inner, inner)
-
-  /// The nodes whose values a vertex's weight function may have nonzero on the cell's boundary:
-  /// vertex k, then the nodes of edge k and of edge k-1, each by distance from vertex k.
-  static void boundary_nodes(const FanLattice& lattice, int n, int N, int k, int* out) {
-    out[0] = 1 + k;
-    for (int s = 1; s < N; ++s) {
-      out[s] = lattice.edge_node(k, s);
-      out[N - 1 + s] = lattice.edge_node((k + n - 1) % n, N - s);
-    }
-  }
-};
-
-/// Stiffness and load of the cell's lattice, and the factor of its inner block.
-void condense_cell(const PolygonMesh& mesh, const Point& centroid, int cell, int N, int m,
-                   int degree, CellCondensation& cc) {
-  const int n = mesh.cell_size(cell);
-  const FanLattice lattice(n, N);
-  cc.n = n;
-  cc.N = N;
-  cc.nodes = lattice.node_count();
-  const int nn = cc.nodes;
-  std::fill(cc.K.begin(), cc.K.begin() + nn * nn, 0.0);
-  std::fill(cc.f.begin(), cc.f.begin() + nn, 0.0);
-  for_each_sub_triangle(mesh, centroid, cell, N, m, degree,
-                        [&](const SubTriangleNodes& sub, const SubTriangleMatrices& local) {
-                          for (int i = 0; i < sub.count; ++i) {
-                            cc.f[sub.node[i]] += local.f[i];
-                            for (int j = 0; j < sub.count; ++j)
-                              cc.K[sub.node[i] * nn + sub.node[j]] += local.K(i, j);
-                          }
-                        });
-  const int first_edge_node = 1 + n + n * (N - 1);
-  cc.n_inner = 0;
-  for (int node = 0; node < nn; ++node)
-    if (node == 0 || (node > n && node < first_edge_node) || node >= lattice.first_interior())
-      cc.inner[cc.n_inner++] = node;
-  const int ni = cc.n_inner;
-  for (int i = 0; i < ni; ++i)
-    for (int j = 0; j <= i; ++j) cc.L[i * ni + j] = cc.K[cc.inner[i] * nn + cc.inner[j]];
-  if (!cholesky_in_place(cc.L.data(), ni))
-    throw NumericalError("cell " + std::to_string(cell) +
-                         ": its weight-function lattice matrix is not positive definite (a "
-                         "degenerate fan triangle)");
-}
-
-/// Per vertex k of the condensed cell: the Schur complement of the inner nodes on the vertex's
-/// 2N - 1 boundary nodes (row-major) and its load, `block` entries then `2N - 1`.
-void vertex_blocks(const CellCondensation& cc, double* out) {
-  const int ni = cc.n_inner, nn = cc.nodes, nb = 2 * cc.N - 1;
-  const FanLattice lattice(cc.n, cc.N);
-  double y_f[kMaxCondensedNodes], y[2 * kMaxCondensedNodes][kMaxCondensedNodes];
-  for (int i = 0; i < ni; ++i) y_f[i] = cc.f[cc.inner[i]];
-  forward_solve(cc.L.data(), ni, y_f);
-  for (int k = 0; k < cc.n; ++k, out += nb * nb + nb) {
-    int bn[2 * kMaxCondensedNodes];
-    CellCondensation::boundary_nodes(lattice, cc.n, cc.N, k, bn);
-    for (int a = 0; a < nb; ++a) {
-      for (int i = 0; i < ni; ++i) y[a][i] = cc.K[cc.inner[i] * nn + bn[a]];
-      forward_solve(cc.L.data(), ni, y[a]);
-    }
-    for (int a = 0; a < nb; ++a) {
-      for (int b = 0; b < nb; ++b) {
-        double v = cc.K[bn[a] * nn + bn[b]];
-        for (int i = 0; i < ni; ++i) v -= y[a][i] * y[b][i];
-        out[a * nb + b] = v;
-      }
-      double g = cc.f[bn[a]];
-      for (int i = 0; i < ni; ++i) g -= y[a][i] * y_f[i];
-      out[nb * nb + a] = g;
-    }
-  }
-}
-
-/// The inner-node values of each of the cell's vertices' weight functions (`values`: the cell's
-/// block, vertex after vertex), from their boundary values already there, by the condensed
-/// cell's factor of K(inner, inner).
-void recover_inner_values(const CellCondensation& cc, int N, double* values) {
-  const int nn = cc.nodes, ni = cc.n_inner, nb = 2 * N - 1;
-  const FanLattice lat(cc.n, N);
-  for (int k = 0; k < cc.n; ++k) {
-    double* out = values + static_cast<std::size_t>(k) * nn;
-    int bn[2 * kMaxCondensedNodes];
-    CellCondensation::boundary_nodes(lat, cc.n, N, k, bn);
-    double x[kMaxCondensedNodes];
-    for (int i = 0; i < ni; ++i) {
-      double r = cc.f[cc.inner[i]];
-      for (int a = 0; a < nb; ++a) r -= cc.K[cc.inner[i] * nn + bn[a]] * out[bn[a]];
-      x[i] = r;
-    }
-    forward_solve(cc.L.data(), ni, x);
-    backward_solve(cc.L.data(), ni, x);
-    for (int i = 0; i < ni; ++i) out[cc.inner[i]] = x[i];
   }
 }
 
@@ -383,29 +273,41 @@ void WeightFunctions::solve_patch(int vertex) {
 
 void WeightFunctions::evaluate(int cell, int fan, const Eigen::Vector3d& bary, double* w,
                                Eigen::Vector2d* grad) const {
+  evaluate_fan(cell, fan, {&bary, 1}, w, grad);
+}
+
+void WeightFunctions::evaluate_fan(int cell, int fan, std::span<const Eigen::Vector3d> points,
+                                   double* w, Eigen::Vector2d* grad) const {
   const auto loop = mesh_.cell_vertices(cell);
   const int n = static_cast<int>(loop.size());
   const int m = lattice_size(), degree = options_.degree;
   const FanLattice lat = lattice(cell);
-  const LatticeLocation loc = locate_in_lattice(bary, m);
-  const auto nodes = sub_triangle_nodes(lat, fan, loc.a, loc.b, loc.up, degree);
-  double phi[6], dphi[6][2];
-  lattice_basis(degree, loc.xi, loc.eta, phi, dphi);
+  // Every sub-triangle of the fan triangle is the same affine map up to a sign (the "down"
+  // ones are point-reflected): one inverse serves all the points.
   const Eigen::Matrix2d Jinv_t = sub_triangle_jacobian(centroids_[cell], mesh_.vertex(loop[fan]),
-                                                       mesh_.vertex(loop[(fan + 1) % n]), m, loc.up)
+                                                       mesh_.vertex(loop[(fan + 1) % n]), m, true)
                                      .inverse()
                                      .transpose();
-  for (int j = 0; j < n; ++j) {
-    const auto vals = values(cell, j);
-    double value = 0.0;
-    Eigen::Vector2d d = Eigen::Vector2d::Zero();
-    for (int i = 0; i < nodes.count; ++i) {
-      const double nodal = vals[nodes.node[i]];
-      value += phi[i] * nodal;
-      d += nodal * Eigen::Vector2d(dphi[i][0], dphi[i][1]);
+  const double* vals = values_.data() + offsets_[cell];
+  const std::size_t stride = static_cast<std::size_t>(lat.node_count());
+  for (std::size_t p = 0; p < points.size(); ++p, w += n, grad += n) {
+    const LatticeLocation loc = locate_in_lattice(points[p], m);
+    const auto nodes = sub_triangle_nodes(lat, fan, loc.a, loc.b, loc.up, degree);
+    double phi[6], dphi[6][2];
+    lattice_basis(degree, loc.xi, loc.eta, phi, dphi);
+    const double sign = loc.up ? 1.0 : -1.0;
+    for (int j = 0; j < n; ++j) {
+      const double* nodal = vals + j * stride;
+      double value = 0.0;
+      Eigen::Vector2d d = Eigen::Vector2d::Zero();
+      for (int i = 0; i < nodes.count; ++i) {
+        const double v = nodal[nodes.node[i]];
+        value += phi[i] * v;
+        d += v * Eigen::Vector2d(dphi[i][0], dphi[i][1]);
+      }
+      w[j] = value;
+      grad[j] = sign * (Jinv_t * d);
     }
-    w[j] = value;
-    grad[j] = Jinv_t * d;
   }
 }
 

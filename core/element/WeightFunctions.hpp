@@ -63,6 +63,10 @@ class WeightFunctions {
   /// entries.
   void evaluate(int cell, int fan, const Eigen::Vector3d& bary, double* w,
                 Eigen::Vector2d* grad) const;
+  /// The same at several points of fan triangle `fan` (point after point: `w` and `grad` have
+  /// points.size() x cell_size entries), the fan's geometry set up once.
+  void evaluate_fan(int cell, int fan, std::span<const Eigen::Vector3d> points, double* w,
+                    Eigen::Vector2d* grad) const;
 
   /// Bytes held: the nodal values, their offsets and the centroids.
   std::size_t bytes() const {

@@ -42,21 +42,40 @@ void for_each_error_point(const ElementTable& table, int c, Visit&& visit) {
   }
 }
 
-/// The shape functions at a cell's error points, kept for a class of congruent cells
+/// A cell's error points (fan by fan) with their weights.
+struct ErrorPoints {
+  std::vector<FanPoint> at;
+  std::vector<double> weight;
+};
+
+void collect_error_points(const ElementTable& table, int c, ErrorPoints& points) {
+  points.at.clear(), points.weight.clear();
+  for_each_error_point(table, c, [&](const FanPoint& at, double w) {
+    points.at.push_back(at);
+    points.weight.push_back(w);
+  });
+}
+
+/// The shape functions at a cell's error points (point after point), as
+/// ElementTable::evaluate_points gives them; kept for a class of congruent cells
 /// (ElementTable::representative): evaluated once, read by every member.
 struct ErrorPointShapes {
   std::vector<double> psi;
   std::vector<Eigen::Vector2d> grad;
 };
 
+void shapes_at(const ElementTable& table, int c, const ErrorPoints& points, ErrorPointShapes& s) {
+  const std::size_t n = table.num_nodes(c);
+  s.psi.resize(points.at.size() * n);
+  s.grad.resize(points.at.size() * n);
+  table.evaluate_points(c, points.at, s.psi.data(), s.grad.data());
+}
+
 ErrorPointShapes shapes_at_error_points(const ElementTable& table, int c) {
-  const int n = table.num_nodes(c);
+  ErrorPoints points;
+  collect_error_points(table, c, points);
   ErrorPointShapes s;
-  for_each_error_point(table, c, [&](const FanPoint& at, double) {
-    s.psi.resize(s.psi.size() + n);
-    s.grad.resize(s.grad.size() + n);
-    table.evaluate(c, at, s.psi.data() + s.psi.size() - n, s.grad.data() + s.grad.size() - n);
-  });
+  shapes_at(table, c, points, s);
   return s;
 }
 
@@ -66,20 +85,18 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
   const bool mean_dilation = static_cast<bool>(dilatation_mean);
   const int n = table.num_nodes(c);
   const Eigen::Matrix3d& D = exact.material().D();
-  double own_psi[64];
-  Eigen::Vector2d own_grad[64];
+  thread_local ErrorPoints points;
+  thread_local ErrorPointShapes own;
+  collect_error_points(table, c, points);
+  if (!shared) shapes_at(table, c, points, own);
+  const ErrorPointShapes& shapes = shared ? *shared : own;
   CellSums sums;
   const double cell_dilatation = mean_dilation ? dilatation_mean(c, u) : 0.0;
-  std::size_t point = 0;
-  for_each_error_point(table, c, [&](const FanPoint& at, double w) {
-    const double* psi = own_psi;
-    const Eigen::Vector2d* grad = own_grad;
-    if (shared)
-      psi = &shared->psi[point * n], grad = &shared->grad[point * n];
-    else
-      table.evaluate(c, at, own_psi, own_grad);
-    ++point;
-    const Point x = table.position(c, at);
+  for (std::size_t p = 0; p < points.at.size(); ++p) {
+    const double w = points.weight[p];
+    const double* psi = &shapes.psi[p * n];
+    const Eigen::Vector2d* grad = &shapes.grad[p * n];
+    const Point x = table.position(c, points.at[p]);
     Eigen::Vector2d uh = Eigen::Vector2d::Zero();
     Eigen::Matrix2d Gh = Eigen::Matrix2d::Zero();
     for (int j = 0; j < n; ++j) {
@@ -89,7 +106,7 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
     const Eigen::Vector2d ue = exact.displacement(x);
     sums.l2 += w * (uh - ue).squaredNorm();
     sums.l2_exact += w * ue.squaredNorm();
-    if (!energy) return;
+    if (!energy) continue;
     Eigen::Vector3d eh(Gh(0, 0), Gh(1, 1), Gh(0, 1) + Gh(1, 0));
     if (mean_dilation) {  // as the B-bar operator: half the gap to each normal strain
       const double shift = 0.5 * (cell_dilatation - (eh[0] + eh[1]));
@@ -99,7 +116,7 @@ CellSums integrate_cell(const ElementTable& table, const ExactSolution& exact, i
     const Eigen::Vector3d ee = exact.strain(x);
     sums.energy += w * (eh - ee).dot(D * (eh - ee));
     sums.energy_exact += w * ee.dot(D * ee);
-  });
+  }
   return sums;
 }
 

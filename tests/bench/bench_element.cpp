@@ -7,6 +7,8 @@
 //   BM_CongruentCells/N/family               finding the congruent cells alone (0 rcp, 1 quad)
 //   BM_QuadElementTable/N/reuse              the default table on the quad grid of the beam,
 //                                            every cell computed (0) or one per class (1)
+//   BM_ErrorNorms/N                          the L2 and energy errors of the beam's nodal
+//                                            interpolant (the error stage of a solve)
 //   BM_ElementFamily/N/family                the element table of each element family
 //                                            (0 rk, 1 wachspress, 2 mean-value, 3 vem) on the raw
 //                                            Voronoi mesh (regularization 0: convex cells)
@@ -22,6 +24,8 @@
 #include "core/element/ElasticityIntegrator.hpp"
 #include "core/element/ElementTable.hpp"
 #include "core/meshgen/MeshFamily.hpp"
+#include "core/problem/ErrorNorms.hpp"
+#include "core/problem/TimoshenkoBeam.hpp"
 
 namespace {
 
@@ -154,6 +158,22 @@ void BM_CellStiffness(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * mesh.num_cells());
 }
 
+void BM_ErrorNorms(benchmark::State& state) {
+  const PolygonMesh& mesh = rcp_mesh(static_cast<int>(state.range(0)));
+  const ElementTable table(mesh, ElementOptions{});
+  const IsotropicElasticity material(1.0, 0.3, PlaneModel::stress);
+  const TimoshenkoBeam beam(material, 4.0, 1.0, 1.0);
+  auto cell_dofs = [&](int c) {  // the exact solution at the cell's vertices
+    const auto loop = mesh.cell_vertices(c);
+    Eigen::VectorXd u(2 * loop.size());
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      u.segment<2>(2 * k) = beam.displacement(mesh.vertex(loop[k]));
+    return u;
+  };
+  for (auto _ : state) benchmark::DoNotOptimize(compute_errors(table, beam, cell_dofs).l2_error);
+  state.SetItemsProcessed(state.iterations() * mesh.num_cells());
+}
+
 void weight_settings(benchmark::internal::Benchmark* b) {
   for (int n : {10000, 100000})
     for (auto [refinement, degree] : {std::pair{0, 1}, {1, 1}, {2, 1}, {0, 2}, {1, 2}})
@@ -199,6 +219,7 @@ BENCHMARK(BM_QuadElementTable)
     ->ArgsProduct({{65536, 262144}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(BM_ErrorNorms)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CellStiffness)->Args({100000, 0})->Args({100000, 1})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -172,6 +172,16 @@ FractureEnergies CohesiveFracture::energies(const Eigen::VectorXd& u,
   return out;
 }
 
+std::vector<int> CohesiveFracture::face_end_dofs() const {
+  std::vector<int> dofs;
+  for (const Interface& f : space_->interfaces())
+    for (int s = 0; s < 2; ++s)
+      for (int first : {f.dof_v0[s], f.dof_v1[s]}) dofs.push_back(first), dofs.push_back(first + 1);
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  return dofs;
+}
+
 std::vector<int> CohesiveFracture::eligible_points(
     const std::vector<InterfacePoint>& points) const {
   std::vector<int> out;

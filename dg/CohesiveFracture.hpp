@@ -66,6 +66,10 @@ class CohesiveFracture {
   const std::vector<InterfacePoint>& initial_points() const { return initial_points_; }
   const CohesiveInterfaces& interfaces() const { return *interfaces_; }
   const FractureSetup& setup() const { return setup_; }
+  /// The DOFs the crack faces' terms act on: both ends of every split edge on both sides (a
+  /// shape function's trace on an edge is its two ends' only). With the faces' points in fixed
+  /// states (pre-inserted), every other entry of the tangent is the bulk's and never changes.
+  std::vector<int> face_end_dofs() const;
 
   /// Internal forces of u (per unit thickness) and, if asked, the tangent on all DOFs (always
   /// in the same pattern, so that the solver can restrict it in place).

@@ -62,7 +62,26 @@ void QuasiStaticPath::factor(const Eigen::SparseMatrix<double>& tangent, Eigen::
     free_lower_.emplace(tangent, index, cons.num_free());
   }
   const Eigen::SparseMatrix<double>& A = free_lower_->restrict(tangent);
+  if (!condense_decided_) {
+    condense_decided_ = true;
+    if (options_.condense_faces && model_.setup().mode == CrackingMode::pre_inserted) {
+      std::vector<int> varying;
+      for (int dof : model_.face_end_dofs())
+        if (const int free = cons.free_index(dof); free >= 0) varying.push_back(free);
+      condensed_.emplace(std::move(varying));
+    }
+  }
   q = cons.restrict(tangent * cons.reference());  // dR / d lambda
+  if (condensed_) {
+    try {
+      if (condensed_->factorize(A)) {
+        ++factorizations_;
+        return;
+      }
+    } catch (const NumericalError&) {  // its bulk block is not definite, or S singular
+    }
+    condensed_.reset();  // factored whole from now on
+  }
   FactorizationOptions fo;
   fo.min_rcond = 0.0;  // near a limit point the tangent is nearly singular by nature
   for (;;) {
@@ -79,6 +98,10 @@ void QuasiStaticPath::factor(const Eigen::SparseMatrix<double>& tangent, Eigen::
       analysed_ = false;
     }
   }
+}
+
+Eigen::MatrixXd QuasiStaticPath::solve(const Eigen::MatrixXd& rhs) const {
+  return condensed_ ? condensed_->solve_many(rhs) : solver_.solve_many(rhs);
 }
 
 double QuasiStaticPath::control_gap(const State& start, const State& at, const Eigen::VectorXd& u,
@@ -164,7 +187,10 @@ bool QuasiStaticPath::newton(const State& start, const Target& target, State& ou
       }
       have_factor = true, reused_from = INFINITY;
     }
-    const Eigen::VectorXd a = solver_.solve(-R), b = solver_.solve(q);
+    Eigen::MatrixXd rhs(R.size(), 2);
+    rhs << -R, q;
+    const Eigen::MatrixXd ab = solve(rhs);  // both in one pass over the factor
+    const Eigen::VectorXd a = ab.col(0), b = ab.col(1);
     const std::optional<double> step = load_step(start, out, target, {u, K, q, a, b});
     if (!step) return false;
     const double dl = *step;

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "core/solve/BlockPattern.hpp"
+#include "core/solve/CondensedCholesky.hpp"
 #include "core/solve/SparseCholesky.hpp"
 #include "dg/CohesiveFracture.hpp"
 
@@ -55,6 +56,10 @@ struct PathOptions {
   /// A step is halved (down to 1/64 of its length) while, after it, the energy balance misses
   /// by more than this fraction of the external work (and by more than before the step).
   double balance_tolerance = 5e-4;
+  /// With pre-inserted faces, factor the bulk once and each tangent's faces through their Schur
+  /// complement (CondensedCholesky; the same path to Newton's tolerance); false: the whole
+  /// tangent every time.
+  bool condense_faces = true;
 };
 
 /// One converged point of the path; forces in newtons and energies in joules (thickness in).
@@ -88,6 +93,8 @@ class QuasiStaticPath {
   /// Why a complete path ended before its end point (empty if it reached it).
   const std::string& stop_reason() const { return stop_reason_; }
   int factorizations() const { return factorizations_; }
+  /// Whether the tangents are being factored through the faces' Schur complement.
+  bool condensing() const { return condensed_.has_value(); }
   /// The last converged point.
   const PathPoint& last() const { return last_; }
 
@@ -150,6 +157,8 @@ class QuasiStaticPath {
   bool softened(const State& s) const;
   bool finished(const State& s) const;
   void factor(const Eigen::SparseMatrix<double>& tangent, Eigen::VectorXd& q);
+  /// Solves with the last factorization (condensed or whole), a column per right-hand side.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   PathPoint point_of(const State& s, int step, const PathPoint& previous) const;
   bool take_step(State& state, int& iterations, int& inserted);
   /// The elastic probe from the unloaded `state`: the path's scale, the load factor of the first
@@ -193,6 +202,11 @@ class QuasiStaticPath {
   const CohesiveFracture& model_;
   PathOptions options_;
   SparseCholesky solver_;
+  /// With pre-inserted faces only the faces' end DOFs change the tangent: the bulk is factored
+  /// once and each Newton step factors the faces' Schur complement (reset, for the whole
+  /// factorization, if the tangent ever changes elsewhere).
+  std::optional<CondensedCholesky> condensed_;
+  bool condense_decided_ = false;
   std::optional<RestrictedLower> free_lower_;  // the tangent's free-free lower triangle
   bool indefinite_ = false, analysed_ = false;
   int factorizations_ = 0;

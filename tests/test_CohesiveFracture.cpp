@@ -157,5 +157,70 @@ INSTANTIATE_TEST_SUITE_P(
         BarCase{MeshFamily::file, 0.2, "bilinear", LoadControl::displacement,
                 "bar-symmetric-d0.02.vtu"}));
 
+/// The bar with its crack line's faces pre-inserted, pulled past separation, its tangents
+/// factored through the faces' Schur complement or whole.
+struct CondensedBar {
+  std::vector<PathPoint> path;
+  bool complete = false, condensing = false;
+};
+
+CondensedBar pre_inserted_bar(bool condense) {
+  MeshSpec spec;
+  spec.family = MeshFamily::rcp;
+  spec.domain = Rectangle(0.0, 0.0, 0.2, 0.1);
+  spec.size = 0.02;
+  spec.seed = 3;
+  spec.symmetric = true;  // the crack line made of edges
+  const GeneratedMesh mesh = generate_mesh(spec);
+  const ElementTable table(mesh.mesh, ElementOptions{});
+  const ElasticityIntegrator integrator(table, IsotropicElasticity(kE, kNu, PlaneModel::stress),
+                                        false);
+  const FractureGeometry geometry{fracture_problem("tension-bar"), spec.domain, 0.1, 0.0};
+  const FractureSetup setup =
+      fracture_setup(mesh.mesh, geometry, CrackingMode::pre_inserted, kThickness);
+  // An intrinsic law, K0 = 10 E / h as the notched beam's scenes take it.
+  const CohesiveParameters law{kStrength, kEnergy, 1.0, "linear", 10.0 * kE / spec.size};
+  CohesiveFracture model(table, integrator, setup, law, {kStrength, 0.75, kStrength}, DgOptions{});
+  model.setup_system();
+  PathOptions options;
+  options.control = LoadControl::displacement;
+  options.steps = 30;
+  options.max_stroke = kStrength * 0.2 / kE + 1.2 * CohesiveLaw(law).critical_opening();
+  options.condense_faces = condense;
+  QuasiStaticPath path(model, options);
+  CondensedBar run;
+  run.complete = path.run(
+      [&](const PathPoint& p, const Eigen::VectorXd&, const auto&) { run.path.push_back(p); });
+  run.condensing = path.condensing();
+  return run;
+}
+
+TEST(PreInsertedFaces, TheCondensedTangentFollowsTheSamePath) {
+  const CondensedBar condensed = pre_inserted_bar(true), whole = pre_inserted_bar(false);
+  ASSERT_TRUE(condensed.complete);
+  ASSERT_TRUE(whole.complete);
+  EXPECT_TRUE(condensed.condensing);  // it never had to fall back to the whole tangent
+  EXPECT_FALSE(whole.condensing);
+  ASSERT_EQ(condensed.path.size(), whole.path.size());
+  double peak = 0.0;
+  for (const PathPoint& p : whole.path) peak = std::max(peak, p.load);
+  ASSERT_GT(peak, 0.0);
+  for (std::size_t k = 0; k < whole.path.size(); ++k) {
+    // Both converge to Newton's tolerance (1e-10 of the force scale): the same points to far
+    // below anything a figure shows.
+    EXPECT_NEAR(condensed.path[k].load, whole.path[k].load, 1e-7 * peak) << k;
+    EXPECT_NEAR(condensed.path[k].energy.dissipated, whole.path[k].energy.dissipated,
+                1e-7 * std::max(whole.path.back().energy.dissipated, 1e-300))
+        << k;
+  }
+  EXPECT_GT(whole.path.back().energy.dissipated, 0.0);  // the faces did soften
+  // The same tangent: Newton takes the same iterations (a wrong Schur complement would still
+  // converge on the residual, in many more).
+  int iterations[2] = {0, 0};
+  for (const PathPoint& p : condensed.path) iterations[0] += p.iterations;
+  for (const PathPoint& p : whole.path) iterations[1] += p.iterations;
+  EXPECT_LE(std::abs(iterations[0] - iterations[1]), 2) << iterations[0] << " " << iterations[1];
+}
+
 }  // namespace
 }  // namespace vorodg

@@ -275,11 +275,16 @@ FactorizationReport SparseCholesky::factorize(const Eigen::SparseMatrix<double>&
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
+  return solve_many(Eigen::MatrixXd(rhs)).col(0);
+}
+
+Eigen::MatrixXd SparseCholesky::solve_many(const Eigen::MatrixXd& rhs) const {
   if (!impl_->factor) throw NumericalError("internal: solve before factorize");
   cholmod_dense b{};
-  b.nrow = static_cast<size_t>(rhs.size());
-  b.ncol = 1;
-  b.nzmax = b.d = b.nrow;
+  b.nrow = static_cast<size_t>(rhs.rows());
+  b.ncol = static_cast<size_t>(rhs.cols());
+  b.d = b.nrow;
+  b.nzmax = b.nrow * b.ncol;
   b.x = const_cast<double*>(rhs.data());
   b.xtype = CHOLMOD_REAL;
   b.dtype = CHOLMOD_DOUBLE;
@@ -287,8 +292,8 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& rhs) const {
   if (!x)
     throw NumericalError("CHOLMOD's solve failed (status " + std::to_string(impl_->common.status) +
                          ")");
-  Eigen::VectorXd result =
-      Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), rhs.size());
+  Eigen::MatrixXd result =
+      Eigen::Map<const Eigen::MatrixXd>(static_cast<double*>(x->x), rhs.rows(), rhs.cols());
   cholmod_free_dense(&x, &impl_->common);
   if (!result.allFinite()) throw NumericalError("the sparse solve produced non-finite values");
   return result;

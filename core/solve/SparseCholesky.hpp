@@ -7,6 +7,7 @@
 // couples the two DOFs of a node with the same neighbours, so METIS on the node graph (a quarter
 // of the nonzeros) gives the same fill as METIS on the DOF graph at a fraction of the cost
 // (docs/performance.md).
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
 
@@ -79,6 +80,8 @@ class SparseCholesky {
                                 const FactorizationOptions& options = {});
   /// Solves with the current factor. Throws NumericalError on a non-finite result.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+  /// The same for several right-hand sides at once (one column each): one pass over the factor.
+  Eigen::MatrixXd solve_many(const Eigen::MatrixXd& rhs) const;
 
  private:
   FactorizationReport factorize(const Eigen::SparseMatrix<double>& lower,

@@ -4,6 +4,7 @@
 // fell from the pair before with an observed order, else "does not converge".
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/util/Format.hpp"
@@ -54,7 +55,37 @@ std::optional<double> falling(const QuantityConvergence& q, Pick value) {
   return fell_at(q, k, before->estimate, now->estimate);
 }
 
+/// The finest two levels' common value when every realization of both has it (a quantity
+/// constant by construction, such as a straight crack's tortuosity).
+std::optional<double> one_constant(const QuantityConvergence& q) {
+  const std::size_t n = q.levels.size();
+  const double c = q.levels[n - 1].value.front();
+  for (std::size_t k = n - 2; k < n; ++k)
+    for (double v : q.levels[k].value)
+      if (v != c) return std::nullopt;
+  return c;
+}
+
+/// Both finest samples all equal to c: a law that puts mass p elsewhere shows only c in n draws
+/// with probability (1 - p)^n <= exp(-p n), so at confidence o.confidence, split over the two
+/// samples, p <= ln(2 / (1 - confidence)) / n for each (the rule of three, 3 / n, for one sample
+/// at 95 %). The two laws then differ by at most the larger p in KS distance.
+NotionVerdict constant_in_distribution(const QuantityConvergence& q, double c,
+                                       const StatisticalOptions& o) {
+  const std::size_t n =
+      std::min(q.levels[q.levels.size() - 2].value.size(), q.levels.back().value.size());
+  const double tail = std::log(2.0 / (1.0 - o.confidence));
+  const double bound = tail / static_cast<double>(n);
+  const std::string what = "every realization of the finest two levels is " + fmt(c, 6) +
+                           ": their laws differ by at most " + fmt(bound, 2) + " in KS distance";
+  if (bound <= o.ks_resolution)
+    return {Verdict::converges, what + " (<= " + fmt(o.ks_resolution, 2) + ")"};
+  return {Verdict::undecided, what + "; " + fmt(o.ks_resolution, 2) + " asks",
+          static_cast<std::size_t>(std::ceil(tail / o.ks_resolution))};
+}
+
 NotionVerdict in_distribution(const QuantityConvergence& q, const StatisticalOptions& o) {
+  if (const std::optional<double> c = one_constant(q)) return constant_in_distribution(q, *c, o);
   const LevelStep& s = q.steps.back();
   const std::string ks = "KS D = " + fmt(s.ks.distance, 3) + " (p = " + fmt(s.ks.p_value, 2) +
                          ", detectable " + fmt(s.ks_critical, 2) + ")";

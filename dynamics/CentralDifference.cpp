@@ -189,15 +189,16 @@ double CentralDifference::add_coupling(Eigen::VectorXd& f_int) {
 
 // Inlined into the step's fused loop, whose accumulators then stay in registers (a call per node
 // spilled them, and waited on the mesh's vertices: 9 % of a column run at h = 2).
-[[gnu::always_inline]] inline void CentralDifference::add_state(int i, double* acc) const {
+[[gnu::always_inline]] inline void CentralDifference::add_state(int i, double vx, double vy,
+                                                                double ax, double ay,
+                                                                double* acc) const {
   const double m = mass_node_[i];
-  const Eigen::Vector2d v = v_.segment<2>(2 * i), a = a_.segment<2>(2 * i);
-  const Eigen::Vector2d x = x0_.segment<2>(2 * i) + u_.segment<2>(2 * i);
-  acc[3] += 0.5 * m * v.squaredNorm();
-  acc[4] += m * a.squaredNorm();
-  acc[5] += m * v.x();
-  acc[6] += m * v.y();
-  acc[7] += m * (x.x() * v.y() - x.y() * v.x());
+  const double x = x0_[2 * i] + u_[2 * i], y = x0_[2 * i + 1] + u_[2 * i + 1];
+  acc[3] += 0.5 * m * (vx * vx + vy * vy);
+  acc[4] += m * (ax * ax + ay * ay);
+  acc[5] += m * vx;
+  acc[6] += m * vy;
+  acc[7] += m * (x * vy - y * vx);
 }
 
 void CentralDifference::restart_from(double elastic, bool cells_unchanged) {
@@ -217,8 +218,10 @@ void CentralDifference::restart_from(double elastic, bool cells_unchanged) {
     a_[i] = j < 0 ? applied / m : 2.0 * (vbar_half_[j] - v_[i]) / dt_;
     reaction_[i] = j < 0 ? 0.0 : m * a_[i] - applied;
   }
-  std::array<double, 9> sums = sum_.sum<9>(dofs_.num_nodes(), options_.threads,
-                                           [&](int i, double* acc) { add_state(i, acc); });
+  std::array<double, 9> sums =
+      sum_.sum<9>(dofs_.num_nodes(), options_.threads, [&](int i, double* acc) {
+        add_state(i, v_[2 * i], v_[2 * i + 1], a_[2 * i], a_[2 * i + 1], acc);
+      });
   book(sums, elastic);
 }
 
@@ -258,34 +261,39 @@ const StepRecord& CentralDifference::step() {
                     f_contact_next_);
   boundary_values(t_next + 0.5 * dt_, vbar_next_half_);
   // Second half step, fused with the bookkeeping of the work done over the step.
-  const double c = options_.damping;
+  // Copies, not members or references: those are reloaded after every store to v_, a_, reaction_.
+  const double c = options_.damping, dt = dt_;
+  // One DOF: its velocity v and acceleration a at the step's end, and its work over the step.
+  auto advance = [&, c, dt](int i, double m, double* acc, double& v, double& a) {
+    const int j = prescribed_[i];
+    const double vh = v_half_[i], du = dt * vh;
+    double applied = f_ext_next_[i] + f_contact_next_[i] - f_int_[i];
+    if (bulk_) {
+      applied += f_bulk_next_[i];
+      acc[8] -= 0.5 * du * (f_bulk_[i] + f_bulk_next_[i]);
+    }
+    double r = 0.0;
+    if (j < 0) {
+      a = (applied - c * m * vh) / (m * (1.0 + 0.5 * c * dt));
+      v = vh + 0.5 * dt * a;
+    } else {
+      a = (vbar_next_half_[j] - vbar_half_[j]) / dt;
+      v = vh + 0.5 * dt * a;
+      r = m * a - (applied - c * m * v);
+    }
+    acc[0] += 0.5 * du * (f_ext_[i] + f_ext_next_[i]);
+    acc[1] += 0.5 * du * (reaction_[i] + r);
+    acc[2] += 0.5 * du * c * m * (v_[i] + v);
+    v_[i] = v;
+    a_[i] = a;
+    reaction_[i] = r;
+  };
   auto second_half = [&](int node, double* acc) {
     const double m = mass_node_[node];
-    for (int i = 2 * node; i < 2 * node + 2; ++i) {
-      const int j = prescribed_[i];
-      const double vh = v_half_[i], du = dt_ * vh;
-      double applied = f_ext_next_[i] + f_contact_next_[i] - f_int_[i];
-      if (bulk_) {
-        applied += f_bulk_next_[i];
-        acc[8] -= 0.5 * du * (f_bulk_[i] + f_bulk_next_[i]);
-      }
-      double a, v, r = 0.0;
-      if (j < 0) {
-        a = (applied - c * m * vh) / (m * (1.0 + 0.5 * c * dt_));
-        v = vh + 0.5 * dt_ * a;
-      } else {
-        a = (vbar_next_half_[j] - vbar_half_[j]) / dt_;
-        v = vh + 0.5 * dt_ * a;
-        r = m * a - (applied - c * m * v);
-      }
-      acc[0] += 0.5 * du * (f_ext_[i] + f_ext_next_[i]);
-      acc[1] += 0.5 * du * (reaction_[i] + r);
-      acc[2] += 0.5 * du * c * m * (v_[i] + v);
-      v_[i] = v;
-      a_[i] = a;
-      reaction_[i] = r;
-    }
-    add_state(node, acc);
+    double vx, vy, ax, ay;
+    advance(2 * node, m, acc, vx, ax);
+    advance(2 * node + 1, m, acc, vy, ay);
+    add_state(node, vx, vy, ax, ay, acc);
   };
   const auto sums = sum_.sum<9>(dofs_.num_nodes(), threads, second_half);
   std::swap(f_ext_, f_ext_next_);

@@ -22,13 +22,15 @@ beside it, then renamed), printing its path:
                          (cracks show as gaps where nodes split); reads .vtu with meshio.
   plots/crack_timeline.png  for a fragmentation study: each run's cracked edges against time,
                          a dashed line at its rear strike (column-impact; timeline_plots.py).
-  plots/fragment_cdf_<mesh>_L<level>.png  per mesh and level of a fragmentation study: the
-                         fragment mass-fraction CDFs of all its realizations in one plot.
-  plots/largest_fragment_vs_h.png  for a fragmentation study over two or more mesh levels: the
-                         largest fragment's mass fraction of every complete run against h_avg,
-                         with each level's mean and standard deviation (left), and each
-                         level's pooled fragment mass-fraction CDF (right; the report's KS
-                         distances compare these).
+  plots/fragment_cdf_<mesh>_L<level>.png  per mesh and level of a fragmentation study (the
+                         report's Figures 15, 17-19): the first twelve realizations' fragment
+                         mass-fraction CDFs, the mean CDF over all complete realizations with a
+                         95 % simultaneous bootstrap band, the 5-95 % envelope of single runs,
+                         and an arrow at the mean largest fragment (fragment_level_plots.py).
+  plots/largest_fragment_vs_h.png  for a fragmentation study over two or more mesh levels
+                         (Figure 20): the largest fragment's mass fraction of every complete run
+                         against h_avg with each level's mean and its interval (left), and each
+                         level's mean fragment CDF with its band (right).
   plots/fragments_by_variant.png  for the folder of a fragmentation study with variants (one
                          subfolder each): the fragment count (mean, standard deviation and every
                          run) and the largest fragment's mass fraction against the one scene key
@@ -54,6 +56,7 @@ from plotting_common import (  # noqa: E402
 from snapshot_plots import plot_snapshots  # noqa: E402
 from timeline_plots import plot_crack_timeline  # noqa: E402
 import statistics_plots  # noqa: E402
+import fragment_level_plots  # noqa: E402
 
 # (history column, legend label, colour): the energies of the top panel.
 ENERGIES = (("kinetic_energy", "kinetic", "tab:blue"),
@@ -141,53 +144,28 @@ def plot_fragments(outdir, run, table, dpi):
     save_atomically(fig, os.path.join(outdir, "plots", run["id"] + "_fragments.png"), dpi)
 
 
-def plot_level_cdfs(outdir, runs, dpi):
+def level_groups(outdir, runs):
+    """The complete runs with a fragment table, by (mesh, level): lists of (run, mass fractions)."""
     groups = {}
     for run in runs:
         table = read_fragments(outdir, run)
-        if table:
+        if table and run.get("complete") == "1":
             groups.setdefault((run.get("mesh", "?"), run.get("level", "?")), []).append(
-                (run, table))
-    for (mesh, level), members in groups.items():
-        fig, ax = plt.subplots(figsize=(6.5, 4.5), layout="constrained")
-        for run, table in members:
-            fraction, cdf = mass_cdf(table)
-            ax.step(fraction, cdf, where="post", linewidth=1.0, alpha=0.8,
-                    label=f"R{run.get('realization', '?')}")
-        ax.set(xscale="log", xlabel="fragment mass / total mass", ylabel="cumulative fraction",
-               title=f"{mesh}, level {level}: {len(members)} realizations")
-        light_grid(ax)
-        if len(members) <= 12:
-            ax.legend(fontsize=8)
-        save_atomically(fig, os.path.join(outdir, "plots", f"fragment_cdf_{mesh}_L{level}.png"),
-                        dpi)
+                (run, mass_cdf(table)[0]))
+    return groups
+
+
+def plot_level_cdfs(outdir, runs, dpi):
+    """Figures 15, 17-19: per level, the mean fragment CDF with its band (fragment_level_plots)."""
+    for (mesh, level), members in level_groups(outdir, runs).items():
+        fragment_level_plots.plot_level(outdir, mesh, level, members, dpi)
 
 
 def plot_levels(outdir, runs, dpi):
-    """The largest fragment against h_avg, and the pooled CDF of each level."""
-    levels = {}
-    for run in runs:
-        table = read_fragments(outdir, run)
-        if table and run.get("complete") == "1":
-            levels.setdefault((run.get("mesh", "?"), run.get("level", "?")), []).append(
-                (number(run["h_avg"]), number(run["max_fragment_mass_fraction"]), table))
-    if len(levels) < 2:
-        return
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
-    for (mesh, level), members in sorted(levels.items(), key=lambda kv: -kv[1][0][0]):
-        h, largest = np.array([m[0] for m in members]), np.array([m[1] for m in members])
-        dots = left.plot(h, largest, "o", alpha=0.35, markersize=4)[0]
-        left.errorbar(h.mean(), largest.mean(), yerr=largest.std(ddof=1) if h.size > 1 else 0,
-                      fmt="s", color=dots.get_color(), capsize=4, label=f"{mesh} L{level}")
-        pooled = np.sort(np.concatenate([mass_cdf(m[2])[0] for m in members]))
-        right.step(pooled, np.arange(1, pooled.size + 1) / pooled.size, where="post",
-                   color=dots.get_color(), label=f"{mesh} L{level} ({len(members)} runs)")
-    left.set(xscale="log", xlabel="h_avg (m)", ylabel="largest fragment / total mass")
-    right.set(xscale="log", xlabel="fragment mass / total mass", ylabel="cumulative fraction")
-    for ax in (left, right):
-        light_grid(ax)
-        ax.legend(fontsize=8)
-    save_atomically(fig, os.path.join(outdir, "plots", "largest_fragment_vs_h.png"), dpi)
+    """Figure 20 and the levels' mean CDFs, for two or more levels."""
+    groups = level_groups(outdir, runs)
+    if len(groups) >= 2:
+        fragment_level_plots.plot_levels(outdir, groups, dpi)
 
 
 def plot_perturbation(outdir, dpi):

@@ -95,12 +95,30 @@ void CgElasticity::solve() {
   displacement_ = Eigen::Map<const Eigen::Matrix2Xd>(u.data(), 2, table_.mesh().num_vertices());
 }
 
+Eigen::Matrix2Xd CgElasticity::free_node_points() const {
+  const PolygonMesh& mesh = table_.mesh();
+  Eigen::Matrix2Xd points(2, num_free_dofs() / 2);
+  int placed = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const int x = constraints_->free_index(2 * v), y = constraints_->free_index(2 * v + 1);
+    if (x < 0 || y != x + 1 || x % 2 != 0) continue;
+    points.col(x / 2) = mesh.vertex(v);
+    ++placed;
+  }
+  return 2 * placed == num_free_dofs() ? points : Eigen::Matrix2Xd();
+}
+
 Eigen::VectorXd CgElasticity::solve_by_cholesky() {
   SparseCholesky cholesky;
+  const bool geometric = solver_options_.ordering == FillOrdering::node_geometric ||
+                         solver_options_.ordering == FillOrdering::automatic;
+  const Eigen::Matrix2Xd points = geometric ? free_node_points() : Eigen::Matrix2Xd();
   // The matrix goes to the factorization, which frees it before the factor's values are
   // allocated: one copy of it less at the memory peak of the solve.
-  factorization_ = cholesky.factorize(
-      std::move(K_), {.ordering = solver_options_.ordering, .shared_analyses = shared_analyses_});
+  factorization_ =
+      cholesky.factorize(std::move(K_), {.ordering = solver_options_.ordering,
+                                         .shared_analyses = shared_analyses_,
+                                         .node_points = points.cols() ? &points : nullptr});
   seconds_["analysis"] = factorization_.seconds_analyze;
   seconds_["factorization"] = factorization_.seconds_factorize;
   Stopwatch clock;

@@ -62,6 +62,9 @@ class CgElasticity {
   void add_lifting(int c, const Eigen::Ref<const Eigen::MatrixXd>& Kc,
                    Eigen::VectorXd& lifted) const;
   Eigen::VectorXd solve_by_cholesky();
+  /// The vertex of each node (DOF pair) of the free system, for the geometric ordering; empty
+  /// where the free DOFs do not come in pairs.
+  Eigen::Matrix2Xd free_node_points() const;
   Eigen::VectorXd solve_by_amg_cg();
 
   const ElementTable& table_;

@@ -207,9 +207,9 @@ TEST(SparseCholesky, NodeGraphOrderingSolvesLikeAmdWithLessFill) {
   EXPECT_LT(r_nodes.rcond, 2.0 * r_amd.rcond);
 }
 
-// `auto`: node AMD for a factorization made once below the size, node METIS when the analysis
-// is kept for reuse or shared, or the system is large; the explicit orderings stand for
-// themselves.
+// `auto`: for a factorization made once, the geometric dissection where the nodes' points are
+// given, else node AMD below the size; node METIS when the analysis is kept for reuse or shared,
+// or the system is large; the explicit orderings stand for themselves.
 TEST(SparseCholesky, AutoOrdersALoneFactorizationByNodeAmdAndAKeptOneByMetis) {
   const SpMat L = block_laplacian_lower(65);
   const auto nonzeros = [&](FactorizationOptions options) {
@@ -227,8 +227,11 @@ TEST(SparseCholesky, AutoOrdersALoneFactorizationByNodeAmdAndAKeptOneByMetis) {
             FillOrdering::node_amd);
   EXPECT_EQ(resolve_ordering(FillOrdering::automatic, kAutoAmdBelowDofs, false),
             FillOrdering::node_metis);
+  EXPECT_EQ(resolve_ordering(FillOrdering::automatic, 10 * kAutoAmdBelowDofs, false, true),
+            FillOrdering::node_geometric);
+  EXPECT_EQ(resolve_ordering(FillOrdering::automatic, 10, true, true), FillOrdering::node_metis);
   for (FillOrdering o : {FillOrdering::node_metis, FillOrdering::node_amd, FillOrdering::amd,
-                         FillOrdering::cholmod_default})
+                         FillOrdering::node_geometric, FillOrdering::cholmod_default})
     EXPECT_EQ(resolve_ordering(o, 10, false), o);
 }
 

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <vector>
 
+#include "core/solve/GeometricDissection.hpp"
 #include "core/util/BlasInfo.hpp"
 #include "core/util/Errors.hpp"
 #include "core/util/Format.hpp"
@@ -72,11 +73,23 @@ std::mutex& metis_lock() {
   return lock;
 }
 
-/// A fill-reducing ordering of the node graph (METIS or AMD), expanded to the DOFs of each node.
+/// Expands an ordering of the nodes to the DOFs of each node.
+std::vector<int> dof_permutation(const std::vector<int>& node_perm, int b) {
+  std::vector<int> perm(node_perm.size() * b);
+  for (size_t k = 0; k < node_perm.size(); ++k)
+    for (int d = 0; d < b; ++d) perm[b * k + d] = b * node_perm[k] + d;
+  return perm;
+}
+
+/// A fill-reducing ordering of the node graph (METIS, AMD or the geometric dissection from
+/// `points`), expanded to the DOFs of each node.
 std::vector<int> node_permutation(const Eigen::SparseMatrix<double>& lower, int b, bool metis,
-                                  cholmod_common* c) {
+                                  const Eigen::Matrix2Xd* points, cholmod_common* c) {
   NodeGraph g = node_graph(lower, b);
   const int nodes = static_cast<int>(g.col_start.size()) - 1;
+  if (points)
+    return dof_permutation(geometric_dissection(symmetric_adjacency(g.col_start, g.rows), *points),
+                           b);
   cholmod_sparse view{};
   view.nrow = view.ncol = static_cast<size_t>(nodes);
   view.nzmax = g.rows.size();
@@ -96,10 +109,7 @@ std::vector<int> node_permutation(const Eigen::SparseMatrix<double>& lower, int 
     throw NumericalError(std::string(metis ? "METIS" : "AMD") +
                          " could not order the node graph (CHOLMOD status " +
                          std::to_string(c->status) + ")");
-  std::vector<int> perm(static_cast<size_t>(nodes) * b);
-  for (int k = 0; k < nodes; ++k)
-    for (int d = 0; d < b; ++d) perm[static_cast<size_t>(b) * k + d] = b * node_perm[k] + d;
-  return perm;
+  return dof_permutation(node_perm, b);
 }
 
 /// Gives the heap's free pages back to the system before the factor, the memory peak of a
@@ -185,15 +195,21 @@ void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
   if (factor) cholmod_free_factor(&factor, &common);
   cholmod_sparse a = view_of(lower, -1);
   const int b = options.block_size;
-  const FillOrdering ordering = resolve_ordering(options.ordering, lower.cols(),
-                                                 options.reuse_analysis || options.shared_analyses);
-  // METIS pays off only on large graphs; small systems (patch tests, coarse levels) use AMD.
-  const bool by_nodes = ordering == FillOrdering::node_metis || ordering == FillOrdering::node_amd;
+  const bool has_points = options.node_points && options.node_points->cols() * b == lower.cols();
+  const FillOrdering ordering =
+      resolve_ordering(options.ordering, lower.cols(),
+                       options.reuse_analysis || options.shared_analyses, has_points);
+  const bool geometric = ordering == FillOrdering::node_geometric && has_points;
+  // Orderings of the node graph pay off only on large graphs; small systems (patch tests, coarse
+  // levels) use AMD.
+  const bool by_nodes = ordering == FillOrdering::node_metis ||
+                        ordering == FillOrdering::node_amd ||
+                        ordering == FillOrdering::node_geometric;
   const bool use_nodes = by_nodes && b >= 1 && lower.cols() % b == 0 && lower.cols() >= 4000;
   common.postorder = 1;
   if (use_nodes) {
-    std::vector<int> perm =
-        node_permutation(lower, b, ordering == FillOrdering::node_metis, &common);
+    std::vector<int> perm = node_permutation(lower, b, ordering != FillOrdering::node_amd,
+                                             geometric ? options.node_points : nullptr, &common);
     common.nmethods = 1;
     common.method[0].ordering = CHOLMOD_GIVEN;
     factor = cholmod_analyze_p(&a, perm.data(), nullptr, 0, &common);
@@ -210,10 +226,12 @@ void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& lower,
                          std::to_string(common.status) + ", out of memory?)");
 }
 
-FillOrdering resolve_ordering(FillOrdering ordering, long dofs, bool analysis_reused) {
+FillOrdering resolve_ordering(FillOrdering ordering, long dofs, bool analysis_reused,
+                              bool has_points) {
   if (ordering != FillOrdering::automatic) return ordering;
-  return analysis_reused || dofs >= kAutoAmdBelowDofs ? FillOrdering::node_metis
-                                                      : FillOrdering::node_amd;
+  if (analysis_reused) return FillOrdering::node_metis;
+  if (has_points) return FillOrdering::node_geometric;
+  return dofs >= kAutoAmdBelowDofs ? FillOrdering::node_metis : FillOrdering::node_amd;
 }
 
 SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}

@@ -19,12 +19,17 @@ namespace vorodg {
 enum class FillOrdering {
   node_metis,       // METIS nested dissection on the node graph (block_size DOFs per node)
   node_amd,         // approximate minimum degree on the node graph: fast, more fill
+  /// Nested dissection of the node graph by coordinate bisection (GeometricDissection), from
+  /// FactorizationOptions::node_points; node_metis where the caller has none.
+  node_geometric,
   amd,              // approximate minimum degree on the DOF graph
   cholmod_default,  // CHOLMOD's own choice: AMD, then METIS if AMD's fill is poor
-  /// node_amd for a factorization made once (its analysis neither kept for reuse nor shared)
-  /// below kAutoAmdBelowDofs unknowns, node_metis otherwise: on one solve AMD's cheap analysis
-  /// outweighs METIS's smaller factor there (docs/performance.md, "The ordering"); an analysis
-  /// that serves several factorizations, or a factor that serves many solves, wants the smaller
+  /// For a factorization made once (its analysis neither kept for reuse nor shared):
+  /// node_geometric where the nodes' points are given, else node_amd below kAutoAmdBelowDofs
+  /// unknowns; node_metis otherwise. On one solve the geometric dissection's cheap analysis and
+  /// a factor between METIS's and AMD's beat both, and AMD's cheap analysis outweighs METIS's
+  /// smaller factor below the size (docs/performance.md, "The ordering"); an analysis that
+  /// serves several factorizations, or a factor that serves many solves, wants the smallest
   /// factor.
   automatic,
 };
@@ -34,7 +39,8 @@ enum class FillOrdering {
 inline constexpr long kAutoAmdBelowDofs = 1'000'000;
 
 /// The ordering `automatic` stands for (the others stand for themselves).
-FillOrdering resolve_ordering(FillOrdering ordering, long dofs, bool analysis_reused);
+FillOrdering resolve_ordering(FillOrdering ordering, long dofs, bool analysis_reused,
+                              bool has_points = false);
 
 struct FactorizationReport {
   double rcond = 0.0;              // CHOLMOD's estimate: (min diag L / max diag L)^2
@@ -59,6 +65,8 @@ struct FactorizationOptions {
   /// Analyses shared with other factorizations (of other runs on the same mesh): one kept for
   /// this matrix's pattern is used instead of analyzing again, a new one is kept there.
   SymbolicAnalyses* shared_analyses = nullptr;
+  /// The position of each node (block_size DOFs) of the matrix, for FillOrdering::node_geometric.
+  const Eigen::Matrix2Xd* node_points = nullptr;
 };
 
 class SparseCholesky {

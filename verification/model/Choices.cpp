@@ -53,9 +53,10 @@ const Choices& generated_family_choices() {
 
 const Choices& ordering_choices() {
   static const Choices choices = choice_table(R"(
-auto        node-amd for a CG factorization made once on a moderate system, else node-metis
+auto        made once: node-geometric (CG), else node-amd below 1e6 DOFs; node-metis otherwise
 node-metis  METIS nested dissection on the node graph
 node-amd    approximate minimum degree on the node graph
+node-geometric  nested dissection by coordinate bisection of the node graph (CG; else node-metis)
 amd         approximate minimum degree on the DOF graph
 cholmod     CHOLMOD's own choice
 )");
@@ -131,8 +132,8 @@ std::string choice_alternatives(const Choices& choices) {
 namespace {
 
 constexpr FillOrdering kOrderings[] = {FillOrdering::automatic, FillOrdering::node_metis,
-                                       FillOrdering::node_amd, FillOrdering::amd,
-                                       FillOrdering::cholmod_default};
+                                       FillOrdering::node_amd, FillOrdering::node_geometric,
+                                       FillOrdering::amd, FillOrdering::cholmod_default};
 constexpr LinearSolverKind kSolvers[] = {LinearSolverKind::automatic, LinearSolverKind::cholmod,
                                          LinearSolverKind::amg_cg};
 constexpr ElementFamily kElements[] = {ElementFamily::rk, ElementFamily::wachspress,

@@ -17,8 +17,8 @@ namespace vorodg {
 
 /// How the fill-reducing ordering is chosen.
 enum class FillOrdering {
-  node_metis,       // METIS nested dissection on the node graph (block_size DOFs per node)
-  node_amd,         // approximate minimum degree on the node graph: fast, more fill
+  node_metis,  // METIS nested dissection on the node graph (block_size DOFs per node)
+  node_amd,    // approximate minimum degree on the node graph: fast, more fill
   /// Nested dissection of the node graph by coordinate bisection (GeometricDissection), from
   /// FactorizationOptions::node_points; node_metis where the caller has none.
   node_geometric,

@@ -132,8 +132,8 @@ std::string choice_alternatives(const Choices& choices) {
 namespace {
 
 constexpr FillOrdering kOrderings[] = {FillOrdering::automatic, FillOrdering::node_metis,
-                                       FillOrdering::node_amd, FillOrdering::node_geometric,
-                                       FillOrdering::amd, FillOrdering::cholmod_default};
+                                       FillOrdering::node_amd,  FillOrdering::node_geometric,
+                                       FillOrdering::amd,       FillOrdering::cholmod_default};
 constexpr LinearSolverKind kSolvers[] = {LinearSolverKind::automatic, LinearSolverKind::cholmod,
                                          LinearSolverKind::amg_cg};
 constexpr ElementFamily kElements[] = {ElementFamily::rk, ElementFamily::wachspress,

@@ -270,6 +270,8 @@ bool QuasiStaticPath::calibrate(const State& state) {
     failure_ = "the elastic probe did not converge";
     return false;
   }
+  probe_.x = probe.x;
+  probe_.lambda = probe.lambda;
   // The response is linear until something softens: scale the probe so that the largest interface
   // traction is the strength, and estimate the first event from the utilization there.
   const Eigen::VectorXd u1 = full(probe) / lambda_probe;
@@ -374,6 +376,8 @@ void QuasiStaticPath::archive(StateArchive& a) {
   a.value("path.factorizations", factorizations_);
   a.value("path.force_scale", force_scale_);
   a.value("path.elastic_step", elastic_step_);
+  a.vector("path.probe.x", probe_.x);
+  a.value("path.probe.lambda", probe_.lambda);
   a.value("path.arc", arc_);
   a.value("path.arc_start", arc_start_);
 }

@@ -60,6 +60,10 @@ struct PathOptions {
   /// complement (CondensedCholesky; the same path to Newton's tolerance); false: the whole
   /// tangent every time.
   bool condense_faces = true;
+  /// Where a step fails at every cut before anything has softened, try every cut again with
+  /// Newton started from the elastic probe scaled to the target (QuasiStaticStep.cpp); false:
+  /// the run fails there, as it did before this existed.
+  bool restart_from_probe = true;
 };
 
 /// One converged point of the path; forces in newtons and energies in joules (thickness in).
@@ -160,7 +164,13 @@ class QuasiStaticPath {
   /// Solves with the last factorization (condensed or whole), a column per right-hand side.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   PathPoint point_of(const State& s, int step, const PathPoint& previous) const;
+  /// One step, cut down to 1 / 2^max_cuts as needed; where every cut fails before anything has
+  /// softened, every cut again with Newton started from the elastic probe.
   bool take_step(State& state, int& iterations, int& inserted);
+  bool try_step(State& state, int& iterations, int& inserted, bool from_probe);
+  /// Newton for `target` started from the elastic probe scaled to it (QuasiStaticStep.cpp says
+  /// why). False where that does not apply or fails.
+  bool newton_from_probe(const State& state, const Target& target, State& out, int& iterations);
   /// The elastic probe from the unloaded `state`: the path's scale, the load factor of the first
   /// event, and the first step of the controls that need one. False (failure_ set) if the probe
   /// does not converge.
@@ -212,6 +222,7 @@ class QuasiStaticPath {
   int factorizations_ = 0;
   double force_scale_ = 1.0;
   double elastic_step_ = 0.0;  // stroke per step before anything softens (cmod, arc-length)
+  State probe_;                // the converged elastic probe (x and lambda)
   double arc_ = 0.0;           // arc-length: the energy the current step releases
   double arc_start_ = 0.0;     // and its first (and largest) value
   std::string failure_;

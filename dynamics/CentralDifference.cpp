@@ -272,15 +272,10 @@ const StepRecord& CentralDifference::step() {
       applied += f_bulk_next_[i];
       acc[8] -= 0.5 * du * (f_bulk_[i] + f_bulk_next_[i]);
     }
-    double r = 0.0;
-    if (j < 0) {
-      a = (applied - c * m * vh) / (m * (1.0 + 0.5 * c * dt));
-      v = vh + 0.5 * dt * a;
-    } else {
-      a = (vbar_next_half_[j] - vbar_half_[j]) / dt;
-      v = vh + 0.5 * dt * a;
-      r = m * a - (applied - c * m * v);
-    }
+    a = j < 0 ? (applied - c * m * vh) / (m * (1.0 + 0.5 * c * dt))
+              : (vbar_next_half_[j] - vbar_half_[j]) / dt;
+    v = vh + 0.5 * dt * a;
+    const double r = j < 0 ? 0.0 : m * a - (applied - c * m * v);
     acc[0] += 0.5 * du * (f_ext_[i] + f_ext_next_[i]);
     acc[1] += 0.5 * du * (reaction_[i] + r);
     acc[2] += 0.5 * du * c * m * (v_[i] + v);

@@ -121,8 +121,8 @@ long factor_entries(const GridSystem& g, FillOrdering ordering) {
 }
 
 // On 2D meshes nested dissection fills less than minimum degree as the mesh grows; the
-// geometric one comes close to METIS's multilevel bisection (docs/performance.md, "The
-// ordering"). Measured on the jittered 160 x 160 grid: 4.66 M factor entries against METIS's
+// geometric one comes close to METIS's multilevel bisection (docs/performance.md, "The geometric
+// dissection"). Measured on the jittered 160 x 160 grid: 4.66 M factor entries against METIS's
 // 4.58 M (1.017) and AMD's 4.95 M (0.940).
 TEST(GeometricDissection, FillsAboutAsLittleAsMetisOnAQuadMesh) {
   const GridSystem g = grid_system(160, 160, 0.3, 3);

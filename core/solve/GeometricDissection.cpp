@@ -1,7 +1,6 @@
 #include "core/solve/GeometricDissection.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 
 #include "core/util/Errors.hpp"

@@ -7,7 +7,7 @@
 // by a line on a quasi-uniform mesh). Ordering the halves first, each dissected again, and the
 // separator last gives the fill of nested dissection (O(n log n) in 2D) at the cost of a few
 // partial sorts, where METIS's multilevel bisection costs several times the minimum-degree
-// ordering it beats (docs/performance.md, "The ordering").
+// ordering it beats (docs/performance.md, "The geometric dissection").
 #include <Eigen/Core>
 #include <vector>
 

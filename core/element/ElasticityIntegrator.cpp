@@ -1,6 +1,7 @@
 #include "core/element/ElasticityIntegrator.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "core/element/VirtualElement.hpp"
 
@@ -39,6 +40,15 @@ void ElasticityIntegrator::strain_operator_of(int c, const Eigen::Vector2d* grad
 }
 
 void ElasticityIntegrator::cell_matrix(int c, Eigen::MatrixXd& K) const {
+  if (mean_dilation_)
+    strain_operator_stiffness(c, K);
+  else  // the standard B: the same sum from products of the gradients
+    standard_strain_stiffness(table_.weights(c), &table_.grad(c, 0, 0), table_.num_nodes(c),
+                              material_.D(), K);
+  if (table_.options().family == ElementFamily::vem) add_vem_stabilization(c, K);
+}
+
+void ElasticityIntegrator::strain_operator_stiffness(int c, Eigen::MatrixXd& K) const {
   const int n = table_.num_nodes(c);
   K.setZero(2 * n, 2 * n);
   StrainOperator B;
@@ -47,7 +57,6 @@ void ElasticityIntegrator::cell_matrix(int c, Eigen::MatrixXd& K) const {
     strain_operator(c, q, B);
     K.noalias() += table_.weight(c, q) * (B.transpose() * D * B);
   }
-  if (table_.options().family == ElementFamily::vem) add_vem_stabilization(c, K);
 }
 
 /// The virtual element's stabilization, tau trace(K) / (2n) (I - P)^T (I - P) on each
@@ -95,14 +104,21 @@ Eigen::Vector3d ElasticityIntegrator::mean_stress(int c, const Eigen::VectorXd& 
 }
 
 StrainOperator ElasticityIntegrator::mean_strain_operator(int c) const {
-  StrainOperator B, sum = StrainOperator::Zero(3, 2 * table_.num_nodes(c));
+  // B is linear in the gradients, so its mean is B of the mean gradients; and the B-bar shift
+  // (the cell-mean dilatation minus the pointwise one) vanishes there, so both operators agree.
+  const int n = table_.num_nodes(c);
+  thread_local std::vector<Eigen::Vector2d> mean;
+  mean.assign(n, Eigen::Vector2d::Zero());
   double area = 0.0;
   for (int q = 0; q < table_.num_points(c); ++q) {
-    strain_operator(c, q, B);
-    sum += table_.weight(c, q) * B;
-    area += table_.weight(c, q);
+    const double w = table_.weight(c, q);
+    area += w;
+    for (int k = 0; k < n; ++k) mean[k] += w * table_.grad(c, q, k);
   }
-  return sum / area;
+  for (Eigen::Vector2d& g : mean) g /= area;
+  StrainOperator B;
+  vorodg::strain_operator(mean.data(), n, B);
+  return B;
 }
 
 ElasticityIntegrator::MeanStrainOperators ElasticityIntegrator::all_mean_strain_operators(

@@ -66,6 +66,8 @@ class ElasticityIntegrator {
   }
 
  private:
+  /// sum_q w_q B_q^T D B_q with B formed at every point (any strain operator: B-bar).
+  void strain_operator_stiffness(int c, Eigen::MatrixXd& K) const;
   void add_vem_stabilization(int c, Eigen::MatrixXd& K) const;
 
   const ElementTable& table_;

@@ -62,6 +62,10 @@ class ElementTable {
   int num_nodes(int c) const { return mesh_.cell_size(c); }
   const Point& point(int c, int q) const { return points_[point_offsets_[c] + q]; }
   double weight(int c, int q) const { return weights_q_[point_offsets_[c] + q]; }
+  /// The weights of all of cell c's quadrature points.
+  std::span<const double> weights(int c) const {
+    return {weights_q_.data() + point_offsets_[c], std::size_t(num_points(c))};
+  }
   const FanPoint& fan_point(int c, int q) const { return fan_points_[point_offsets_[c] + q]; }
   /// psi_k and grad psi_k of the cell's vertex k at quadrature point q.
   double shape(int c, int q, int k) const {

@@ -112,6 +112,39 @@ std::vector<int> node_permutation(const Eigen::SparseMatrix<double>& lower, int 
   return dof_permutation(node_perm, b);
 }
 
+/// The lower triangle of A(p, p) from the lower triangle of A in one counting pass: entry (i, j)
+/// goes to (max, min) of (pinv[i], pinv[j]). Its columns come out unsorted (flagged so), which
+/// is all the supernodal kernel needs: it scatters each column into its supernode through a
+/// map. cholmod_factorize instead transposes twice, to sort them.
+cholmod_sparse* permuted_lower(const Eigen::SparseMatrix<double>& lower, const int* perm,
+                               cholmod_common* c) {
+  const int n = static_cast<int>(lower.cols());
+  std::vector<int> pinv(n);
+  for (int k = 0; k < n; ++k) pinv[perm[k]] = k;
+  const int* p = lower.outerIndexPtr();
+  const int* i = lower.innerIndexPtr();
+  const double* x = lower.valuePtr();
+  cholmod_sparse* out = cholmod_allocate_sparse(n, n, lower.nonZeros(), /*sorted=*/0, /*packed=*/1,
+                                                /*stype=*/-1, CHOLMOD_REAL, c);
+  if (!out) return nullptr;
+  int* op = static_cast<int*>(out->p);
+  int* oi = static_cast<int*>(out->i);
+  double* ox = static_cast<double*>(out->x);
+  std::fill(op, op + n + 1, 0);
+  for (int j = 0; j < n; ++j)
+    for (int q = p[j]; q < p[j + 1]; ++q) ++op[std::min(pinv[i[q]], pinv[j]) + 1];
+  for (int k = 0; k < n; ++k) op[k + 1] += op[k];
+  std::vector<int> next(op, op + n);
+  for (int j = 0; j < n; ++j)
+    for (int q = p[j]; q < p[j + 1]; ++q) {
+      const int a = pinv[i[q]], b = pinv[j];
+      const int at = next[std::min(a, b)]++;
+      oi[at] = std::max(a, b);
+      ox[at] = x[q];
+    }
+  return out;
+}
+
 /// Gives the heap's free pages back to the system before the factor, the memory peak of a
 /// solve, is allocated. glibc returns only the top of a heap by itself; the holes that the
 /// assembly and the element table's released arrays leave in its middle stayed resident (0.2 GB
@@ -143,28 +176,21 @@ struct SparseCholesky::Impl {
 };
 
 /// The numeric factorization. With `release` (the matrix given up by the caller, `lower`
-/// itself) and a permuted supernodal factor, it does what cholmod_factorize does in that case
-/// (the permuted lower triangle through two transposes, then the supernodal kernel) but frees
-/// the caller's matrix between the two: one copy of the matrix less beside the factor, the
-/// memory peak of a solve. The factor is the same to the bit.
+/// itself) and a permuted supernodal factor, it hands the supernodal kernel the permuted lower
+/// triangle built in one pass (cholmod_factorize transposes twice) and frees the caller's
+/// matrix before the kernel runs: one copy of the matrix less beside the factor, the memory
+/// peak of a solve. The factor is the same to the bit: the kernel places every entry by its
+/// row, whatever the order within a column.
 void SparseCholesky::Impl::numeric(const Eigen::SparseMatrix<double>& lower,
                                    Eigen::SparseMatrix<double>* release) {
-  cholmod_sparse a = view_of(lower, -1);
   if (!release || !factor->is_super || factor->ordering == CHOLMOD_NATURAL) {
+    cholmod_sparse a = view_of(lower, -1);
     cholmod_factorize(&a, factor, &common);
     if (release) *release = Eigen::SparseMatrix<double>();
     return;
   }
   common.status = CHOLMOD_OK;
-  const size_t n = factor->n;
-  cholmod_allocate_work(n, 2 * n + 2 * factor->nsuper, 0, &common);
-  cholmod_sparse* upper =
-      common.status == CHOLMOD_OK
-          ? cholmod_ptranspose(&a, 2, static_cast<int*>(factor->Perm), nullptr, 0, &common)
-          : nullptr;
-  cholmod_sparse* permuted =
-      upper ? cholmod_ptranspose(upper, 2, nullptr, nullptr, 0, &common) : nullptr;
-  cholmod_free_sparse(&upper, &common);
+  cholmod_sparse* permuted = permuted_lower(lower, static_cast<int*>(factor->Perm), &common);
   *release = Eigen::SparseMatrix<double>();  // CHOLMOD has its own copy now
   return_free_memory();
   double zero[2] = {0.0, 0.0};

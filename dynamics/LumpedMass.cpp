@@ -10,6 +10,8 @@ namespace vorodg {
 LumpedMass::LumpedMass(const ElementTable& table, double density)
     : offsets_(table.mesh().offsets()), density_(density) {
   require_parameter(density > 0.0, "density", density, "> 0");
+  if (!table.has_shape_values())
+    throw NumericalError("internal: lumped masses from an element table built without psi");
   const PolygonMesh& mesh = table.mesh();
   pair_.assign(offsets_.back(), 0.0);
   for (int c = 0; c < mesh.num_cells(); ++c) {

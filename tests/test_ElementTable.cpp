@@ -12,7 +12,10 @@
 //     nonzero on general polygons (printed per family), zero on triangles and on regular interior
 //     hexagons; the defect is reported before correction either way;
 //   - moment matrices are well conditioned (smallest reciprocal condition printed);
-//   - threads = 2 gives bitwise the same table as threads = 1.
+//   - threads = 2 gives bitwise the same table as threads = 1;
+//   - a table built without psi (ElementOptions::shape_values) has bitwise the same points,
+//     weights, gradients and quality records, for the rk and vem families, with and without
+//     congruent-cell reuse.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -277,6 +280,33 @@ TEST(ElementTable, ThreadCountDoesNotChangeTheTable) {
         }
       }
     }
+}
+
+TEST(ElementTable, WithoutShapeValuesTheRestIsTheSame) {
+  for (const Family& f : kFamilies)
+    for (ElementFamily family : {ElementFamily::rk, ElementFamily::vem})
+      for (bool reuse : {true, false}) {
+        ElementOptions o;
+        o.family = family;
+        o.reuse_congruent = reuse;
+        const ElementTable with(mesh_of(f), o);
+        o.shape_values = false;
+        const ElementTable without(mesh_of(f), o);
+        EXPECT_TRUE(with.has_shape_values());
+        EXPECT_FALSE(without.has_shape_values());
+        const PolygonMesh& mesh = mesh_of(f);
+        for (int c = 0; c < mesh.num_cells(); ++c) {
+          ASSERT_EQ(with.num_points(c), without.num_points(c));
+          EXPECT_EQ(with.divergence_defect(c), without.divergence_defect(c)) << f.name << " " << c;
+          EXPECT_EQ(with.min_moment_rcond(c), without.min_moment_rcond(c)) << f.name << " " << c;
+          for (int q = 0; q < with.num_points(c); ++q) {
+            ASSERT_EQ(with.point(c, q), without.point(c, q)) << f.name << " cell " << c;
+            ASSERT_EQ(with.weight(c, q), without.weight(c, q)) << f.name << " cell " << c;
+            for (int k = 0; k < with.num_nodes(c); ++k)
+              ASSERT_EQ(with.grad(c, q, k), without.grad(c, q, k)) << f.name << " cell " << c;
+          }
+        }
+      }
 }
 
 }  // namespace

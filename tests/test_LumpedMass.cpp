@@ -6,7 +6,7 @@
 //     shape functions sum to one), to 1e-12 relative;
 //   - node masses of the continuous and fully discontinuous maps are the sums of their pairs,
 //     and copying node velocities to the split nodes keeps the momentum;
-//   - a non-positive density is refused.
+//   - a non-positive density is refused, and so is an element table built without psi.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -92,6 +92,13 @@ TEST(LumpedMass, RefusesANonPositiveDensity) {
   const ElementTable& table = table_of(kFamilies[0], 3, true);
   EXPECT_THROW(LumpedMass(table, 0.0), InputError);
   EXPECT_THROW(LumpedMass(table, -1.0), InputError);
+}
+
+TEST(LumpedMass, RefusesATableWithoutShapeValues) {
+  ElementOptions o;
+  o.shape_values = false;
+  const ElementTable table(mesh_of(kFamilies[0]), o);
+  EXPECT_THROW(LumpedMass(table, kDensity), NumericalError);
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ ElementTable::ElementTable(const PolygonMesh& mesh, const ElementOptions& option
   points_.resize(point_offsets_.back());
   weights_q_.resize(point_offsets_.back());
   fan_points_.resize(point_offsets_.back());
-  shape_.resize(value_offsets_.back());
+  if (options.shape_values) shape_.resize(value_offsets_.back());
   grad_.resize(value_offsets_.back());
   defect_.assign(nc, 0.0);
   rcond_.assign(nc, 0.0);
@@ -180,10 +180,11 @@ void ElementTable::build_cell(int c) {
       weights_q_[first + r] = rule.weights[r] * fan_area;
     }
     const std::size_t v = value_offsets_[c] + static_cast<std::size_t>(k) * per_fan * n;
-    min_rcond = std::min(min_rcond,
-                         fan_shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, k,
-                                             {rule.bary.data(), static_cast<std::size_t>(per_fan)},
-                                             &points_[first], &shape_[v], &grad_[v], &min_weight));
+    min_rcond = std::min(
+        min_rcond,
+        fan_shape_functions(c, nodes, {node_basis, static_cast<std::size_t>(n)}, k,
+                            {rule.bary.data(), static_cast<std::size_t>(per_fan)}, &points_[first],
+                            shape_out(c, v - value_offsets_[c]), &grad_[v], &min_weight));
   }
   rcond_[c] = std::min(min_rcond, 1.0);  // 1 for the families without a moment matrix
   min_weight_[c] = options_.family == ElementFamily::rk ? min_weight : 1.0;
@@ -198,8 +199,9 @@ void ElementTable::copy_cell(int c, int r) {
     weights_q_[to] = weights_q_[from];
     points_[to] = position(c, fan_points_[to]);
   }
-  std::copy_n(shape_.begin() + value_offsets_[r], value_offsets_[r + 1] - value_offsets_[r],
-              shape_.begin() + value_offsets_[c]);
+  if (options_.shape_values)
+    std::copy_n(shape_.begin() + value_offsets_[r], value_offsets_[r + 1] - value_offsets_[r],
+                shape_.begin() + value_offsets_[c]);
   std::copy_n(grad_.begin() + value_offsets_[r], value_offsets_[r + 1] - value_offsets_[r],
               grad_.begin() + value_offsets_[c]);
   defect_[c] = defect_[r], rcond_[c] = rcond_[r], min_weight_[c] = min_weight_[r];
@@ -214,8 +216,7 @@ void ElementTable::build_virtual_element_cell(int c, std::span<const Eigen::Vect
   points_[at] = centroids_[c];
   const double area = mesh_.cell_area(c);
   weights_q_[at] = area;
-  VemProjection(nodes, area)
-      .basis(points_[at], &shape_[value_offsets_[c]], &grad_[value_offsets_[c]]);
+  VemProjection(nodes, area).basis(points_[at], shape_out(c, 0), &grad_[value_offsets_[c]]);
   rcond_[c] = 1.0;
   min_weight_[c] = 1.0;
   close_divergence_gap(c, nodes);
@@ -247,6 +248,13 @@ void ElementTable::close_divergence_gap(int c, std::span<const Eigen::Vector2d> 
 
 int ElementTable::points_per_cell(int n, int per_fan) const {
   return options_.family == ElementFamily::vem ? 1 : n * per_fan;
+}
+
+double* ElementTable::shape_out(int c, std::size_t offset) {
+  if (options_.shape_values) return &shape_[value_offsets_[c] + offset];
+  thread_local std::vector<double> scratch;
+  scratch.resize(std::max(scratch.size(), value_offsets_[c + 1] - value_offsets_[c]));
+  return scratch.data() + offset;
 }
 
 RkCellFrame ElementTable::cell_frame(int c) const {

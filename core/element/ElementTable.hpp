@@ -31,6 +31,10 @@ struct ElementOptions {
   /// translation) take its values instead of computing their own; false: every cell computed.
   bool reuse_congruent = true;
   int threads = 1;  // setup threads; results do not depend on it
+  /// Keep psi at the quadrature points (what body forces and lumped masses read); false keeps
+  /// only the gradients, for runs that need no more (a static solve without body force: 8 bytes
+  /// per node and point less, about a third of the table).
+  bool shape_values = true;
   bool operator==(const ElementOptions&) const = default;
 };
 
@@ -67,7 +71,9 @@ class ElementTable {
     return {weights_q_.data() + point_offsets_[c], std::size_t(num_points(c))};
   }
   const FanPoint& fan_point(int c, int q) const { return fan_points_[point_offsets_[c] + q]; }
-  /// psi_k and grad psi_k of the cell's vertex k at quadrature point q.
+  /// Whether psi is kept at the quadrature points (ElementOptions::shape_values).
+  bool has_shape_values() const { return options_.shape_values; }
+  /// psi_k and grad psi_k of the cell's vertex k at quadrature point q (psi only if kept).
   double shape(int c, int q, int k) const {
     return shape_[value_offsets_[c] + q * num_nodes(c) + k];
   }
@@ -131,6 +137,9 @@ class ElementTable {
   /// Quadrature points of an n-gon: the fan rule's per fan triangle, or one (vem).
   int points_per_cell(int n, int per_fan) const;
   RkCellFrame cell_frame(int c) const;
+  /// Where cell c's psi values go, from the cell's value `offset` on: the table, or scratch
+  /// space of this thread when they are not kept.
+  double* shape_out(int c, std::size_t offset);
   /// psi_k and grad psi_k of the family at points strictly inside cell c, all on fan triangle
   /// `fan` (barycentric `bary`, positions `x`; point after point in psi and grad); the smallest
   /// RK moment-matrix reciprocal condition estimate over them (0 for a non-finite value), or 1.

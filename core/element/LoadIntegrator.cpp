@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/quadrature/TriangleRule.hpp"
+#include "core/util/Errors.hpp"
 
 namespace vorodg {
 
@@ -13,6 +14,8 @@ void add_body_force(const ElementTable& table, const BoundaryValueProblem& probl
     for (int q = 0; q < table.num_points(c); ++q) {
       const Eigen::Vector2d b = problem.body_force(table.point(c, q));
       if (b.isZero()) continue;
+      if (!table.has_shape_values())
+        throw NumericalError("internal: a body force on an element table built without psi");
       for (int k = 0; k < mesh.cell_size(c); ++k)
         f.segment<2>(first_dof(c, k)) += table.weight(c, q) * table.shape(c, q, k) * b;
     }

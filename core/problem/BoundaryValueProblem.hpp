@@ -23,6 +23,9 @@ class BoundaryValueProblem {
   virtual Eigen::Vector2d traction(const Point& x, const Eigen::Vector2d& n) const = 0;
   /// Body force per unit area.
   virtual Eigen::Vector2d body_force(const Point& x) const = 0;
+  /// False only if the body force is zero everywhere (then a solve needs no psi at the
+  /// quadrature points).
+  virtual bool has_body_force() const { return true; }
 
   bool has_dirichlet_side() const {
     for (Side s : {Side::left, Side::right, Side::bottom, Side::top})

@@ -17,6 +17,7 @@ class TimoshenkoBeam : public ExactSolution {
   std::array<Eigen::Matrix2d, 2> hessian(const Point& x) const override;
   /// The beam is in equilibrium without body force (exactly; -div sigma evaluates to ~1e-15).
   Eigen::Vector2d body_force(const Point&) const override { return Eigen::Vector2d::Zero(); }
+  bool has_body_force() const override { return false; }
 
   /// The beam's domain, [0, L] x [-D/2, D/2].
   Rectangle domain() const { return {0.0, -depth_ / 2, length_, depth_ / 2}; }

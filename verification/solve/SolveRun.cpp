@@ -135,8 +135,8 @@ namespace {
 
 /// The run's element table: the one shared by the runs on the mesh, or its own (`own`).
 const ElementTable& obtain_table(const PolygonMesh& mesh, const SolveSettings& settings,
-                                 SharedMeshWork* shared, std::unique_ptr<ElementTable>& own,
-                                 SolveResult& result) {
+                                 const BoundaryValueProblem& problem, SharedMeshWork* shared,
+                                 std::unique_ptr<ElementTable>& own, SolveResult& result) {
   if (shared) {
     if (&shared->mesh() != &mesh) throw NumericalError("internal: shared work of another mesh");
     bool reused = false;
@@ -146,7 +146,9 @@ const ElementTable& obtain_table(const PolygonMesh& mesh, const SolveSettings& s
     return table;
   }
   Stopwatch clock;
-  own = std::make_unique<ElementTable>(mesh, settings.element);
+  ElementOptions options = settings.element;  // a table of its own keeps only what it needs
+  options.shape_values = problem.has_body_force();
+  own = std::make_unique<ElementTable>(mesh, options);
   result.seconds["element"] = clock.seconds();
   return *own;
 }
@@ -273,7 +275,7 @@ SolveResult run_solve(const PolygonMesh& mesh, const SolveSettings& settings,
   SolveResult result;
   const auto problem = make_problem(settings, mesh.domain());
   std::unique_ptr<ElementTable> own_table;
-  const ElementTable& table = obtain_table(mesh, settings, shared, own_table, result);
+  const ElementTable& table = obtain_table(mesh, settings, *problem, shared, own_table, result);
   record_element_quality(table, result);
   const ElasticityIntegrator integrator(table, problem->material(), settings.mean_dilation);
   SymbolicAnalyses* analyses = shared ? &shared->analyses() : nullptr;

@@ -34,7 +34,8 @@ std::vector<LevelSample> levels(std::size_t n, Value value, std::uint64_t seed =
   for (double& v : x) v = normal(rng);
   std::vector<LevelSample> out;
   for (std::size_t k = 0; k < kH.size(); ++k) {
-    LevelSample l{kH[k], {}, {}};
+    LevelSample l;
+    l.h_avg = kH[k];
     for (std::size_t i = 0; i < n; ++i) {
       l.realization.push_back(static_cast<int>(i));
       l.value.push_back(value(kH[k], x[i], normal(rng), k));
@@ -119,6 +120,30 @@ TEST(StatisticalConvergence, TwelveRealizationsCannotDecideAndSayHowManyWould) {
   EXPECT_GT(q.of_mean.realizations, 12u);
 }
 
+TEST(StatisticalConvergence, AQuantityHalfTheRunsMeasureAsksForTwiceTheRuns) {
+  // Twelve values per level as above, but from 24 complete runs (a rear-strike time that half the
+  // columns have): the planner's values and pairs are each twice as many runs.
+  StatisticalOptions o;
+  o.coupled = true;
+  const auto spread = [](double, double, double z, std::size_t) { return 0.3 + 0.1 * z; };
+  const auto all = statistical_convergence("strike time", levels(12, spread), o);
+  auto half_measured = levels(12, spread);
+  for (LevelSample& l : half_measured)
+    for (int i = 0; i < 24; ++i) l.complete.push_back(i);
+  const auto q = statistical_convergence("strike time", half_measured, o);
+  EXPECT_EQ(q.steps.back().measured_share, 0.5);
+  EXPECT_EQ(q.steps.back().paired_share, 0.5);
+  ASSERT_EQ(all.in_distribution.verdict, Verdict::undecided);
+  EXPECT_EQ(q.in_distribution.realizations, 2 * all.in_distribution.realizations);
+  ASSERT_EQ(all.of_mean.verdict, Verdict::undecided) << all.of_mean.reason;
+  EXPECT_EQ(q.of_mean.realizations, 2 * all.of_mean.realizations);
+  EXPECT_NE(q.of_mean.reason.find("50 % of the runs give one"), std::string::npos)
+      << q.of_mean.reason;
+  // A measured realization missing from the complete runs is refused.
+  half_measured[1].complete = {0, 1, 2};
+  EXPECT_THROW(statistical_convergence("strike time", half_measured, o), InputError);
+}
+
 TEST(StatisticalConvergence, AConstantQuantityConvergesInDistributionOnceTheSampleBoundsIt) {
   // A straight crack's tortuosity: 1 in every run. With n runs per level the laws can differ by
   // at most ln(2 / 0.05) / n = 3.69 / n at 95 %: 362 runs bound it by 0.0102 (< 0.1); 12 runs
@@ -139,13 +164,20 @@ TEST(StatisticalConvergence, AConstantQuantityConvergesInDistributionOnceTheSamp
   EXPECT_EQ(q.in_distribution.reason.find("every realization"), std::string::npos);
 }
 
+LevelSample sample(double h, std::vector<int> realization, std::vector<double> value) {
+  LevelSample l;
+  l.h_avg = h;
+  l.realization = std::move(realization);
+  l.value = std::move(value);
+  return l;
+}
+
 TEST(StatisticalConvergence, RefusesWhatItCannotAnalyse) {
-  const LevelSample one{0.1, {0, 1}, {1.0, 2.0}};
+  const LevelSample one = sample(0.1, {0, 1}, {1.0, 2.0});
   EXPECT_THROW(statistical_convergence("q", {one}), InputError);
-  EXPECT_THROW(statistical_convergence("q", {one, LevelSample{0.05, {0}, {1.0}}}), InputError);
+  EXPECT_THROW(statistical_convergence("q", {one, sample(0.05, {0}, {1.0})}), InputError);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(statistical_convergence("q", {one, LevelSample{0.05, {0, 1}, {1.0, nan}}}),
-               InputError);
+  EXPECT_THROW(statistical_convergence("q", {one, sample(0.05, {0, 1}, {1.0, nan})}), InputError);
 }
 
 TEST(StatisticalConvergenceReport, WritesEveryQuantityAndNumbersThatReadBack) {
@@ -210,9 +242,12 @@ TEST(StatisticalReport, GroupsCompleteRecordsByMeshBlockAndLevel) {
   EXPECT_EQ(q[0].mesh, "a");
   ASSERT_EQ(q[0].levels.size(), 2u);
   EXPECT_NEAR(q[0].levels[0].h_avg, 0.21, 1e-15);
-  EXPECT_NEAR(q[0].levels[1].h_avg, 0.11, 1e-15);
+  // The level's h and cost are its complete runs' (the one not measured included), its values
+  // the measured ones.
+  EXPECT_NEAR(q[0].levels[1].h_avg, (0.1 + 0.12 + 0.1) / 3.0, 1e-15);
   EXPECT_EQ(q[0].levels[1].value, (std::vector<double>{11.0, 11.5}));
-  EXPECT_EQ(q[0].levels[1].core_seconds, 3.0);  // the two runs kept, 1.5 s each
+  EXPECT_EQ(q[0].levels[1].complete, (std::vector<int>{0, 1, 3}));
+  EXPECT_EQ(q[0].levels[1].core_seconds, 4.5);  // three complete runs, 1.5 s each
   EXPECT_NEAR(q[0].steps[0].mean_change.estimate, 11.0 - 11.25, 1e-14);
 }
 

@@ -73,22 +73,26 @@ std::vector<QuantityConvergence> statistical_convergence_of(
     const std::vector<nlohmann::json>& records, const StatisticalSettings& settings) {
   std::vector<QuantityConvergence> out;
   for (const std::string& quantity : settings.quantities) {
-    // (mesh block, level) -> the level's sample; h_avg the mean over its runs.
+    // (mesh block, level) -> the level's sample; h_avg the mean over its complete runs, so that
+    // every quantity of a level has the same h.
     std::map<std::pair<std::string, int>, LevelSample> levels;
     for (const nlohmann::json& r : records) {
-      if (!r.value("complete", true) || !r.contains(quantity)) continue;
+      if (!r.value("complete", true)) continue;
+      LevelSample& l = levels[{r.at("mesh").get<std::string>(), r.at("level").get<int>()}];
+      // Every complete run counts for the level's cost and for how many runs a value takes.
+      l.complete.push_back(r.at("realization").get<int>());
+      l.h_avg += read_number(r.at("h_avg"));
+      if (r.contains("seconds")) l.core_seconds += read_number(r.at("seconds"));
+      if (!r.contains(quantity)) continue;
       const double v = read_number(r.at(quantity));
       if (!std::isfinite(v)) continue;  // not measured in this run (a column that never struck)
-      LevelSample& l = levels[{r.at("mesh").get<std::string>(), r.at("level").get<int>()}];
-      l.h_avg += read_number(r.at("h_avg"));
-      l.realization.push_back(r.at("realization").get<int>());
-      if (r.contains("seconds")) l.core_seconds += read_number(r.at("seconds"));
+      l.realization.push_back(l.complete.back());
       l.value.push_back(v);
     }
     std::map<std::string, std::vector<LevelSample>> by_mesh;
     for (auto& [key, l] : levels) {
       l.level = key.second;
-      l.h_avg /= static_cast<double>(l.value.size());
+      l.h_avg /= static_cast<double>(l.complete.size());
       if (l.value.size() >= 2) by_mesh[key.first].push_back(std::move(l));
     }
     for (auto& [mesh, samples] : by_mesh) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <set>
 #include <string>
 
 #include "core/util/Errors.hpp"
@@ -62,9 +64,32 @@ std::pair<std::vector<double>, std::vector<double>> pairs_of(const LevelSample& 
   return {a, b};
 }
 
+/// The realizations of a level's complete runs, measured or not.
+std::set<int> complete_runs(const LevelSample& l) {
+  const std::vector<int>& all = l.complete.empty() ? l.realization : l.complete;
+  return {all.begin(), all.end()};
+}
+
+/// The share of complete runs that measured the quantity, the smaller of the two levels.
+double measured_share(const LevelSample& coarse, const LevelSample& fine) {
+  const auto share = [](const LevelSample& l) {
+    return static_cast<double>(l.value.size()) / static_cast<double>(complete_runs(l).size());
+  };
+  return std::min(share(coarse), share(fine));
+}
+
+/// Pairs per realization complete at both levels.
+double paired_share(const LevelSample& coarse, const LevelSample& fine, std::size_t pairs) {
+  const std::set<int> a = complete_runs(coarse), b = complete_runs(fine);
+  std::vector<int> both;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+  return both.empty() ? 1.0 : static_cast<double>(pairs) / static_cast<double>(both.size());
+}
+
 LevelStep compare(const LevelSample& coarse, const LevelSample& fine, double epsilon,
                   const StatisticalOptions& o) {
   LevelStep s;
+  s.measured_share = measured_share(coarse, fine);
   s.ks = ks_two_sample(coarse.value, fine.value);
   const double n = static_cast<double>(coarse.value.size()),
                m = static_cast<double>(fine.value.size());
@@ -76,6 +101,7 @@ LevelStep compare(const LevelSample& coarse, const LevelSample& fine, double eps
   const auto [a, b] = pairs_of(coarse, fine);
   if (a.size() < 2) return s;
   s.coupled = coupled_differences(a, b, epsilon, o.confidence);
+  s.paired_share = paired_share(coarse, fine, a.size());
   s.mean_change = s.coupled->mean_difference;
   s.change_std_dev = s.coupled->difference_std_dev;
   return s;
@@ -98,6 +124,11 @@ QuantityConvergence statistical_convergence(std::string name, std::vector<LevelS
       throw InputError("statistical convergence of " + q.name + ": a level at h = " + fmt(l.h_avg) +
                        " has " + std::to_string(l.value.size()) +
                        " value(s): expected at least 2, each with its realization");
+    const std::set<int> measured(l.realization.begin(), l.realization.end()),
+        all = complete_runs(l);
+    if (!std::includes(all.begin(), all.end(), measured.begin(), measured.end()))
+      throw InputError("statistical convergence of " + q.name + ": a level at h = " + fmt(l.h_avg) +
+                       " measured realizations that are not among its complete runs");
     q.mean.push_back(mean_interval(l.value, o.confidence));
     q.dkw.push_back(dkw_half_width(l.value.size(), o.confidence));
   }

@@ -22,7 +22,10 @@ struct LevelSample {
   double h_avg = 0.0;
   std::vector<int> realization;
   std::vector<double> value;
-  double core_seconds = 0.0;  // what its runs took, summed (the cost of the level's sample)
+  /// The realizations of every complete run of the level, measured or not (a column that never
+  /// struck has no rear-strike time); empty: those of `value`. What a run-count answer scales by.
+  std::vector<int> complete;
+  double core_seconds = 0.0;  // what its complete runs took, summed (the cost of the level)
   int level = 0;  // its index in the scene's mesh block (for the files that name runs by it)
 };
 
@@ -49,6 +52,9 @@ struct LevelStep {
   Interval mean_change;         // mean_k - mean_{k+1}: Welch t, or paired t when coupled
   double change_std_dev = 0.0;  // sqrt(s_k^2 + s_{k+1}^2), or sd(D) when coupled: for the planner
   std::optional<CoupledDifferences> coupled;  // on the realizations both levels hold
+  /// The share of complete runs that measured the quantity (the smaller of the two levels), and
+  /// of realizations complete at both levels that give a pair: 1 for a quantity every run has.
+  double measured_share = 1.0, paired_share = 1.0;
 };
 
 enum class Verdict { converges, converging, does_not_converge, undecided, not_applicable };
@@ -57,7 +63,7 @@ const char* verdict_name(Verdict v);
 struct NotionVerdict {
   Verdict verdict = Verdict::not_applicable;
   std::string reason;            // one plain sentence with the numbers behind it
-  std::size_t realizations = 0;  // per level, to decide an undecided verdict (0: not needed)
+  std::size_t realizations = 0;  // runs per level, to decide an undecided verdict (0: not needed)
 };
 
 struct QuantityConvergence {

@@ -165,13 +165,26 @@ NotionVerdict coupled_notion(const QuantityConvergence& q, const StatisticalOpti
   return {Verdict::undecided, what, n};
 }
 
+/// The planner counts values (or pairs); a quantity only some runs measure (a column that never
+/// struck has no rear-strike time) needs that many divided by the share of runs that give one.
+NotionVerdict in_runs(NotionVerdict v, double share, const char* unit) {
+  if (v.realizations == 0 || share >= 1.0) return v;
+  const std::size_t values = v.realizations;
+  v.realizations = static_cast<std::size_t>(std::ceil(static_cast<double>(values) / share));
+  v.reason += "; that is " + std::to_string(values) + " " + unit + ", and " +
+              fmt(100.0 * share, 2) + " % of the runs give one";
+  return v;
+}
+
 }  // namespace
 
 void judge_convergence(QuantityConvergence& q, const StatisticalOptions& o) {
-  q.in_distribution = in_distribution(q, o);
-  q.of_mean = of_mean(q, o);
-  q.in_mean = coupled_notion(q, o, false);
-  q.in_probability = coupled_notion(q, o, true);
+  const LevelStep& finest = q.steps.back();
+  q.in_distribution = in_runs(in_distribution(q, o), finest.measured_share, "values");
+  q.of_mean = finest.coupled ? in_runs(of_mean(q, o), finest.paired_share, "pairs")
+                             : in_runs(of_mean(q, o), finest.measured_share, "values");
+  q.in_mean = in_runs(coupled_notion(q, o, false), finest.paired_share, "pairs");
+  q.in_probability = in_runs(coupled_notion(q, o, true), finest.paired_share, "pairs");
 }
 
 }  // namespace vorodg

@@ -39,7 +39,8 @@ beside it, then renamed), printing its path:
                          variant's Hamming distance to perturb-0 against the step, log axis
                          (zero distances are not drawn; the report lists them).
   plots/perturbation_fragment_cdf.png  for the same folder: the fragment mass-fraction CDF of
-                         every perturbed run in one plot, perturb-0's in black (Figure 16).
+                         every perturbed run in one plot, perturb-0's in black, and the mean
+                         of the variations' CDFs with its simultaneous band (Figure 16).
 A run without a history is left out (one line on stderr); the exit code is always 0.
 Only the Python standard library, numpy, matplotlib (Agg) and, for snapshots, meshio are used.
 """
@@ -196,10 +197,11 @@ def plot_perturbation(outdir, dpi):
 
 
 def plot_perturbation_cdfs(outdir, dpi):
-    """Figure 16: the fragment mass-fraction CDF of every variant's runs in one plot, the
-    reference (perturb-0) in black."""
+    """Figure 16: the fragment mass-fraction CDF of every variant's runs in one plot (grey), the
+    reference (perturb-0) in black, and the mean of the variants' CDFs with its 95 % simultaneous
+    band (fragment_level_plots): is the reference a typical member of its variations?"""
     fig, ax = plt.subplots(figsize=(7, 4.5), layout="constrained")
-    drawn = 0
+    variants, reference = [], []
     for name in sorted(os.listdir(outdir), key=lambda n: (len(n), n)):
         if not name.startswith("perturb-"):
             continue
@@ -208,19 +210,28 @@ def plot_perturbation_cdfs(outdir, dpi):
             if not table:
                 continue
             fraction, cdf = mass_cdf(table)
-            reference = name == "perturb-0"
-            ax.step(fraction, cdf, where="post", color="black" if reference else None,
-                    linewidth=2.0 if reference else 0.9, alpha=1.0 if reference else 0.7,
-                    label=f"{name} ({run['id']})", zorder=3 if reference else 2)
-            drawn += 1
-    if not drawn:
+            if name == "perturb-0":
+                reference.append(fraction)
+                ax.step(fraction, cdf, where="post", color="black", linewidth=2.0, zorder=3,
+                        label=f"{name}, the reference ({run['id']})")
+            else:
+                ax.step(fraction, cdf, where="post", color="0.45", linewidth=0.8, alpha=0.6,
+                        label=None if variants else "a variation (each grey curve)")
+                variants.append(fraction)
+    if not variants and not reference:
         plt.close(fig)
         return
+    if len(variants) >= 2:
+        grid = fragment_level_plots.log_grid(variants + reference)
+        _, mean, band = fragment_level_plots.mean_cdf_band(variants, grid)
+        fragment_level_plots.draw_band(
+            ax, grid, mean, band, "tab:blue",
+            f"mean of the {len(variants)} variations, 95 % simultaneous band (+-{band:.3f})")
     ax.set(xscale="log", xlabel="fragment mass / total mass", ylabel="cumulative fraction",
-           title=f"fragment mass CDFs of {drawn} runs (perturb-0 in black)")
+           ylim=(0, 1.02), title=f"fragment mass CDFs of {len(variants) + len(reference)} runs "
+           "(perturb-0 in black)")
     light_grid(ax)
-    if drawn <= 16:
-        ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left")
     save_atomically(fig, os.path.join(outdir, "plots", "perturbation_fragment_cdf.png"), dpi)
 
 
